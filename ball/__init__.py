@@ -1,0 +1,41 @@
+"""Ball force laws and head-on two-body collisions (R. Cross, Am. J. Phys. 2000, Secs. II-VI).
+
+Public API: the force laws :class:`LinearSpring`, :class:`LinearHysteresis`,
+:class:`PowerLawHysteresis` and :class:`SineLaw`; :class:`Ball` and :data:`WALL`;
+:func:`collide` and its :class:`Collision` result; the closed forms in
+:mod:`ball.closed_forms`.
+"""
+
+from ball.bodies import WALL, Ball, Wall
+from ball.closed_forms import (
+    energy_loss_fraction,
+    energy_loss_fraction_lab,
+    series_cor,
+    serve_speed,
+    unhappy_cor,
+    unhappy_solution,
+)
+from ball.collision import Collision, CollisionHistory, collide
+from ball.laws import LinearHysteresis, LinearSpring, MonotoneLaw, PowerLawHysteresis, SineLaw
+from ball.series import series_force
+
+__all__ = [
+    "WALL",
+    "Ball",
+    "Collision",
+    "CollisionHistory",
+    "LinearHysteresis",
+    "LinearSpring",
+    "MonotoneLaw",
+    "PowerLawHysteresis",
+    "SineLaw",
+    "Wall",
+    "collide",
+    "energy_loss_fraction",
+    "energy_loss_fraction_lab",
+    "series_cor",
+    "series_force",
+    "serve_speed",
+    "unhappy_cor",
+    "unhappy_solution",
+]

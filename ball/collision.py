@@ -1,0 +1,225 @@
+"""Head-on collision of two balls, or of a ball and the wall (paper Secs. II-VI, Fig. 1).
+
+:func:`collide` integrates the contact in the relative coordinate (Eqs. 8-11) with
+:mod:`ball.monotone` or, for the unhappy ball, :mod:`ball.unhappy`, then puts the two
+bodies back in the lab frame: the centre of mass moves uniformly, and each body is
+displaced from it in proportion to the other's mass.  Every number in the result (speeds
+after, e, contact time, peak force, energies) is read off that integration.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ball.bodies import Ball, Wall
+from ball.contact import RelativeContact
+from ball.laws import SineLaw
+from ball.monotone import monotone_contact
+from ball.unhappy import unhappy_contact
+from common.checks import finite
+
+
+@dataclass(frozen=True)
+class CollisionHistory:
+    """Time histories of a collision, from first touch to separation (all arrays, SI).
+
+    Attributes
+    ----------
+    t : ndarray
+        Time since first touch [s].
+    force : ndarray
+        Contact force F [N] (Eq. 11).
+    compression_a, compression_b : ndarray
+        Compression of ball a (X) and of ball b (Y) [m] (zero for the wall).
+    position_a, position_b : ndarray
+        Displacement of each ball's centre since first touch [m] (x and y of Eqs. 8-10).
+    velocity_a, velocity_b : ndarray
+        Velocity of each ball [m/s].
+    """
+
+    t: np.ndarray
+    force: np.ndarray
+    compression_a: np.ndarray
+    compression_b: np.ndarray
+    position_a: np.ndarray
+    position_b: np.ndarray
+    velocity_a: np.ndarray
+    velocity_b: np.ndarray
+
+    @property
+    def total_compression(self) -> np.ndarray:
+        """X_T = X + Y [m], the total compression (Fig. 3)."""
+        return self.compression_a + self.compression_b
+
+    def to_frame(self):
+        """The history as a pandas DataFrame (one row per time sample, SI column names)."""
+        import pandas as pd
+
+        return pd.DataFrame(
+            {
+                "t_s": self.t,
+                "force_N": self.force,
+                "compression_a_m": self.compression_a,
+                "compression_b_m": self.compression_b,
+                "position_a_m": self.position_a,
+                "position_b_m": self.position_b,
+                "velocity_a_m_s": self.velocity_a,
+                "velocity_b_m_s": self.velocity_b,
+            }
+        )
+
+
+@dataclass(frozen=True)
+class Collision:
+    """Outcome of :func:`collide`.
+
+    Attributes
+    ----------
+    v_a, v_b : float
+        Velocities before [m/s] (positive along the line from a to b).
+    v_a_after, v_b_after : float
+        Velocities after [m/s].
+    e : float
+        Coefficient of restitution (Eq. 1): relative speed after / relative speed before.
+    contact_time : float
+        Duration of the contact [s].
+    peak_force : float
+        Largest contact force [N].
+    energy_initial, energy_final : float
+        Kinetic energy of both bodies before and after, lab frame [J] (Eqs. 2-3; the wall
+        has none).
+    energy_dissipated_a, energy_dissipated_b : float
+        Energy lost in each ball's hysteresis [J].
+    x_o : float or None
+        The unhappy ball's self-consistent largest compression Xo [m] (Eq. 7), else None.
+    history : CollisionHistory
+        Force, compressions, positions and velocities against time.
+    """
+
+    v_a: float
+    v_b: float
+    v_a_after: float
+    v_b_after: float
+    e: float
+    contact_time: float
+    peak_force: float
+    energy_initial: float
+    energy_final: float
+    energy_dissipated_a: float
+    energy_dissipated_b: float
+    x_o: float | None
+    history: CollisionHistory
+
+    @property
+    def energy_lost(self) -> float:
+        """Kinetic energy lost [J]: energy_initial - energy_final (Eqs. 4, 23)."""
+        return self.energy_initial - self.energy_final
+
+    @property
+    def energy_lost_fraction(self) -> float:
+        """f = energy_lost / energy_initial (Eqs. 4 and 23)."""
+        return self.energy_lost / self.energy_initial
+
+
+def collide(a: Ball, b: Ball | Wall, v_a: float, v_b: float = 0.0, samples: int = 400) -> Collision:
+    """Collide ball ``a`` head-on with ball ``b`` (or :data:`~ball.WALL`) in the lab frame.
+
+    Each ball's spring is compressed in series with the other's (Eqs. 8-11); the contact is
+    integrated from first touch until the force returns to zero.
+
+    Parameters
+    ----------
+    a : Ball
+        The ball on the left, moving at ``v_a``.
+    b : Ball or Wall
+        The ball on the right, or the wall.
+    v_a, v_b : float
+        Velocities before the collision [m/s], positive from a towards b; the balls must
+        approach (``v_a > v_b``).  The wall does not move (``v_b = 0``).
+    samples : int
+        Points per phase in the returned history.
+
+    Returns
+    -------
+    Collision
+    """
+    if not isinstance(a, Ball):
+        raise ValueError(f"a must be a Ball, got {a!r}")
+    if not isinstance(b, (Ball, Wall)):
+        raise ValueError(f"b must be a Ball or WALL, got {b!r}")
+    v_a = finite("v_a", v_a, "m/s")
+    v_b = finite("v_b", v_b, "m/s")
+    wall = isinstance(b, Wall)
+    if wall and v_b != 0.0:
+        raise ValueError(f"v_b must be 0 for the wall (it cannot move), got {v_b!r}")
+    if v_a <= v_b:
+        raise ValueError(f"the balls must approach: v_a must be > v_b = {v_b!r} m/s, got {v_a!r}")
+
+    closing = v_a - v_b
+    mu = a.mass if wall else a.mass * b.mass / (a.mass + b.mass)
+    law_b = None if wall else b.law
+    if isinstance(a.law, SineLaw) and isinstance(law_b, SineLaw):
+        raise ValueError(
+            "a and b cannot both be unhappy (SineLaw) balls: the split of the "
+            "compression between two falling force laws is not determined"
+        )
+    if isinstance(a.law, SineLaw):
+        rel = unhappy_contact(a.law, law_b, mu, closing, samples=samples)
+    elif isinstance(law_b, SineLaw):
+        swapped = unhappy_contact(law_b, a.law, mu, closing, samples=samples)
+        rel = RelativeContact(
+            swapped.t,
+            swapped.force,
+            swapped.compression_b,
+            swapped.compression_a,
+            swapped.closing_speed,
+            swapped.dissipated_b,
+            swapped.dissipated_a,
+            swapped.x_o,
+        )
+    else:
+        rel = monotone_contact(a.law, law_b, mu, closing, samples=samples)
+
+    # Back to the lab frame: z = x - y, with the centre of mass moving uniformly.
+    z = rel.compression_a + rel.compression_b
+    if wall:
+        share_a, share_b, v_cm = 1.0, 0.0, 0.0
+    else:
+        total = a.mass + b.mass
+        share_a, share_b = b.mass / total, a.mass / total
+        v_cm = (a.mass * v_a + b.mass * v_b) / total
+    # The relative speed dz/dt runs from +closing down; velocities follow from it.
+    vel_a = v_cm + share_a * rel.closing_speed
+    vel_b = v_cm - share_b * rel.closing_speed
+    history = CollisionHistory(
+        t=rel.t,
+        force=rel.force,
+        compression_a=rel.compression_a,
+        compression_b=rel.compression_b,
+        position_a=v_cm * rel.t + share_a * z,
+        position_b=v_cm * rel.t - share_b * z,
+        velocity_a=vel_a,
+        velocity_b=vel_b,
+    )
+
+    def kinetic(va, vb):
+        return 0.5 * a.mass * va**2 + (0.0 if wall else 0.5 * b.mass * vb**2)
+
+    v_a_after, v_b_after = float(vel_a[-1]), float(vel_b[-1])
+    return Collision(
+        v_a=v_a,
+        v_b=v_b,
+        v_a_after=v_a_after,
+        v_b_after=v_b_after,
+        e=(v_b_after - v_a_after) / closing,
+        contact_time=float(rel.t[-1]),
+        peak_force=float(np.max(rel.force)),
+        energy_initial=kinetic(v_a, v_b),
+        energy_final=kinetic(v_a_after, v_b_after),
+        energy_dissipated_a=rel.dissipated_a,
+        energy_dissipated_b=rel.dissipated_b,
+        x_o=rel.x_o,
+        history=history,
+    )

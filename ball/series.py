@@ -1,0 +1,73 @@
+"""Monotone force laws in series: the force that gives a total compression.
+
+Springs in series carry one force F and their compressions add (Eqs. 10-11 with two
+monotone laws): ``z = sum_i compression_i(F, max(F, f_max))``.  The right-hand side rises
+with F on every branch and is continuous where loading meets unloading (at F = f_max), so
+for any z there is exactly one F >= 0; it is found by Newton's method inside a shrinking
+bracket (bisection whenever a Newton step would leave it).  Works on arrays, so a sweep
+solves all its contacts at once.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+import numpy as np
+
+from ball.laws import MonotoneLaw
+
+
+def series_compression(laws: Sequence[MonotoneLaw], f, f_max):
+    """Total compression [m] of ``laws`` in series at force ``f`` [N], largest force ``f_max`` [N].
+
+    ``f`` above ``f_max`` is on the loading curve; below it, on the unloading curves.
+    """
+    f = np.asarray(f, dtype=float)
+    branch_max = np.maximum(f, f_max)
+    return sum(law.compression(f, branch_max) for law in laws)
+
+
+def series_compliance(laws: Sequence[MonotoneLaw], f, f_max):
+    """d(total compression)/d(force) [m/N] of ``laws`` in series at ``f``, ``f_max``."""
+    f = np.asarray(f, dtype=float)
+    branch_max = np.maximum(f, f_max)
+    return sum(law.compliance(f, branch_max) for law in laws)
+
+
+def series_force(laws: Sequence[MonotoneLaw], z, f_max, rtol: float = 1e-14):
+    """Force [N] in ``laws`` in series compressed by a total ``z`` [m] after a largest ``f_max``.
+
+    Returns 0 where ``z`` is at or below the compression left at zero force (the contact
+    is open).  ``z`` and ``f_max`` broadcast.
+    """
+    z, f_max = np.broadcast_arrays(np.asarray(z, dtype=float), np.asarray(f_max, dtype=float))
+    z = z.astype(float, copy=True)
+    force = np.zeros(z.shape)
+    active = z > series_compression(laws, np.zeros(z.shape), f_max)
+    if not np.any(active):
+        return force[()] if force.ndim == 0 else force
+    z_a, fm_a = z[active], f_max[active]
+    lo = np.zeros(z_a.shape)
+    # Start at the force a linear spring with the laws' compliance at 1 N would need.
+    hi = np.maximum(fm_a, z_a / series_compression(laws, 1.0, 1.0))
+    while True:  # grow the bracket until it holds the root
+        short = series_compression(laws, hi, fm_a) < z_a
+        if not np.any(short):
+            break
+        lo = np.where(short, hi, lo)
+        hi = np.where(short, 2.0 * hi, hi)
+    f = hi
+    for _ in range(200):
+        resid = series_compression(laws, f, fm_a) - z_a
+        lo = np.where(resid < 0, f, lo)
+        hi = np.where(resid >= 0, f, hi)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            newton = f - resid / series_compliance(laws, f, fm_a)
+        inside = np.isfinite(newton) & (newton > lo) & (newton < hi)
+        f_new = np.where(inside, newton, 0.5 * (lo + hi))
+        done = np.abs(f_new - f) <= rtol * np.abs(f_new)
+        f = f_new
+        if np.all(done):
+            break
+    force[active] = f
+    return force[()] if force.ndim == 0 else force

@@ -1,0 +1,1 @@
+"""Helpers shared by the physics packages (input checks); no physics lives here."""
