@@ -1,0 +1,108 @@
+"""Bending modes of a non-uniform free-free beam by Hermite finite elements.
+
+Each element carries a constant mass per length and bending stiffness and the standard
+cubic Hermite shape functions (deflection and slope at both ends), with the consistent
+mass matrix; point masses add to the deflection entries of the mass matrix.  The free-free
+generalised eigenproblem K v = omega**2 M v gives two zero modes (rigid-body motion, which
+:class:`~beam.Modes` writes down exactly instead) and the bending modes above them.
+Cubic Hermite elements converge in frequency as h**4, so a few hundred elements give the
+first modes of a racket to better than 1e-6.
+"""
+
+from __future__ import annotations
+
+import itertools
+
+import numpy as np
+from scipy.linalg import eigh
+
+
+def hermite(s: np.ndarray, length: np.ndarray) -> np.ndarray:
+    """Cubic Hermite shape functions at local coordinate s in [0, 1]: array (4, len(s))."""
+    return np.array(
+        [
+            1 - 3 * s**2 + 2 * s**3,
+            length * (s - 2 * s**2 + s**3),
+            3 * s**2 - 2 * s**3,
+            length * (-(s**2) + s**3),
+        ]
+    )
+
+
+def mesh(stations: np.ndarray, extra_points: np.ndarray, elements: int) -> np.ndarray:
+    """Node positions: every station and extra point, elements of about L / ``elements``."""
+    knots = np.unique(np.concatenate([stations, extra_points]))
+    target = (stations[-1] - stations[0]) / elements
+    pieces = [
+        np.linspace(a, b, max(1, int(np.ceil((b - a) / target))) + 1)[:-1]
+        for a, b in itertools.pairwise(knots)
+    ]
+    return np.concatenate([*pieces, knots[-1:]])
+
+
+def bending_modes(
+    stations, mass_per_length, bending_stiffness, point_masses, n_modes: int, elements: int
+):
+    """Angular frequencies [rad/s] and a shape evaluator of the first ``n_modes`` bending modes.
+
+    Parameters
+    ----------
+    stations : array (S + 1,)
+        Segment boundaries [m from the tip].
+    mass_per_length, bending_stiffness : array (S,)
+        Per segment [kg/m] and [N m^2].
+    point_masses : array (P, 2)
+        Rows (position [m from the tip], mass [kg]).
+    n_modes : int
+        Bending modes wanted.
+    elements : int
+        About how many elements along the beam.
+    """
+    point_masses = np.asarray(point_masses, dtype=float).reshape(-1, 2)
+    nodes = mesh(stations, point_masses[:, 0], elements)
+    lengths = np.diff(nodes)
+    mid = 0.5 * (nodes[:-1] + nodes[1:])
+    seg = np.clip(np.searchsorted(stations, mid) - 1, 0, len(mass_per_length) - 1)
+    rho, ei, l = np.asarray(mass_per_length)[seg], np.asarray(bending_stiffness)[seg], lengths  # noqa: E741
+
+    o = np.ones_like(l)
+    k_e = (ei / l**3)[:, None, None] * np.array(
+        [
+            [12 * o, 6 * l, -12 * o, 6 * l],
+            [6 * l, 4 * l**2, -6 * l, 2 * l**2],
+            [-12 * o, -6 * l, 12 * o, -6 * l],
+            [6 * l, 2 * l**2, -6 * l, 4 * l**2],
+        ]
+    ).transpose(2, 0, 1)
+    m_e = (rho * l / 420.0)[:, None, None] * np.array(
+        [
+            [156 * o, 22 * l, 54 * o, -13 * l],
+            [22 * l, 4 * l**2, 13 * l, -3 * l**2],
+            [54 * o, 13 * l, 156 * o, -22 * l],
+            [-13 * l, -3 * l**2, -22 * l, 4 * l**2],
+        ]
+    ).transpose(2, 0, 1)
+    n_dof = 2 * nodes.size
+    dofs = 2 * np.arange(l.size)[:, None] + np.arange(4)[None, :]
+    rows = np.repeat(dofs, 4, axis=1).ravel()
+    cols = np.tile(dofs, (1, 4)).ravel()
+    k = np.zeros((n_dof, n_dof))
+    m = np.zeros((n_dof, n_dof))
+    np.add.at(k, (rows, cols), k_e.ravel())
+    np.add.at(m, (rows, cols), m_e.ravel())
+    for x_p, m_p in point_masses:
+        i = 2 * int(np.argmin(np.abs(nodes - x_p)))
+        m[i, i] += m_p
+
+    w2, v = eigh(k, m, subset_by_index=[2, n_modes + 1])
+    v = v * np.sign(v[0])  # deflection at the tip positive
+    omega = np.sqrt(np.maximum(w2, 0.0))
+
+    def shapes(x: np.ndarray) -> np.ndarray:
+        e = np.clip(np.searchsorted(nodes, x, side="right") - 1, 0, l.size - 1)
+        s = (x - nodes[e]) / l[e]
+        n = hermite(s, l[e])  # (4, len(x))
+        dof = 2 * e[None, :] + np.arange(4)[:, None]  # (4, len(x))
+        return np.einsum("kx,mkx->mx", n, v[dof].transpose(2, 0, 1))
+
+    return omega, shapes

@@ -1,0 +1,49 @@
+"""Analytic bending modes of a uniform free-free Euler-Bernoulli beam.
+
+The free-free beam's bending modes satisfy cos(bL) cosh(bL) = 1, with roots
+bL = 4.7300, 7.8532, 10.9956, ... (-> (n + 1/2) pi), and shapes
+
+    Phi(x) = cosh(bx) + cos(bx) - s (sinh(bx) + sin(bx)),
+    s = (cosh(bL) - cos(bL)) / (sinh(bL) - sin(bL)),
+
+normalised so that (1/L) int_0^L Phi**2 dx = 1.  For bL beyond ~20 the hyperbolic terms
+cancel catastrophically in floating point, so the shape is evaluated with the growing
+exponential written relative to the far end.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from scipy.optimize import brentq
+
+
+def free_free_roots(n: int) -> np.ndarray:
+    """The first ``n`` roots bL of cos(bL) cosh(bL) = 1, bL > 0."""
+    # cos(x) - 1/cosh(x) has one root in each interval around (k + 1/2) pi, k = 1, 2, ...
+    f = lambda x: np.cos(x) - 1.0 / np.cosh(x)  # noqa: E731
+    return np.array(
+        [
+            brentq(f, (k + 0.5) * np.pi - 0.5, (k + 0.5) * np.pi + 0.5, xtol=1e-14)
+            for k in range(1, n + 1)
+        ]
+    )
+
+
+def shapes(beta_l: np.ndarray, xi) -> np.ndarray:
+    """Normalised shapes Phi_n at fractional positions ``xi`` = x / L (from either end).
+
+    Returns an array of shape (len(beta_l), len(xi)) with (1/L) int Phi**2 dx = 1.
+    """
+    bl = np.asarray(beta_l, dtype=float)[:, None]
+    u = bl * np.atleast_1d(np.asarray(xi, dtype=float))[None, :]
+    # s = (cosh bL - cos bL) / (sinh bL - sin bL); 1 - s is tiny for large bL, so the
+    # growing part (1 - s) e^u / 2 of cosh u - s sinh u is written with e^(u - bL) <= 1.
+    e_l = np.exp(-bl)
+    s = (np.cosh(bl) - np.cos(bl)) / (np.sinh(bl) - np.sin(bl))
+    grow = (
+        0.5
+        * (np.cos(bl) - np.sin(bl) - e_l)
+        * np.exp(u - bl)
+        / (0.5 * (1.0 - e_l**2) - np.sin(bl) * e_l)
+    )
+    return grow + 0.5 * (1.0 + s) * np.exp(-u) + np.cos(u) - s * np.sin(u)

@@ -1,0 +1,356 @@
+"""The compiled time-stepper that advances every impact of a sweep together.
+
+Scheme
+------
+Between two steps the contact force is taken to vary linearly (first-order hold).  For a
+force of that shape each mode, a damped oscillator q'' + 2 zeta omega q' + omega**2 q =
+phi(b) F, is advanced *exactly* by precomputed 2x2 transition matrices (see
+:func:`racket.solver.step_matrices`), and so is the ball (u'' = -F / m1).  Only the force
+at the end of the step is unknown; the compression of the ball plus strings then depends
+on it linearly through the step's compliance c, so the step reduces to one scalar equation
+
+    g_ball(F) + F / k_s + c F = z_pred,
+
+z_pred being the contact compression the step would give without force.  The left side
+rises with F on every branch of a monotone law, so the force is unique: closed form for
+linear laws, a safeguarded Newton iteration for power laws.  The step length is set by the
+contact (about 1/600 of it by default), not by the highest mode.
+
+The unhappy ball (sine law) uses a return mapping in its compression X, which never
+decreases: the ball flows along the sine (X + c' F_sine(X) = z_pred) when the contact
+pushes it, locks (X frozen, F below the sine) when the contact relaxes before its fold,
+and crosses the fold on the falling branch.  If the contact would push past the fold's
+maximum the ball would snap through; the step flags it, and :func:`racket.solver.impact`
+raises Xo until no impact snaps (the self-consistent Xo of :mod:`ball.unhappy`).
+
+Law codes: 0 linear hysteresis (k, e), 1 power law (k, a, b), 2 sine law (k0).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit, prange
+
+LINEAR, POWER, SINE = 0, 1, 2
+
+# Columns of the per-impact summary array.
+T_END, T_CONTACT, F_PEAK, F_MAX, SINE_WORK, DAMPING_LOSS, SNAPPED, ENDED = range(8)
+N_SUMMARY = 8
+
+# Rows of the history array.
+H_FORCE, H_BALL_COMP, H_STRING, H_BALL_VEL, H_POINT_VEL, H_POINT_VEL_DC = range(6)
+N_HISTORY = 6
+
+
+@njit(cache=True)
+def _power_compression(f, f_max, k, a, b):
+    """Compression of a power-law ball at force f after largest force f_max."""
+    if f <= 0.0:
+        return 0.0
+    if f >= f_max:
+        return (f / k) ** (1.0 / a)
+    return (f_max / k) ** (1.0 / a) * (f / f_max) ** (1.0 / b)
+
+
+@njit(cache=True)
+def ball_compression(code, p0, p1, p2, f, f_max):
+    """Compression of a monotone ball law at force f after largest force f_max."""
+    if code == LINEAR:
+        if f >= f_max:
+            return f / p0
+        return (f_max * (1.0 - p1 * p1) + p1 * p1 * f) / p0
+    return _power_compression(f, f_max, p0, p1, p2)
+
+
+@njit(cache=True)
+def _power_force(target, c, f_lo, f_hi, f_max, k, a, b):
+    """Solve g(F) + c F = target for F in [f_lo, f_hi] (g the power law), by safeguarded
+    Newton: g + c F rises with F, and the bracket holds the root."""
+    f = 0.5 * (f_lo + f_hi)
+    for _ in range(100):
+        g = _power_compression(f, f_max, k, a, b)
+        resid = g + c * f - target
+        if resid < 0.0:
+            f_lo = f
+        else:
+            f_hi = f
+        expo = a if f >= f_max else b
+        slope = g / (expo * f) + c if f > 0.0 else math.inf
+        f_new = f - resid / slope
+        if not (f_lo < f_new < f_hi):
+            f_new = 0.5 * (f_lo + f_hi)
+        if abs(f_new - f) <= 1e-15 * f_new:
+            return f_new
+        f = f_new
+    return f
+
+
+@njit(cache=True)
+def monotone_force(code, p0, p1, p2, a, z_pred, f_max):
+    """Force solving g_ball(F) + a F = z_pred (a = 1/k_s + c), 0 if the contact is open."""
+    if code == LINEAR:
+        f = z_pred / (1.0 / p0 + a)  # loading line
+        if f >= f_max:
+            return f
+        e2 = p1 * p1
+        f = (z_pred - f_max * (1.0 - e2) / p0) / (e2 / p0 + a)  # unloading line
+        return max(f, 0.0)
+    switch = _power_compression(f_max, f_max, p0, p1, p2) + a * f_max
+    if z_pred >= switch:
+        return _power_force(z_pred, a, f_max, z_pred / a, f_max, p0, p1, p2)
+    if z_pred <= 0.0:
+        return 0.0
+    return _power_force(z_pred, a, 0.0, f_max, f_max, p0, p1, p2)
+
+
+@njit(cache=True)
+def _sine_root(target, c, k0, x_o, lo, hi):
+    """X in [lo, hi] with X + c k0 Xo sin(pi X / Xo) = target, the left side monotone there."""
+    x = 0.5 * (lo + hi)
+    rising = (lo + c * k0 * x_o * math.sin(math.pi * lo / x_o)) < target
+    for _ in range(200):
+        s = math.sin(math.pi * x / x_o)
+        resid = x + c * k0 * x_o * s - target
+        below = resid < 0.0
+        if below == rising:
+            lo = x
+        else:
+            hi = x
+        slope = 1.0 + c * k0 * math.pi * math.cos(math.pi * x / x_o)
+        x_new = x - resid / slope if slope != 0.0 else 0.5 * (lo + hi)
+        if not (min(lo, hi) < x_new < max(lo, hi)):
+            x_new = 0.5 * (lo + hi)
+        if abs(x_new - x) <= 1e-15 * x_o:
+            return x_new
+        x = x_new
+    return x
+
+
+@njit(cache=True)
+def sine_step(k0, x_o, a, z_pred, x_n, slack):
+    """One return-mapping step of the unhappy ball.
+
+    Returns (force, new X, snapped).  ``a`` = 1/k_s + c is the compliance in series with
+    the ball, ``x_n`` its compression so far, ``slack`` True once it has collapsed.
+    """
+    if slack or x_n >= x_o:
+        # Compressed beyond Xo: Xo was not the largest compression (flagged like a snap).
+        return 0.0, max(x_n, z_pred), slack or z_pred > x_n
+
+    ck = a * k0 * math.pi
+    x_fold = x_o / math.pi * math.acos(-1.0 / ck) if ck > 1.0 else x_o
+    h_n = x_n + a * k0 * x_o * math.sin(math.pi * x_n / x_o)  # X + a F_sine(X)
+    h_fold = x_fold + a * k0 * x_o * math.sin(math.pi * x_fold / x_o)
+    if x_n < x_fold:
+        if z_pred >= h_n:
+            if z_pred <= h_fold:
+                x = _sine_root(z_pred, a, k0, x_o, x_n, x_fold)
+                return k0 * x_o * math.sin(math.pi * x / x_o), x, False
+            return 0.0, z_pred, True  # pushed past the fold's maximum: snap-through
+        if x_fold < x_o and z_pred >= x_o:  # cross the fold onto the falling branch
+            x = _sine_root(z_pred, a, k0, x_o, x_fold, x_o)
+            return k0 * x_o * math.sin(math.pi * x / x_o), x, False
+        return max((z_pred - x_n) / a, 0.0), x_n, False  # lock
+    if z_pred > h_n:
+        return 0.0, z_pred, True  # pushed while on the falling branch: snap-through
+    if z_pred >= x_o:
+        x = _sine_root(z_pred, a, k0, x_o, x_n, x_o)
+        return k0 * x_o * math.sin(math.pi * x / x_o), x, False
+    return 0.0, x_o, False  # force back to zero at X = Xo: the contact opens
+
+
+@njit(cache=True, parallel=True)
+def run_impacts(
+    phi,
+    trans,
+    g0,
+    g1,
+    omega,
+    damp_rate,
+    ball_trans,
+    ball_g0,
+    ball_g1,
+    inv_ks,
+    code,
+    p0,
+    p1,
+    p2,
+    ball_velocity,
+    modal_velocity,
+    x_o,
+    dt,
+    max_steps,
+    force_tol,
+    record,
+    out_ball,
+    out_modal,
+    summary,
+    history,
+):
+    """Advance P impacts from first touch until the ball has left for good.
+
+    After the force first returns to zero the stepping goes on, so that a vibrating frame
+    can catch the ball again, until the dc motion separates the two and the gap exceeds the
+    reach of the remaining vibration.
+
+    Parameters
+    ----------
+    phi : (P, n)
+        Mode shapes at each impact point.
+    trans, g0, g1 : (n, 2, 2), (n, 2), (n, 2)
+        Exact step of each mode for a unit modal force varying linearly over the step:
+        s_next = trans s + g0 F_start + g1 F_end.
+    omega : (n,)
+        Angular frequency of each mode [rad/s] (0 for the rigid-body modes).
+    damp_rate : (n,)
+        2 zeta omega of each mode [1/s] (damping power 2 zeta omega q'**2).
+    ball_trans, ball_g0, ball_g1 : (2, 2), (2,), (2,)
+        The same for the ball (force -F on it).
+    inv_ks : float
+        1 / string-bed stiffness [m/N].
+    code, p0, p1, p2 :
+        Ball law (see the module docstring).
+    ball_velocity : (P,)
+        Ball velocity at first touch [m/s] (towards the racket positive).
+    modal_velocity : (P, n)
+        Modal velocities at first touch (a swung racket's rigid-body motion).
+    x_o : (P,)
+        Sine law's Xo per impact [m] (ignored by other laws).
+    out_ball : (P, 2), out_modal : (P, n, 2), summary : (P, N_SUMMARY),
+    history : (N_HISTORY, P, max_steps + 1)
+        Outputs: ball and modal state at separation, summary numbers, histories (if record).
+    """
+    n_points, n = phi.shape
+    for p in prange(n_points):
+        q = np.zeros((n, 2))
+        q[:, 1] = modal_velocity[p]
+        u, ud = 0.0, ball_velocity[p]
+        c = ball_g1[0] * -1.0  # ball displacement per unit force at the step end, sign flipped
+        for i in range(n):
+            c += phi[p, i] ** 2 * g1[i, 0]
+        a = inv_ks + c
+        force, f_max, f_peak, x_ball, slack, snapped = 0.0, 0.0, 0.0, 0.0, False, False
+        damping_loss = 0.0
+        sine_work = 0.0
+        t_contact = 0.0
+        power_prev = 0.0
+        for i in range(n):
+            power_prev += damp_rate[i] * q[i, 1] ** 2
+        ended = False
+        step = 0
+        closing = ud
+        for i in range(n):
+            closing -= phi[p, i] * q[i, 1]
+        if record:
+            history[H_BALL_VEL, p, 0] = ud
+            w_dot = 0.0
+            w_dot_dc = 0.0
+            for i in range(n):
+                w_dot += phi[p, i] * q[i, 1]
+                if i < 2:
+                    w_dot_dc += phi[p, i] * q[i, 1]
+            history[H_POINT_VEL, p, 0] = w_dot
+            history[H_POINT_VEL_DC, p, 0] = w_dot_dc
+        while step < max_steps:
+            # Free prediction (no force at the step end).
+            u_p = ball_trans[0, 0] * u + ball_trans[0, 1] * ud + ball_g0[0] * force
+            ud_p = ball_trans[1, 0] * u + ball_trans[1, 1] * ud + ball_g0[1] * force
+            z_pred = u_p
+            for i in range(n):
+                qi = (
+                    trans[i, 0, 0] * q[i, 0]
+                    + trans[i, 0, 1] * q[i, 1]
+                    + g0[i, 0] * phi[p, i] * force
+                )
+                z_pred -= phi[p, i] * qi
+            if code == SINE:
+                x_before = x_ball
+                f_new, x_ball, snap = sine_step(p0, x_o[p], a, z_pred, x_ball, slack)
+                sine_work += 0.5 * (force + f_new) * (x_ball - x_before)
+                if snap:
+                    slack = True
+                    snapped = True
+            else:
+                f_new = monotone_force(code, p0, p1, p2, a, z_pred, f_max)
+            # Advance everything with the force varying from `force` to `f_new`.
+            u_new = u_p + ball_g1[0] * f_new
+            ud_new = ud_p + ball_g1[1] * f_new
+            power = 0.0
+            w_dot = 0.0
+            w_dot_dc = 0.0
+            for i in range(n):
+                q0 = (
+                    trans[i, 0, 0] * q[i, 0]
+                    + trans[i, 0, 1] * q[i, 1]
+                    + phi[p, i] * (g0[i, 0] * force + g1[i, 0] * f_new)
+                )
+                q1 = (
+                    trans[i, 1, 0] * q[i, 0]
+                    + trans[i, 1, 1] * q[i, 1]
+                    + phi[p, i] * (g0[i, 1] * force + g1[i, 1] * f_new)
+                )
+                q[i, 0] = q0
+                q[i, 1] = q1
+                power += damp_rate[i] * q1 * q1
+                w_dot += phi[p, i] * q1
+                if i < 2:
+                    w_dot_dc += phi[p, i] * q1
+            damping_loss += 0.5 * (power + power_prev) * dt
+            power_prev = power
+            z_now = u_new
+            for i in range(n):
+                z_now -= phi[p, i] * q[i, 0]
+            u, ud = u_new, ud_new
+            force = f_new
+            f_max = max(f_max, force)
+            f_peak = max(f_peak, force)
+            step += 1
+            if record:
+                history[H_FORCE, p, step] = force
+                if code == SINE:
+                    history[H_BALL_COMP, p, step] = x_ball
+                else:
+                    history[H_BALL_COMP, p, step] = ball_compression(
+                        code, p0, p1, p2, force, max(force, f_max)
+                    )
+                history[H_STRING, p, step] = force * inv_ks
+                history[H_BALL_VEL, p, step] = ud
+                history[H_POINT_VEL, p, step] = w_dot
+                history[H_POINT_VEL_DC, p, step] = w_dot_dc
+            if force > 0.0:
+                t_contact = step * dt
+            if (
+                code == SINE
+                and 0.0 < force < force_tol * f_peak
+                and abs(ud - w_dot) < 1e-5 * closing
+            ):
+                ended = True  # common speed approached asymptotically (no fold)
+                break
+            if force == 0.0 and w_dot_dc > ud:
+                # Open and separating in the dc motion: over for good once the gap exceeds
+                # the largest deflection the remaining vibration can bring to the point.
+                if code == SINE:
+                    z_open = x_ball
+                else:
+                    z_open = ball_compression(code, p0, p1, p2, 0.0, f_max)
+                reach = 0.0
+                for i in range(2, n):
+                    reach += abs(phi[p, i]) * math.sqrt(q[i, 0] ** 2 + (q[i, 1] / omega[i]) ** 2)
+                if z_open - z_now >= reach:
+                    ended = True
+                    break
+        out_ball[p, 0] = u
+        out_ball[p, 1] = ud
+        for i in range(n):
+            out_modal[p, i, 0] = q[i, 0]
+            out_modal[p, i, 1] = q[i, 1]
+        summary[p, T_END] = step * dt
+        summary[p, T_CONTACT] = t_contact
+        summary[p, F_PEAK] = f_peak
+        summary[p, F_MAX] = f_max
+        summary[p, SINE_WORK] = sine_work
+        summary[p, DAMPING_LOSS] = damping_loss
+        summary[p, SNAPPED] = 1.0 if snapped else 0.0
+        summary[p, ENDED] = 1.0 if ended else 0.0

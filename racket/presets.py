@@ -1,0 +1,32 @@
+"""Named rackets and balls.
+
+``"paper"`` is the racket of the paper's Sec. VII: a uniform beam 0.68 m long of mass
+0.34 kg (a typical 1990s graphite racket, strung) whose first free-free bending mode is at
+120 Hz (Cross's flexible-beam model, the source of the paper's Sec. VII numbers), with a
+string bed over the 0.32 m of the head nearest the tip and of stiffness 4e4 N/m (Sec. III:
+"the spring constant of the strings is typically about 4e4 N/m").  The tennis ball is the
+paper's: 57 g, stiffness 4e4 N/m during compression, COR 0.75 on concrete (Sec. III).
+"""
+
+from __future__ import annotations
+
+from ball import Ball, LinearHysteresis
+from beam import Beam
+from racket.racket import Racket, StringBed
+
+TENNIS_BALL_MASS = 0.057
+"""Mass of a tennis ball [kg] (ITF rules: 56.0-59.4 g)."""
+
+
+def paper_racket(support: str = "free") -> Racket:
+    """The paper's racket (see the module docstring)."""
+    return Racket(
+        Beam.uniform(length=0.68, mass=0.34, f1=120.0),
+        StringBed(stiffness=4e4, extent=(0.0, 0.32)),
+        support=support,
+    )
+
+
+def tennis_ball() -> Ball:
+    """The paper's tennis ball: 57 g, LinearHysteresis(k=4e4 N/m, e=0.75)."""
+    return Ball(TENNIS_BALL_MASS, LinearHysteresis(k=4e4, e=0.75))

@@ -1,0 +1,91 @@
+"""A racket: a free-free beam, a string bed on it, and how it is held."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from beam import Beam
+from common.checks import finite_array, non_negative, positive
+
+SUPPORTS = ("free", "clamped-head")
+
+
+@dataclass(frozen=True)
+class StringBed:
+    """The string plane: a lossless linear spring between the ball and the frame.
+
+    Parameters
+    ----------
+    stiffness : float
+        Stiffness of the string plane against a ball pushed into it [N/m] (about 3e4 to
+        4e4 N/m for a racket strung at 55 lb; paper Secs. III and VIII).
+    extent : (float, float)
+        Where the strings are, as distances from the tip [m]: (start, end), start < end.
+    """
+
+    stiffness: float
+    extent: tuple
+
+    def __post_init__(self):
+        object.__setattr__(self, "stiffness", positive("stiffness", self.stiffness, "N/m"))
+        if len(self.extent) != 2:
+            raise ValueError(f"extent must be (start, end) [m from the tip], got {self.extent!r}")
+        start = non_negative("extent start", self.extent[0], "m from the tip")
+        end = positive("extent end", self.extent[1], "m from the tip")
+        if end <= start:
+            raise ValueError(f"extent must have start < end [m from the tip], got {self.extent!r}")
+        object.__setattr__(self, "extent", (start, end))
+
+    @property
+    def center(self) -> float:
+        """Geometric centre of the string bed [m from the tip]."""
+        return 0.5 * (self.extent[0] + self.extent[1])
+
+
+@dataclass(frozen=True)
+class Racket:
+    """A racket frame (a free-free beam), its string bed, and its support.
+
+    Parameters
+    ----------
+    beam : Beam
+        The frame, tip at x = 0.
+    strings : StringBed
+        The string bed; it must lie on the beam.
+    support : str
+        ``"free"`` (default): the racket is free during the impact; a hand's impulse over
+        the 4-5 ms of contact is negligible (paper Sec. VII).  ``"clamped-head"``: the head
+        is rigidly held, so the strings act on an immovable support, as in head-clamped COR
+        tests.
+    """
+
+    beam: Beam
+    strings: StringBed
+    support: str = "free"
+
+    def __post_init__(self):
+        if not isinstance(self.beam, Beam):
+            raise ValueError(f"beam must be a Beam, got {self.beam!r}")
+        if not isinstance(self.strings, StringBed):
+            raise ValueError(f"strings must be a StringBed, got {self.strings!r}")
+        if self.strings.extent[1] > self.beam.length:
+            raise ValueError(
+                f"strings extent {self.strings.extent} runs past the beam's length "
+                f"{self.beam.length:g} m"
+            )
+        if self.support not in SUPPORTS:
+            raise ValueError(f"support must be one of {SUPPORTS}, got {self.support!r}")
+
+    def check_positions(self, position) -> np.ndarray:
+        """Impact positions [m from the tip] as an array; ValueError if any is off the strings."""
+        x = np.atleast_1d(finite_array("position", position, "m from the tip")).astype(float)
+        start, end = self.strings.extent
+        off = (x < start) | (x > end)
+        if np.any(off):
+            raise ValueError(
+                f"position must be on the strings, in [{start:g}, {end:g}] m from "
+                f"the tip, got {x[off][0]!r}"
+            )
+        return x

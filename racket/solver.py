@@ -1,0 +1,405 @@
+"""Ball impacts on a flexible racket (paper Sec. VII).
+
+:func:`impact` drives the racket's modes with the ball's force law in series with the
+string bed, for one impact point or many at once, and splits the racket's motion after the
+ball has left into its dc part (the rigid-body modes) and its ac part (the bending modes):
+
+* e_A = V1 / v1, the apparent COR, from the ball's speeds;
+* e = (V1 + V2) / v1 with V2 = V_cm + b omega the dc speed of the impact point (Eq. 21);
+* e_van_zandt, the same with the whole impact-point speed at separation, vibration
+  included (Van Zandt's error, Sec. VII);
+* the energy budget: ball and racket kinetic energy, vibration energy per mode, the energy
+  lost in the ball and to modal damping, and the residual that shows it closes.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.linalg import expm
+
+from ball import Ball, LinearHysteresis, LinearSpring, PowerLawHysteresis, SineLaw
+from common.checks import finite, non_negative, positive
+from racket import kernel
+from racket.racket import Racket
+
+DEFAULT_STEPS_PER_CONTACT = 600
+"""Time steps per estimated contact time: e then changes by < 1e-4 when halved."""
+
+FORCE_TOL = 1e-6
+"""An unhappy-ball contact that approaches a common speed asymptotically is over when its
+force has fallen to this fraction of its peak."""
+
+
+def step_matrices(omega, zeta, dt: float, inv_mass=1.0):
+    """Exact one-step propagation of damped oscillators under a linearly varying force.
+
+    For q'' + 2 zeta omega q' + omega**2 q = inv_mass F(t), with F going linearly from
+    F0 to F1 over a step dt, the state s = (q, q') advances as s1 = T s0 + g0 F0 + g1 F1.
+    Computed from the exponential of the augmented system (state, F, dF/dt).
+
+    Returns T (n, 2, 2), g0 (n, 2), g1 (n, 2).
+    """
+    omega = np.atleast_1d(np.asarray(omega, dtype=float))
+    zeta = np.broadcast_to(np.asarray(zeta, dtype=float), omega.shape)
+    inv_mass = np.broadcast_to(np.asarray(inv_mass, dtype=float), omega.shape)
+    trans = np.empty((omega.size, 2, 2))
+    g0 = np.empty((omega.size, 2))
+    g1 = np.empty((omega.size, 2))
+    for i, (w, z, b) in enumerate(zip(omega, zeta, inv_mass, strict=True)):
+        aug = np.zeros((4, 4))
+        aug[0, 1] = 1.0
+        aug[1, 0], aug[1, 1], aug[1, 2] = -(w**2), -2.0 * z * w, b
+        aug[2, 3] = 1.0
+        e = expm(aug * dt)
+        trans[i] = e[:2, :2]
+        g1[i] = e[:2, 3] / dt
+        g0[i] = e[:2, 2] - g1[i]
+    return trans, g0, g1
+
+
+def _law_code(law):
+    """Kernel code and parameters of a ball law."""
+    if isinstance(law, LinearSpring):
+        return kernel.LINEAR, law.k, 1.0, 0.0
+    if isinstance(law, LinearHysteresis):
+        return kernel.LINEAR, law.k, law.e, 0.0
+    if isinstance(law, PowerLawHysteresis):
+        return kernel.POWER, law.k, law.a, law.b
+    if isinstance(law, SineLaw):
+        return kernel.SINE, law.k0, 0.0, 0.0
+    raise ValueError(f"ball law {law!r} is not supported on a racket")
+
+
+def contact_time_scale(ball: Ball, string_stiffness: float, closing_speed: float) -> float:
+    """Half-period [s] of the ball on immovable strings, treating the ball as linear with
+    its secant stiffness at this speed: sets the time step."""
+    law = ball.law
+    if isinstance(law, (LinearSpring, LinearHysteresis)):
+        k = law.k
+    elif isinstance(law, PowerLawHysteresis):
+        x = ((law.a + 1) * ball.mass * closing_speed**2 / (2 * law.k)) ** (1 / (law.a + 1))
+        k = law.k * x ** (law.a - 1)
+    else:
+        k = law.k0
+    k_series = 1.0 / (1.0 / k + 1.0 / string_stiffness)
+    return np.pi * np.sqrt(ball.mass / k_series)
+
+
+@dataclass(frozen=True)
+class Impact:
+    """Outcome of :func:`impact`; every attribute is an array over the impact positions
+    (a float, or 1-D history, when a single position was given).
+
+    Attributes
+    ----------
+    position : float or ndarray
+        Impact point [m from the tip].
+    speed, swing_speed : float
+        Ball speed towards the strings and racket (impact-point) speed towards the ball
+        before impact [m/s].
+    e : COR from the dc (rigid-body) motion, Eq. 21 / Eq. 1.
+    e_A : apparent COR V1 / v1 (NaN for a ball at rest).
+    e_van_zandt : COR with the vibration at separation wrongly included.
+    effective_mass : racket effective mass at the impact point [kg] (Eq. 20; inf clamped).
+    ball_rebound : V1, ball speed after, away from the strings [m/s].
+    v_cm : racket centre-of-mass velocity after [m/s] (along the ball's incoming path).
+    omega : racket angular velocity after [rad/s]; the point at x moves at
+        v_cm + (x_cm - x) omega.
+    point_velocity_dc : V2 = v_cm + b omega, dc velocity of the impact point after [m/s].
+    contact_time : [s].  peak_force : [N].
+    vibration_energy : energy in the bending modes when the ball leaves [J].
+    mode_energy : (..., n_bending) energy of each bending mode when the ball leaves [J].
+    energy_initial, ball_energy, racket_energy, ball_loss, damping_loss, energy_residual :
+        Energy budget [J]: initial kinetic energy = ball_energy + racket_energy (rigid
+        body) + vibration_energy + ball_loss + damping_loss + energy_residual; the residual
+        is the integration error.
+    x_o : the unhappy ball's self-consistent Xo [m] (NaN for other laws).
+    t : (T,) time since first touch [s] of the histories.
+    force, ball_compression, string_deflection, ball_velocity, point_velocity,
+    point_velocity_dc : (..., T) histories (NaN after the ball has left); the impact
+        point's velocity is split into its dc part and the rest (ac = total - dc).
+    """
+
+    position: np.ndarray
+    speed: float
+    swing_speed: float
+    e: np.ndarray
+    e_A: np.ndarray
+    e_van_zandt: np.ndarray
+    effective_mass: np.ndarray
+    ball_rebound: np.ndarray
+    v_cm: np.ndarray
+    omega: np.ndarray
+    point_velocity_dc: np.ndarray
+    contact_time: np.ndarray
+    peak_force: np.ndarray
+    vibration_energy: np.ndarray
+    mode_energy: np.ndarray
+    energy_initial: np.ndarray
+    ball_energy: np.ndarray
+    racket_energy: np.ndarray
+    ball_loss: np.ndarray
+    damping_loss: np.ndarray
+    energy_residual: np.ndarray
+    x_o: np.ndarray
+    t: np.ndarray
+    force: np.ndarray
+    ball_compression: np.ndarray
+    string_deflection: np.ndarray
+    ball_velocity: np.ndarray
+    point_velocity: np.ndarray
+    point_velocity_dc_history: np.ndarray
+
+    @property
+    def point_velocity_ac_history(self) -> np.ndarray:
+        """ac (vibration) part of the impact point's velocity against time [m/s]."""
+        return self.point_velocity - self.point_velocity_dc_history
+
+    def to_frame(self):
+        """One row per impact with the summary numbers (pandas DataFrame, SI columns)."""
+        import pandas as pd
+
+        return pd.DataFrame(
+            {
+                "position_from_tip_m": np.atleast_1d(self.position),
+                "e": np.atleast_1d(self.e),
+                "e_A": np.atleast_1d(self.e_A),
+                "effective_mass_kg": np.atleast_1d(self.effective_mass),
+                "v_cm_m_s": np.atleast_1d(self.v_cm),
+                "omega_rad_s": np.atleast_1d(self.omega),
+                "ball_rebound_m_s": np.atleast_1d(self.ball_rebound),
+                "vibration_energy_fraction": np.atleast_1d(
+                    self.vibration_energy / self.energy_initial
+                ),
+                "contact_time_s": np.atleast_1d(self.contact_time),
+                "peak_force_N": np.atleast_1d(self.peak_force),
+                "e_van_zandt": np.atleast_1d(self.e_van_zandt),
+            }
+        )
+
+
+def _swing_velocities(modes, position, swing_speed, pivot):
+    """Rigid-mode velocities (P, 2) of a racket whose impact point moves at -swing_speed."""
+    if swing_speed == 0.0:
+        return np.zeros((position.size, 2))
+    if pivot is None:  # pure translation
+        v_cm = np.full(position.size, -swing_speed)
+        spin = np.zeros(position.size)
+    else:  # rotation about the pivot: v(x) = -swing (pivot - x) / (pivot - position)
+        v_cm = -swing_speed * (pivot - modes.center_of_mass) / (pivot - position)
+        spin = -swing_speed / (pivot - position)
+    return np.column_stack([v_cm * np.sqrt(modes.mass), spin * np.sqrt(modes.inertia_cm)])
+
+
+def impact(
+    racket: Racket,
+    ball: Ball,
+    position,
+    speed: float,
+    *,
+    swing_speed: float = 0.0,
+    pivot: float | None = None,
+    steps_per_contact: int = DEFAULT_STEPS_PER_CONTACT,
+) -> Impact:
+    """A ball hits the racket head-on at ``position``, normal to the string plane.
+
+    Parameters
+    ----------
+    racket : Racket
+        The racket, initially still unless ``swing_speed`` > 0.
+    ball : Ball
+        The ball (any law of :mod:`ball`, the unhappy SineLaw included).
+    position : float or array_like
+        Impact point(s) [m from the tip], on the strings; an array runs all impacts together.
+    speed : float
+        Ball speed towards the strings [m/s], >= 0 (> 0 unless the racket is swung).
+    swing_speed : float
+        Speed [m/s] of the impact point towards the ball from the racket's rigid-body
+        motion (a swing); 0 for a racket at rest.
+    pivot : float, optional
+        The swing's instantaneous centre of rotation [m from the tip], beyond every impact
+        point (e.g. near the butt, 0.6 m); None for pure translation.
+    steps_per_contact : int
+        Time steps per estimated contact time (>= 50).
+
+    Returns
+    -------
+    Impact
+    """
+    if not isinstance(racket, Racket):
+        raise ValueError(f"racket must be a Racket, got {racket!r}")
+    if not isinstance(ball, Ball):
+        raise ValueError(f"ball must be a Ball, got {ball!r}")
+    scalar = np.ndim(position) == 0
+    x = racket.check_positions(position)
+    speed = non_negative("speed", speed, "m/s")
+    swing_speed = non_negative("swing_speed", swing_speed, "m/s")
+    if speed == 0.0 and swing_speed == 0.0:
+        raise ValueError("speed must be > 0 m/s (or the racket swung, swing_speed > 0), got 0")
+    if pivot is not None:
+        pivot = finite("pivot", pivot, "m from the tip")
+        if pivot <= x.max():
+            raise ValueError(
+                f"pivot must lie beyond the impact points (> {x.max():g} m from "
+                f"the tip), got {pivot!r}"
+            )
+    steps_per_contact = int(positive("steps_per_contact", steps_per_contact))
+    if steps_per_contact < 50:
+        raise ValueError(f"steps_per_contact must be >= 50, got {steps_per_contact}")
+
+    k_s = racket.strings.stiffness
+    closing = speed + swing_speed
+    dt = contact_time_scale(ball, k_s, closing) / steps_per_contact
+    max_steps = 12 * steps_per_contact
+    code, p0, p1, p2 = _law_code(ball.law)
+
+    free = racket.support == "free"
+    modes = racket.beam.modes
+    n = modes.count if free else 0
+    phi = modes.shape(x).T.copy() if free else np.zeros((x.size, 0))
+    trans, g0, g1 = step_matrices(modes.omega[:n], modes.damping[:n], dt)
+    damp_rate = 2.0 * modes.damping[:n] * modes.omega[:n]
+    ball_trans, ball_g0, ball_g1 = (a[0] for a in step_matrices(0.0, 0.0, dt, -1.0 / ball.mass))
+    modal_velocity = np.zeros((x.size, n))
+    if free:
+        modal_velocity[:, :2] = _swing_velocities(modes, x, swing_speed, pivot)
+    elif swing_speed:
+        raise ValueError("swing_speed must be 0 for a clamped-head racket (it cannot move)")
+    ball_velocity = np.full(x.size, speed)
+
+    def run(x_o, record):
+        out_ball = np.zeros((x.size, 2))
+        out_modal = np.zeros((x.size, n, 2))
+        summary = np.zeros((x.size, kernel.N_SUMMARY))
+        hist = np.zeros(
+            (kernel.N_HISTORY, x.size, max_steps + 1) if record else (kernel.N_HISTORY, 1, 1)
+        )
+        kernel.run_impacts(
+            phi,
+            trans,
+            g0,
+            g1,
+            modes.omega[:n],
+            damp_rate,
+            ball_trans,
+            ball_g0,
+            ball_g1,
+            1.0 / k_s,
+            code,
+            p0,
+            p1,
+            p2,
+            ball_velocity,
+            modal_velocity,
+            x_o,
+            dt,
+            max_steps,
+            FORCE_TOL,
+            record,
+            out_ball,
+            out_modal,
+            summary,
+            hist,
+        )
+        return out_ball, out_modal, summary, hist
+
+    x_o = np.full(x.size, np.nan)
+    if code == kernel.SINE:
+        x_o = _self_consistent_x_o(run, ball, closing, x.size)
+    out_ball, out_modal, summary, hist = run(x_o, True)
+    if not np.all(summary[:, kernel.ENDED]):
+        bad = x[summary[:, kernel.ENDED] == 0][0]
+        raise RuntimeError(
+            f"the impact at {bad:g} m from the tip had not ended after {max_steps * dt:.3g} s"
+        )
+
+    # dc part (rigid-body modes) and ac part (bending modes) after the ball has left.
+    ball_after = out_ball[:, 1]
+    q, qd = out_modal[..., 0], out_modal[..., 1]
+    rigid_qd = qd[:, :2] if free else np.zeros((x.size, 2))
+    v_cm = rigid_qd[:, 0] / np.sqrt(modes.mass)
+    omega = rigid_qd[:, 1] / np.sqrt(modes.inertia_cm)
+    v2_dc = (
+        np.sum(phi[:, :2] * rigid_qd[:, : phi[:, :2].shape[1]], axis=1)
+        if free
+        else (np.zeros(x.size))
+    )
+    v2_total = np.sum(phi * qd, axis=1)
+    mode_energy = 0.5 * (qd[:, 2:] ** 2 + (modes.omega[2:n] * q[:, 2:]) ** 2)
+    vibration = mode_energy.sum(axis=1)
+
+    energy_initial = 0.5 * ball.mass * speed**2 + 0.5 * np.sum(modal_velocity**2, axis=1)
+    ball_energy = 0.5 * ball.mass * ball_after**2
+    racket_energy = 0.5 * np.sum(rigid_qd**2, axis=1)
+    if code == kernel.SINE:
+        ball_loss = summary[:, kernel.SINE_WORK]  # X never decreases: all work on it is lost
+    else:
+        ball_loss = ball.law.dissipated(summary[:, kernel.F_MAX])
+    damping_loss = summary[:, kernel.DAMPING_LOSS]
+    residual = energy_initial - (ball_energy + racket_energy + vibration + ball_loss + damping_loss)
+
+    steps = np.rint(summary[:, kernel.T_END] / dt).astype(int)
+    used = int(steps.max()) + 1
+    hist = hist[:, :, :used].copy()
+    after = np.arange(used)[None, :] > steps[:, None]
+    hist[:, after] = np.nan
+
+    with np.errstate(invalid="ignore", divide="ignore"):
+        e_a = np.where(speed > 0, -ball_after / speed, np.nan)
+    m_eff = racket.beam.effective_mass(x) if free else np.full(x.size, np.inf)
+    fields = dict(
+        position=x,
+        e=(v2_dc - ball_after) / closing,
+        e_A=e_a,
+        e_van_zandt=(v2_total - ball_after) / closing,
+        effective_mass=m_eff,
+        ball_rebound=-ball_after,
+        v_cm=v_cm,
+        omega=omega,
+        point_velocity_dc=v2_dc,
+        contact_time=summary[:, kernel.T_CONTACT],
+        peak_force=summary[:, kernel.F_PEAK],
+        vibration_energy=vibration,
+        mode_energy=mode_energy,
+        energy_initial=energy_initial,
+        ball_energy=ball_energy,
+        racket_energy=racket_energy,
+        ball_loss=np.asarray(ball_loss, dtype=float),
+        damping_loss=damping_loss,
+        energy_residual=residual,
+        x_o=x_o,
+        force=hist[kernel.H_FORCE],
+        ball_compression=hist[kernel.H_BALL_COMP],
+        string_deflection=hist[kernel.H_STRING],
+        ball_velocity=hist[kernel.H_BALL_VEL],
+        point_velocity=hist[kernel.H_POINT_VEL],
+        point_velocity_dc_history=hist[kernel.H_POINT_VEL_DC],
+    )
+    if scalar:
+        fields = {k: (v[0] if v.ndim > 1 else float(v[0])) for k, v in fields.items()}
+    return Impact(speed=speed, swing_speed=swing_speed, t=np.arange(used) * dt, **fields)
+
+
+def _self_consistent_x_o(run, ball: Ball, closing: float, count: int) -> np.ndarray:
+    """Smallest Xo per impact for which the unhappy ball never snaps through (bisection).
+
+    Too small an Xo lets the contact push the ball past the maximum of X + c F_sine(X),
+    where it would snap; any larger Xo runs, but leaves the ball with a jump across its
+    fold.  The boundary is the smooth, self-consistent solution of :mod:`ball.unhappy`.
+    """
+    x_wall = closing * np.sqrt(np.pi * ball.mass / (4.0 * ball.law.k0))
+    lo = np.full(count, 1e-3 * x_wall)
+    hi = np.full(count, 2.0 * x_wall)
+    while True:
+        snapped = run(hi, False)[2][:, kernel.SNAPPED] > 0
+        if not np.any(snapped):
+            break
+        hi = np.where(snapped, 2.0 * hi, hi)
+    for _ in range(55):
+        mid = np.sqrt(lo * hi)
+        snapped = run(mid, False)[2][:, kernel.SNAPPED] > 0
+        lo = np.where(snapped, mid, lo)
+        hi = np.where(snapped, hi, mid)
+    return hi

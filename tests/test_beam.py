@@ -1,0 +1,146 @@
+"""Free-free beam: analytic modes, finite elements, mass properties, Eq. 20."""
+
+import numpy as np
+import pytest
+
+from beam import Beam
+
+BETA_L = [4.7300408, 7.8532046, 10.9956078, 14.1371655, 17.2787597]
+
+
+@pytest.fixture(scope="module")
+def uniform():
+    return Beam.uniform(length=0.68, mass=0.34, f1=120.0)
+
+
+def test_uniform_frequencies_follow_the_free_free_roots(uniform):
+    f = uniform.modes.frequencies
+    assert f[0] == pytest.approx(120.0, rel=1e-12)
+    assert f[:5] / f[0] == pytest.approx((np.array(BETA_L) / BETA_L[0]) ** 2, rel=1e-7)
+
+
+def test_analytic_shapes_are_mass_normalised_and_orthogonal(uniform):
+    x = np.linspace(0, uniform.length, 20001)
+    phi = uniform.modes.shape(x)
+    rho = uniform.mass / uniform.length
+    gram = rho * np.trapezoid(phi[:, None, :] * phi[None, :, :], x, axis=-1)
+    assert gram == pytest.approx(np.eye(phi.shape[0]), abs=1e-6)
+
+
+def test_analytic_shapes_satisfy_the_beam_equation(uniform):
+    """EI phi'''' = rho omega**2 phi inside, phi'' = phi''' = 0 at the free ends."""
+    modes = uniform.modes
+    rho, ei = uniform.mass_per_length[0], uniform.bending_stiffness[0]
+    h = 1e-3
+    x = np.linspace(0.1, 0.58, 7)
+    phi = lambda s: modes.shape(s)[2:5]  # noqa: E731
+    d4 = (phi(x - 2 * h) - 4 * phi(x - h) + 6 * phi(x) - 4 * phi(x + h) + phi(x + 2 * h)) / h**4
+    expected = rho * modes.omega[2:5, None] ** 2 / ei * phi(x)
+    assert d4 == pytest.approx(expected, rel=1e-3, abs=1e-3 * np.abs(expected).max())
+    ends = np.array([0.0, uniform.length])
+    inside = np.array([h, uniform.length - h])
+    curvature = (phi(ends + np.array([2 * h, -2 * h])) - 2 * phi(inside) + phi(ends)) / h**2
+    assert np.abs(curvature).max() < 1e-3 * np.abs(d4).max() * h
+
+
+def test_fem_matches_analytic_on_a_uniform_profile(uniform):
+    fem = uniform.compute_modes("fem")
+    exact = uniform.modes
+    assert fem.frequencies[:5] == pytest.approx(exact.frequencies[:5], rel=1e-3)
+    x = np.linspace(0, uniform.length, 41)
+    assert fem.shape(x)[:7] == pytest.approx(exact.shape(x)[:7], abs=1e-4)
+
+
+def test_fem_converges_with_mesh():
+    beam = Beam((0.0, 0.3, 0.5, 0.68), (0.7, 0.3, 0.45), (60.0, 120.0, 80.0), n_modes=4)
+    f = [
+        Beam(
+            beam.stations, beam.mass_per_length, beam.bending_stiffness, n_modes=4, elements=n
+        ).modes.frequencies
+        for n in (30, 60, 120)
+    ]
+    err1, err2 = np.abs(f[0] - f[2]), np.abs(f[1] - f[2])
+    assert np.all(err2[1:] < err1[1:] / 8)  # cubic Hermite: h**4 convergence
+    # Mode 1 has already converged to the eigen-solver's round-off (~1e-7).
+    assert err2[0] < 1e-6 * f[2][0]
+
+
+def test_mode_one_nodes_at_0224_length(uniform):
+    nodes = uniform.modes.nodes(1)
+    assert nodes / uniform.length == pytest.approx([0.2242, 1 - 0.2242], abs=2e-4)
+    assert len(uniform.modes.nodes(2)) == 3
+
+
+def test_mass_properties_and_swingweight(uniform):
+    m, length = 0.34, 0.68
+    assert uniform.mass == pytest.approx(m)
+    assert uniform.center_of_mass == pytest.approx(length / 2)
+    assert uniform.inertia_cm == pytest.approx(m * length**2 / 12)
+    sw = m * length**2 / 12 + m * (length / 2 - 0.10) ** 2
+    assert uniform.swingweight == pytest.approx(sw)
+    assert uniform.swingweight_kgcm2 == pytest.approx(sw * 1e4)
+
+
+def test_effective_mass_eq20(uniform):
+    m2 = uniform.effective_mass(uniform.center_of_mass)
+    assert m2 == pytest.approx(uniform.mass)
+    b = 0.2
+    assert uniform.effective_mass(uniform.center_of_mass - b) == pytest.approx(
+        1 / (1 / uniform.mass + b**2 / uniform.inertia_cm)
+    )
+
+
+def test_point_mass_parallel_axis_and_fem():
+    base = Beam.uniform(0.68, 0.34, 120.0)
+    taped = Beam(
+        base.stations, base.mass_per_length, base.bending_stiffness, point_masses=((0.05, 0.01),)
+    )
+    d = base.length - 0.10 - 0.05
+    assert taped.swingweight - base.swingweight == pytest.approx(0.01 * d**2)
+    assert taped.mass == pytest.approx(0.35)
+    assert not taped.is_uniform
+    assert taped.modes.frequencies[0] < base.modes.frequencies[0]
+
+
+@pytest.mark.parametrize(
+    "kwargs, name",
+    [
+        (
+            dict(stations=(0.0, 0.68), mass_per_length=(0.0,), bending_stiffness=(10.0,)),
+            "mass_per_length",
+        ),
+        (
+            dict(stations=(0.0, 0.68), mass_per_length=(0.5,), bending_stiffness=(-1.0,)),
+            "bending_stiffness",
+        ),
+        (
+            dict(stations=(0.0, 0.68), mass_per_length=(np.nan,), bending_stiffness=(1.0,)),
+            "mass_per_length",
+        ),
+        (dict(stations=(0.1, 0.68), mass_per_length=(0.5,), bending_stiffness=(1.0,)), "stations"),
+        (
+            dict(stations=(0.0, 0.68), mass_per_length=(0.5,), bending_stiffness=(1.0,), n_modes=0),
+            "n_modes",
+        ),
+        (
+            dict(
+                stations=(0.0, 0.68), mass_per_length=(0.5,), bending_stiffness=(1.0,), damping=1.5
+            ),
+            "damping",
+        ),
+        (
+            dict(stations=(0.0, 0.68), mass_per_length=(0.5, 0.4), bending_stiffness=(1.0,)),
+            "mass_per_length",
+        ),
+    ],
+)
+def test_bad_profiles_raise(kwargs, name):
+    with pytest.raises(ValueError, match=name):
+        Beam(**kwargs)
+
+
+def test_uniform_rejects_bad_numbers():
+    with pytest.raises(ValueError, match="f1"):
+        Beam.uniform(0.68, 0.34, -120.0)
+    with pytest.raises(ValueError, match="mass"):
+        Beam.uniform(0.68, 0.0, 120.0)

@@ -1,0 +1,208 @@
+"""Impacts on the flexible racket (paper Sec. VII): conservation, Eq. 21, convergence,
+the rigid and clamped limits, and the paper's numbers for its default racket."""
+
+import numpy as np
+import pytest
+
+from ball import (
+    Ball,
+    LinearHysteresis,
+    LinearSpring,
+    PowerLawHysteresis,
+    SineLaw,
+    collide,
+    series_cor,
+    serve_speed,
+    unhappy_cor,
+)
+from beam import Beam
+from racket import Racket, StringBed, impact, paper_racket, tennis_ball
+
+BALL = tennis_ball()
+POSITIONS = np.linspace(0.0, 0.32, 17)
+
+
+@pytest.fixture(scope="module")
+def sweep():
+    return impact(paper_racket(), BALL, np.linspace(0.0, 0.32, 321), 10.0)
+
+
+def test_momentum_and_angular_momentum_conserved(sweep):
+    r, beam, m1 = sweep, paper_racket().beam, BALL.mass
+    p_after = m1 * -r.ball_rebound + beam.mass * r.v_cm
+    assert p_after == pytest.approx(m1 * 10.0, rel=1e-9)
+    arm = beam.center_of_mass - r.position  # lever arm of the ball about the centre of mass
+    l_after = beam.inertia_cm * r.omega + arm * m1 * -r.ball_rebound
+    assert l_after == pytest.approx(arm * m1 * 10.0, rel=1e-9, abs=1e-12)
+
+
+def test_eq21_links_e_and_e_A(sweep):
+    m1, m2 = BALL.mass, sweep.effective_mass
+    assert sweep.e == pytest.approx(sweep.e_A + (1 + sweep.e_A) * m1 / m2, abs=1e-6)
+    assert sweep.point_velocity_dc == pytest.approx(
+        sweep.v_cm + (paper_racket().beam.center_of_mass - sweep.position) * sweep.omega, rel=1e-12
+    )
+
+
+def test_energy_budget_closes_without_damping():
+    racket = Racket(Beam.uniform(0.68, 0.34, 120.0, damping=0.0), paper_racket().strings)
+    residuals = [
+        np.abs(
+            impact(racket, BALL, POSITIONS, 10.0, steps_per_contact=n).energy_residual
+            / 0.5
+            / BALL.mass
+            / 100
+        ).max()
+        for n in (600, 2400)
+    ]
+    assert residuals[1] < 1e-6
+    assert residuals[0] / residuals[1] > 10  # second order in the time step
+    damped = impact(paper_racket(), BALL, POSITIONS, 10.0, steps_per_contact=2400)
+    assert np.all(damped.damping_loss > 0)
+    assert np.abs(damped.energy_residual / damped.energy_initial).max() < 1e-6
+
+
+def test_convergence_in_modes_and_time_step():
+    default = impact(paper_racket(), BALL, POSITIONS, 10.0)
+    base = paper_racket()
+    fine_beam = Beam.uniform(0.68, 0.34, 120.0, n_modes=2 * base.beam.n_modes)
+    fine = impact(Racket(fine_beam, base.strings), BALL, POSITIONS, 10.0, steps_per_contact=2 * 600)
+    assert np.abs(default.e - fine.e).max() < 1e-3
+    assert np.abs(default.e_A - fine.e_A).max() < 1e-3
+    # Second order in the step: halving it cuts the error in e about four times.
+    e_at = {
+        n: impact(paper_racket(), BALL, POSITIONS, 10.0, steps_per_contact=n).e for n in (300, 2400)
+    }
+    e_at[600] = default.e
+    err_300, err_600 = (np.abs(e_at[n] - e_at[2400]).max() for n in (300, 600))
+    assert err_300 > 3 * err_600
+
+
+def test_rigid_racket_gives_eq6_everywhere():
+    rigid = Racket(Beam.uniform(0.68, 0.34, 2e5), paper_racket().strings)
+    r = impact(rigid, BALL, POSITIONS, 10.0)
+    assert r.e == pytest.approx(series_cor(0.75, 4e4, 4e4), abs=1e-3)
+    assert r.vibration_energy.max() < 1e-5 * r.energy_initial[0]
+
+
+def test_clamped_head_at_the_node_equals_the_free_racket():
+    node = paper_racket().beam.modes.nodes(1)[0]
+    free = impact(paper_racket(), BALL, node, 10.0)
+    clamped = impact(paper_racket("clamped-head"), BALL, node, 10.0)
+    assert clamped.e == pytest.approx(series_cor(0.75, 4e4, 4e4), abs=1e-4)
+    assert clamped.e == pytest.approx(clamped.e_A)
+    assert free.e == pytest.approx(clamped.e, abs=0.01)
+
+
+def test_paper_numbers_for_the_default_racket(sweep):
+    node = paper_racket().beam.modes.nodes(1)[0]
+    i_max = int(np.argmax(sweep.e))
+    assert abs(sweep.position[i_max] - node) < 0.01
+    assert sweep.e[i_max] == pytest.approx(0.86, abs=0.03)
+    at = lambda x: float(np.interp(x, sweep.position, sweep.e))  # noqa: E731
+    assert at(0.01) == pytest.approx(0.54, abs=0.04)
+    assert at(0.30) == pytest.approx(0.71, abs=0.03)
+    # e_A peaks nearer the throat than e does (paper Sec. VII).
+    assert sweep.position[np.argmax(sweep.e_A)] > sweep.position[i_max] + 0.02
+    centre = paper_racket().strings.center
+    m2 = float(np.interp(centre, sweep.position, sweep.effective_mass))
+    assert m2 / BALL.mass == pytest.approx(3.0, abs=0.35)
+    # Van Zandt's e counts vibration as rebound: it differs where vibration is excited.
+    assert np.abs(sweep.e_van_zandt - sweep.e).max() > 0.01
+
+
+def test_unhappy_ball_on_strings():
+    u = Ball(0.057, SineLaw(k0=4e4))
+    clamped = impact(paper_racket("clamped-head"), u, 0.15, 10.0)
+    assert clamped.e == pytest.approx(unhappy_cor(4e4, 4e4), abs=1e-3)
+    assert clamped.e == pytest.approx(0.517, abs=0.01)
+    node = paper_racket().beam.modes.nodes(1)[0]
+    free = impact(paper_racket(), u, node, 10.0)
+    assert free.e == pytest.approx(clamped.e, abs=0.02)
+    assert abs(free.energy_residual) < 1e-5 * free.energy_initial
+
+
+def test_swung_racket_on_a_ball_at_rest_matches_eq22_in_translation():
+    rest = impact(paper_racket(), BALL, 0.16, 10.0)
+    swung = impact(paper_racket(), BALL, 0.16, 0.0, swing_speed=10.0)
+    expected = serve_speed(rest.e, BALL.mass, rest.effective_mass, 10.0)
+    assert swung.ball_rebound == pytest.approx(expected, rel=1e-6)
+    assert np.isnan(swung.e_A)
+    pivoted = impact(paper_racket(), BALL, 0.16, 0.0, swing_speed=10.0, pivot=0.6)
+    assert pivoted.e == pytest.approx(swung.e, abs=0.02)
+    assert pivoted.ball_rebound > 10.0
+
+
+def test_histories_split_dc_and_ac():
+    r = impact(paper_racket(), BALL, 0.02, 10.0)
+    assert r.force.shape == r.t.shape
+    assert np.nanmax(r.force) == pytest.approx(r.peak_force)
+    ac = r.point_velocity_ac_history
+    assert np.nanmax(np.abs(ac)) > 0.1  # an impact near the tip rings the frame
+    assert r.point_velocity_dc_history[-1] == pytest.approx(r.point_velocity_dc)
+    assert r.mode_energy.sum() == pytest.approx(r.vibration_energy)
+
+
+@pytest.mark.parametrize(
+    "kwargs, needle",
+    [
+        (dict(position=0.40, speed=10.0), "position"),
+        (dict(position=-0.01, speed=10.0), "position"),
+        (dict(position=[0.1, np.nan], speed=10.0), "position"),
+        (dict(position=0.1, speed=-3.0), "speed"),
+        (dict(position=0.1, speed=0.0), "speed"),
+        (dict(position=0.1, speed=np.nan), "speed"),
+        (dict(position=0.1, speed=10.0, swing_speed=-1.0), "swing_speed"),
+        (dict(position=0.1, speed=10.0, swing_speed=5.0, pivot=0.05), "pivot"),
+        (dict(position=0.1, speed=10.0, steps_per_contact=10), "steps_per_contact"),
+    ],
+)
+def test_bad_impact_input(kwargs, needle):
+    with pytest.raises(ValueError, match=needle):
+        impact(paper_racket(), BALL, **kwargs)
+
+
+@pytest.mark.parametrize(
+    "make, needle",
+    [
+        (lambda: StringBed(-4e4, (0.0, 0.32)), "stiffness"),
+        (lambda: StringBed(4e4, (0.3, 0.1)), "extent"),
+        (lambda: StringBed(4e4, (0.0, np.nan)), "extent"),
+        (lambda: Racket(Beam.uniform(0.68, 0.34, 120), StringBed(4e4, (0, 0.9))), "extent"),
+        (
+            lambda: Racket(Beam.uniform(0.68, 0.34, 120), StringBed(4e4, (0, 0.3)), "held"),
+            "support",
+        ),
+    ],
+)
+def test_bad_racket_input(make, needle):
+    with pytest.raises(ValueError, match=needle):
+        make()
+
+
+def test_ball_law_with_clamped_swing_rejected():
+    with pytest.raises(ValueError, match="swing_speed"):
+        impact(paper_racket("clamped-head"), BALL, 0.1, 10.0, swing_speed=3.0)
+
+
+def test_a_law_is_not_a_ball():
+    with pytest.raises(ValueError, match="ball"):
+        impact(paper_racket(), LinearHysteresis(4e4, 0.75), 0.1, 10.0)
+
+
+@pytest.mark.parametrize(
+    "law",
+    [
+        LinearHysteresis(4e4, 0.75),
+        PowerLawHysteresis.with_cor(k=3e6, a=1.5, e=0.75),
+        PowerLawHysteresis(k=1e5, a=1.0, b=1.0),
+    ],
+)
+def test_clamped_head_equals_the_two_body_collision(law):
+    """On the clamped head the ball meets immovable strings: ball.collide's problem."""
+    ball = Ball(0.057, law)
+    r = impact(paper_racket("clamped-head"), ball, 0.1, 20.0, steps_per_contact=2400)
+    two_body = collide(ball, Ball(1e15, LinearSpring(4e4)), 20.0)
+    assert r.e == pytest.approx(two_body.e, abs=1e-5)
+    assert r.contact_time == pytest.approx(two_body.contact_time, rel=2e-3)
+    assert r.peak_force == pytest.approx(two_body.peak_force, rel=1e-4)
