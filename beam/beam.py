@@ -76,7 +76,9 @@ class Beam:
                     f"{name} needs one value per segment ({st.size - 1}), got {values.size}"
                 )
             if np.any(values <= 0):
-                raise ValueError(f"{name} must be > 0 on every segment, got {values.min()!r}")
+                raise ValueError(
+                    f"{name} must be > 0 on every segment, got {float(values.min())!r}"
+                )
         pm = (
             finite_array("point_masses", self.point_masses).reshape(-1, 2)
             if len(self.point_masses)

@@ -19,9 +19,11 @@ contact (about 1/600 of it by default), not by the highest mode.
 The unhappy ball (sine law) uses a return mapping in its compression X, which never
 decreases: the ball flows along the sine (X + c' F_sine(X) = z_pred) when the contact
 pushes it, locks (X frozen, F below the sine) when the contact relaxes before its fold,
-and crosses the fold on the falling branch.  If the contact would push past the fold's
-maximum the ball would snap through; the step flags it, and :func:`racket.solver.impact`
-raises Xo until no impact snaps (the self-consistent Xo of :mod:`ball.unhappy`).
+and crosses the fold on the falling branch.  Pushed again on the falling branch (by the
+frame's vibration) it holds its compression until the force falls back to the sine.  If
+the contact would push past the fold's maximum the ball would snap through; the step
+flags it, and :func:`racket.solver.impact` raises Xo until no impact snaps (the
+self-consistent Xo of :mod:`ball.unhappy`).
 
 Law codes: 0 linear hysteresis (k, e), 1 power law (k, a, b), 2 sine law (k0).
 """
@@ -154,7 +156,9 @@ def sine_step(k0, x_o, a, z_pred, x_n, slack):
             return k0 * x_o * math.sin(math.pi * x / x_o), x, False
         return max((z_pred - x_n) / a, 0.0), x_n, False  # lock
     if z_pred > h_n:
-        return 0.0, z_pred, True  # pushed while on the falling branch: snap-through
+        # Pushed again on the falling branch (the frame's vibration): the ball holds its
+        # compression, like any loaded material reloaded below its previous peak.
+        return (z_pred - x_n) / a, x_n, False
     if z_pred >= x_o:
         x = _sine_root(z_pred, a, k0, x_o, x_n, x_o)
         return k0 * x_o * math.sin(math.pi * x / x_o), x, False

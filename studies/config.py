@@ -1,0 +1,218 @@
+"""Rackets and balls from presets or TOML files (the CLI's ``--racket`` and ``--ball``).
+
+Schema (every key optional unless marked; SI units; unknown keys are errors)::
+
+    [racket]
+    preset = "paper"            # start from a preset, then override
+    length = 0.68               # m      } a uniform frame ...
+    mass = 0.34                 # kg     }
+    f1 = 120.0                  # Hz     }
+    stations = [0.0, 0.3, 0.68] # m from the tip  } ... or a piecewise-constant profile
+    mass_per_length = [...]     # kg/m per segment }
+    bending_stiffness = [...]   # N m^2 per segment }
+    point_masses = [[0.05, 0.004]]   # [position m from the tip, mass kg]
+    damping = 0.005             # modal damping ratio (one value or one per mode)
+    n_modes = 8
+    support = "free"            # or "clamped-head"
+
+    [racket.strings]
+    stiffness = 4e4             # N/m
+    extent = [0.0, 0.32]        # m from the tip
+
+    [ball]
+    preset = "tennis"           # or: mass (kg) and law, with the law's parameters:
+    mass = 0.057
+    law = "linear-hysteresis"   # "linear-spring" (k), "linear-hysteresis" (k, e),
+    k = 4e4                     # "power-law" (k, a, b, or k, a, e), "sine" (k0)
+    e = 0.75
+"""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+from ball import Ball, LinearHysteresis, LinearSpring, PowerLawHysteresis, SineLaw
+from beam import Beam
+from racket import Racket, StringBed, paper_racket, tennis_ball
+
+if sys.version_info >= (3, 11):
+    import tomllib
+else:  # pragma: no cover
+    import tomli as tomllib
+
+RACKETS = {"paper": paper_racket}
+"""Racket presets by name."""
+
+BALLS = {
+    "tennis": tennis_ball,
+    "zero-cor-tennis": lambda: Ball(0.057, SineLaw(k0=4e4)),
+    "happy": lambda: Ball(0.0103, LinearSpring(k=2e4)),
+    "unhappy": lambda: Ball(0.0103, SineLaw(k0=2e4)),
+}
+"""Ball presets by name: the paper's tennis ball, its zero-COR twin (Sec. VIII), and the
+happy and unhappy balls of Secs. IV-VI."""
+
+LAWS = {
+    "linear-spring": (LinearSpring, {"k"}),
+    "linear-hysteresis": (LinearHysteresis, {"k", "e"}),
+    "power-law": (PowerLawHysteresis, {"k", "a", "b"}),
+    "sine": (SineLaw, {"k0"}),
+}
+
+_RACKET_KEYS = {
+    "preset",
+    "length",
+    "mass",
+    "f1",
+    "stations",
+    "mass_per_length",
+    "bending_stiffness",
+    "point_masses",
+    "damping",
+    "n_modes",
+    "support",
+    "strings",
+}
+_STRING_KEYS = {"stiffness", "extent"}
+_BALL_KEYS = {"preset", "mass", "law", "k", "e", "a", "b", "k0"}
+
+
+def _check_keys(table: dict, allowed: set, where: str) -> None:
+    unknown = sorted(set(table) - allowed)
+    if unknown:
+        raise ValueError(
+            f"unknown key {unknown[0]!r} in [{where}]; valid keys: {', '.join(sorted(allowed))}"
+        )
+
+
+def _preset(name: str, presets: dict, kind: str):
+    if name not in presets:
+        raise ValueError(f"unknown {kind} preset {name!r}; presets: {', '.join(presets)}")
+    return presets[name]()
+
+
+def read_toml(path: str | Path) -> dict:
+    """The TOML file as a dict; ValueError naming the file if it cannot be read."""
+    try:
+        with open(path, "rb") as f:
+            return tomllib.load(f)
+    except OSError as err:
+        raise ValueError(f"cannot read {path}: {err.strerror}") from None
+    except tomllib.TOMLDecodeError as err:
+        raise ValueError(f"{path} is not valid TOML: {err}") from None
+
+
+def racket_from_table(table: dict) -> Racket:
+    """A racket from a ``[racket]`` table (see the module docstring)."""
+    _check_keys(table, _RACKET_KEYS, "racket")
+    base = _preset(table.get("preset", "paper"), RACKETS, "racket")
+    beam = base.beam
+    uniform = {"length", "mass", "f1"} & set(table)
+    profile = {"stations", "mass_per_length", "bending_stiffness"} & set(table)
+    if uniform and profile:
+        raise ValueError(
+            "give either length/mass/f1 or stations/mass_per_length/"
+            "bending_stiffness in [racket], not both"
+        )
+    damping = table.get("damping", beam.damping)
+    n_modes = table.get("n_modes", beam.n_modes)
+    if uniform:
+        stiffness = beam.bending_stiffness[0] if beam.is_uniform else None
+        f1 = table.get("f1", beam.modes.frequencies[0] if stiffness else None)
+        beam = Beam.uniform(
+            table.get("length", beam.length),
+            table.get("mass", beam.mass),
+            f1,
+            damping=damping,
+            n_modes=n_modes,
+        )
+    elif profile:
+        missing = {"stations", "mass_per_length", "bending_stiffness"} - profile
+        if missing:
+            raise ValueError(f"a profile needs {', '.join(sorted(missing))} in [racket]")
+        beam = Beam(
+            table["stations"],
+            table["mass_per_length"],
+            table["bending_stiffness"],
+            damping=damping,
+            n_modes=n_modes,
+        )
+    else:
+        beam = Beam(
+            beam.stations,
+            beam.mass_per_length,
+            beam.bending_stiffness,
+            damping=damping,
+            n_modes=n_modes,
+        )
+    if "point_masses" in table:
+        beam = Beam(
+            beam.stations,
+            beam.mass_per_length,
+            beam.bending_stiffness,
+            point_masses=table["point_masses"],
+            damping=beam.damping,
+            n_modes=beam.n_modes,
+        )
+    strings_table = table.get("strings", {})
+    _check_keys(strings_table, _STRING_KEYS, "racket.strings")
+    strings = StringBed(
+        strings_table.get("stiffness", base.strings.stiffness),
+        tuple(strings_table.get("extent", base.strings.extent)),
+    )
+    return Racket(beam, strings, table.get("support", base.support))
+
+
+def ball_from_table(table: dict) -> Ball:
+    """A ball from a ``[ball]`` table (see the module docstring)."""
+    _check_keys(table, _BALL_KEYS, "ball")
+    if "preset" in table:
+        extra = sorted(set(table) - {"preset"})
+        if extra:
+            raise ValueError(f"[ball] with a preset takes no other keys, got {extra[0]!r}")
+        return _preset(table["preset"], BALLS, "ball")
+    if "law" not in table or "mass" not in table:
+        raise ValueError("[ball] needs a preset, or mass and law")
+    if table["law"] not in LAWS:
+        raise ValueError(f"unknown law {table['law']!r}; laws: {', '.join(LAWS)}")
+    cls, params = LAWS[table["law"]]
+    given = set(table) - {"mass", "law"}
+    if cls is PowerLawHysteresis and given == {"k", "a", "e"}:
+        law = PowerLawHysteresis.with_cor(table["k"], table["a"], table["e"])
+    else:
+        if given != params:
+            raise ValueError(
+                f"law {table['law']!r} takes {', '.join(sorted(params))}, got "
+                f"{', '.join(sorted(given)) or 'nothing'}"
+            )
+        law = cls(**{p: table[p] for p in params})
+    return Ball(table["mass"], law)
+
+
+def load_racket(spec: str) -> Racket:
+    """A racket from a preset name or a TOML file with a ``[racket]`` table."""
+    if spec in RACKETS:
+        return RACKETS[spec]()
+    if not spec.endswith(".toml"):
+        raise ValueError(
+            f"unknown racket preset {spec!r}; presets: {', '.join(RACKETS)} (or a .toml file)"
+        )
+    data = read_toml(spec)
+    if "racket" not in data:
+        raise ValueError(f"{spec} has no [racket] table")
+    return racket_from_table(data["racket"])
+
+
+def load_ball(spec: str) -> Ball:
+    """A ball from a preset name or a TOML file with a ``[ball]`` table."""
+    if spec in BALLS:
+        return BALLS[spec]()
+    if not spec.endswith(".toml"):
+        raise ValueError(
+            f"unknown ball preset {spec!r}; presets: {', '.join(BALLS)} (or a .toml file)"
+        )
+    data = read_toml(spec)
+    if "ball" not in data:
+        raise ValueError(f"{spec} has no [ball] table")
+    return ball_from_table(data["ball"])

@@ -1,0 +1,137 @@
+"""Every quantitative claim of the paper, computed by the simulator (``racket-impact paper``)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+
+from ball import WALL, Ball, LinearSpring, SineLaw, collide, series_cor, unhappy_cor
+from racket import TENNIS_BALL_MASS, impact, paper_racket, tennis_ball
+from studies.serve import serve_table
+
+UNHAPPY = Ball(0.0103, SineLaw(k0=2e4))
+
+
+def happy(k2: float) -> Ball:
+    """The paper's happy ball: 10.3 g, elastic, stiffness ``k2`` [N/m]."""
+    return Ball(0.0103, LinearSpring(k2))
+
+
+def _stored_fraction(mass_ratio: float, ball_speed: float, racket_speed: float) -> float:
+    """Fraction of the lab-frame kinetic energy stored elastically at closest approach, from
+    a collision of an elastic ball (m1) and an elastic racket of mass ``mass_ratio`` m1."""
+    m1 = TENNIS_BALL_MASS
+    racket = Ball(mass_ratio * m1, LinearSpring(4e4))
+    ball = Ball(m1, LinearSpring(4e4))
+    r = collide(racket, ball, racket_speed, -ball_speed)
+    h = r.history
+    kinetic = 0.5 * racket.mass * h.velocity_a**2 + 0.5 * m1 * h.velocity_b**2
+    return float(1.0 - kinetic.min() / r.energy_initial)
+
+
+def paper_table() -> pd.DataFrame:
+    """The paper's numbers beside the simulator's.
+
+    Returns
+    -------
+    DataFrame
+        Columns ``claim``, ``paper``, ``simulated``, ``difference``, ``tolerance``, ``ok``.
+    """
+    rows = []
+
+    def add(claim, paper, simulated, tolerance):
+        rows.append((claim, float(paper), float(simulated), float(tolerance)))
+
+    fig2 = collide(UNHAPPY, WALL, 4.0)
+    add(
+        "Fig. 2: force peak time [ms]",
+        0.36,
+        1e3 * fig2.history.t[np.argmax(fig2.history.force)],
+        0.02,
+    )
+    add("Fig. 2: rebound speed [m/s]", 0.0, fig2.v_a_after, 1e-3)
+    fig3 = collide(UNHAPPY, happy(2e4), 4.0)
+    add("Fig. 3: happy ball after [m/s]", 3.034, fig3.v_b_after, 0.002)
+    add("Fig. 3: unhappy ball after [m/s]", 0.966, fig3.v_a_after, 0.002)
+    add("Fig. 3: e", 0.517, fig3.e, 0.002)
+    fig4 = collide(UNHAPPY, happy(1e5), 4.0)
+    add("Fig. 4: e", 0.001, fig4.e, 0.005)
+    add("Fig. 4: happy ball after [m/s]", 2.00, fig4.v_b_after, 0.01)
+    add("Fig. 4: unhappy ball after [m/s]", 2.00, fig4.v_a_after, 0.01)
+    cm = collide(UNHAPPY, happy(2e4), 2.0, -2.0)
+    add("Sec. VI: recoil speed in the CM frame [m/s]", 1.034, cm.v_b_after, 0.002)
+    swapped = collide(happy(2e4), UNHAPPY, 4.0)
+    add(
+        "Sec. VI: happy ball at 4 m/s sends the unhappy one off at [m/s]",
+        3.034,
+        swapped.v_b_after,
+        0.002,
+    )
+    add(
+        "Eq. 16 at k2 = 2 k0 (analytic vs numerical)",
+        unhappy_cor(2e4, 4e4),
+        collide(UNHAPPY, happy(4e4), 4.0).e,
+        0.01,
+    )
+
+    clamped = impact(paper_racket("clamped-head"), tennis_ball(), 0.16, 10.0)
+    add("Eq. 6: tennis ball on head-clamped strings, e", 0.88, clamped.e, 0.01)
+    add("Eq. 6 (formula) vs simulation", series_cor(0.75, 4e4, 4e4), clamped.e, 1e-3)
+
+    racket = paper_racket()
+    x = np.linspace(0.0, 0.32, 321)
+    sweep = impact(racket, tennis_ball(), x, 10.0)
+    add("Sec. VII: largest e, at the vibration node", 0.86, sweep.e.max(), 0.03)
+    add(
+        "Sec. VII: position of largest e minus mode-1 node [m]",
+        0.0,
+        x[np.argmax(sweep.e)] - racket.beam.modes.nodes(1)[0],
+        0.01,
+    )
+    add("Sec. VII: e at the tip (0.01 m)", 0.54, np.interp(0.01, x, sweep.e), 0.04)
+    add("Sec. VII: e at the throat (0.30 m)", 0.71, np.interp(0.30, x, sweep.e), 0.03)
+    add(
+        "Sec. VIII: effective mass / ball mass, centre of strings",
+        3.0,
+        np.interp(racket.strings.center, x, sweep.effective_mass) / TENNIS_BALL_MASS,
+        0.35,
+    )
+
+    zero = impact(paper_racket("clamped-head"), Ball(TENNIS_BALL_MASS, SineLaw(4e4)), 0.16, 10.0)
+    add("Sec. VIII: zero-COR ball on clamped strings, e", 0.5, zero.e, 0.05)
+    serve = serve_table(racket, tennis_ball(), racket_speed=40.0)
+    add(
+        "Sec. VIII: serve speed / racket speed, normal ball",
+        1.39,
+        serve.loc["normal", "ratio_simulated"],
+        0.07,
+    )
+    add(
+        "Sec. VIII: serve speed / racket speed, zero-COR ball",
+        1.12,
+        serve.loc["zero-COR", "ratio_simulated"],
+        0.07,
+    )
+    add(
+        "Sec. VIII: serve-speed reduction [%]",
+        19.0,
+        serve.loc["zero-COR", "reduction_simulated_percent"],
+        4.0,
+    )
+    add(
+        "Sec. VIII: energy stored, m2 = 3 m1, ball at rest (Eq. 23)",
+        0.25,
+        _stored_fraction(3.0, 0.0, 1.0),
+        0.005,
+    )
+    add(
+        "Sec. VIII: energy stored, m2 = 3 m1, v1 = v2 (Eq. 23)",
+        0.75,
+        _stored_fraction(3.0, 1.0, 1.0),
+        0.005,
+    )
+
+    table = pd.DataFrame(rows, columns=["claim", "paper", "simulated", "tolerance"])
+    table.insert(3, "difference", table["simulated"] - table["paper"])
+    table["ok"] = table["difference"].abs() <= table["tolerance"]
+    return table

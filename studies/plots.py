@@ -1,0 +1,252 @@
+"""Plots of simulation results (matplotlib).
+
+Every function takes results computed elsewhere and an optional ``ax`` (an Axes, or a
+sequence of Axes for the multi-panel plots), draws, and returns the Axes; none calls
+``show()``.  Positions along the racket are distances from the tip, in cm on the plots.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from matplotlib.patches import Ellipse, Rectangle
+
+from ball import Ball, LinearSpring, SineLaw, collide, unhappy_cor
+from racket import Racket
+
+HAND_FROM_BUTT = 0.07
+"""Where the hand holds the racket, for the centre of percussion [m from the butt]."""
+
+
+def _axes(ax, count: int):
+    """``count`` Axes: the ones given, or a new figure's."""
+    if ax is None:
+        import matplotlib.pyplot as plt
+
+        _, ax = plt.subplots(count, 1, sharex=True, figsize=(6.4, 2.2 + 1.8 * count), squeeze=False)
+        return ax[:, 0] if count > 1 else ax[0, 0]
+    if count > 1 and len(np.atleast_1d(ax)) != count:
+        raise ValueError(f"ax must be {count} Axes, got {ax!r}")
+    return ax
+
+
+def center_of_percussion(racket: Racket, pivot: float) -> float:
+    """Centre of percussion [m from the tip] for a pivot at ``pivot`` [m from the tip]: an
+    impact there leaves the pivot at rest (no jar to the hand)."""
+    beam = racket.beam
+    d = pivot - beam.center_of_mass
+    return pivot - (beam.inertia_cm + beam.mass * d**2) / (beam.mass * d)
+
+
+def _columns(result):
+    """position, e, e_A arrays from an Impact or a sweep DataFrame."""
+    if hasattr(result, "columns"):
+        return (
+            result["position_from_tip_m"].to_numpy(),
+            result["e"].to_numpy(),
+            result["e_A"].to_numpy(),
+        )
+    return np.atleast_1d(result.position), np.atleast_1d(result.e), np.atleast_1d(result.e_A)
+
+
+def draw_racket(racket: Racket, ax, y0: float, height: float):
+    """Draw the racket to scale along x (cm from the tip), in the band [y0, y0 + height]."""
+    length = racket.beam.length * 100
+    start, end = (100 * v for v in racket.strings.extent)
+    mid = y0 + 0.5 * height
+    ax.add_patch(
+        Rectangle(
+            (end, mid - 0.08 * height), length - end, 0.16 * height, color="0.35", label="_frame"
+        )
+    )
+    ax.add_patch(
+        Ellipse(
+            ((start + end) / 2, mid), end - start + 2.0, height, fill=False, lw=2.5, color="0.35"
+        )
+    )
+    ax.add_patch(
+        Ellipse(
+            ((start + end) / 2, mid),
+            end - start,
+            0.82 * height,
+            facecolor="0.9",
+            edgecolor="none",
+            hatch="++",
+            label="_strings",
+        )
+    )
+    ax.add_patch(
+        Rectangle(
+            (length - 100 * HAND_FROM_BUTT - 6, mid - 0.14 * height),
+            12,
+            0.28 * height,
+            color="0.15",
+            label="_grip",
+        )
+    )
+
+
+def plot_cor_along_racket(result, racket: Racket, ax=None, pivot: float | None = None):
+    """e and e_A along the racket, with the racket drawn to scale below the curves.
+
+    Marks the mode-1 node, the centre of percussion for a pivot at the hand (default
+    :data:`HAND_FROM_BUTT` from the butt), and the points of largest e and largest e_A.
+
+    Parameters
+    ----------
+    result : Impact or DataFrame
+        An :func:`racket.impact` over many positions, or a :func:`studies.sweep` table.
+    racket : Racket
+        The racket the result is for.
+    """
+    ax = _axes(ax, 1)
+    x, e, e_a = _columns(result)
+    order = np.argsort(x)
+    x, e, e_a = x[order], e[order], e_a[order]
+    cm = 100 * x
+    ax.plot(cm, e, color="C0", lw=2, label="e (Eq. 21, rigid-body motion)")
+    ax.plot(cm, e_a, color="C1", lw=2, label="e_A = V1/v1 (apparent)")
+    i, j = int(np.argmax(e)), int(np.argmax(e_a))
+    ax.plot(cm[i], e[i], "o", color="C0", ms=8, label=f"largest e {e[i]:.3f} at {cm[i]:.1f} cm")
+    ax.plot(
+        cm[j], e_a[j], "s", color="C1", ms=8, label=f"largest e_A {e_a[j]:.3f} at {cm[j]:.1f} cm"
+    )
+    node = racket.beam.modes.nodes(1)[0]
+    ax.axvline(100 * node, color="C2", ls="--", label=f"mode-1 node {100 * node:.1f} cm")
+    pivot = racket.beam.length - HAND_FROM_BUTT if pivot is None else pivot
+    cop = center_of_percussion(racket, pivot)
+    ax.axvline(100 * cop, color="C3", ls=":", label=f"centre of percussion {100 * cop:.1f} cm")
+    low = min(np.nanmin(e_a), 0.0)
+    top = max(np.nanmax(e), 1.0)
+    band = 0.35 * (top - low)
+    draw_racket(racket, ax, low - 1.15 * band, band)
+    ax.set_xlim(-2, 100 * racket.beam.length + 2)
+    ax.set_ylim(low - 1.25 * band, top + 0.05)
+    ax.set_xlabel("impact point [cm from the tip]")
+    ax.set_ylabel("coefficient of restitution")
+    ax.legend(loc="upper right", fontsize="small")
+    return ax
+
+
+def plot_impact(result, ax=None):
+    """Force, compressions and velocities of one impact against time (three panels); the
+    impact point's velocity is split into its dc (rigid-body) and ac (vibration) parts."""
+    axes = _axes(ax, 3)
+    t = 1e3 * result.t
+    axes[0].plot(t, result.force, color="C0", label="contact force")
+    axes[0].set_ylabel("force [N]")
+    axes[1].plot(t, 1e3 * result.ball_compression, color="C1", label="ball compression")
+    axes[1].plot(t, 1e3 * result.string_deflection, color="C2", label="string deflection")
+    axes[1].set_ylabel("compression [mm]")
+    axes[2].plot(t, result.ball_velocity, color="C1", label="ball")
+    axes[2].plot(t, result.point_velocity, color="k", label="impact point, total")
+    axes[2].plot(
+        t,
+        result.point_velocity_dc_history,
+        color="C0",
+        ls="--",
+        label="impact point, dc (rigid body)",
+    )
+    axes[2].plot(
+        t,
+        result.point_velocity_ac_history,
+        color="C3",
+        ls=":",
+        label="impact point, ac (vibration)",
+    )
+    axes[2].set_ylabel("velocity [m/s]")
+    axes[2].set_xlabel("time [ms]")
+    for a in axes:
+        a.legend(fontsize="small")
+    axes[0].set_title(
+        f"impact at {100 * float(result.position):.1f} cm from the tip, "
+        f"e = {float(result.e):.3f}, e_A = {float(result.e_A):.3f}"
+    )
+    return axes
+
+
+def plot_modes(racket: Racket, ax=None, count: int = 4):
+    """The first ``count`` bending-mode shapes along the racket, frequencies in the legend
+    and nodes marked."""
+    ax = _axes(ax, 1)
+    modes = racket.beam.modes
+    count = min(count, modes.count - 2)
+    x = np.linspace(0.0, racket.beam.length, 400)
+    shapes = modes.shape(x)[2 : 2 + count]
+    for k, shape in enumerate(shapes, start=1):
+        scale = np.abs(shape).max()
+        ax.plot(
+            100 * x,
+            shape / scale,
+            color=f"C{k - 1}",
+            label=f"mode {k}: {modes.frequencies[k - 1]:.0f} Hz",
+        )
+        nodes = modes.nodes(k)
+        ax.plot(100 * nodes, np.zeros_like(nodes), "o", color=f"C{k - 1}", ms=5)
+    ax.axhline(0, color="0.6", lw=0.8)
+    start, end = (100 * v for v in racket.strings.extent)
+    ax.axvspan(start, end, color="0.9", label="strings")
+    ax.set_xlabel("position [cm from the tip]")
+    ax.set_ylabel("mode shape (normalised)")
+    ax.legend(fontsize="small")
+    return ax
+
+
+def plot_collision(collision, ax=None, title: str | None = None):
+    """A two-ball collision against time, as in the paper's Figs. 2-4: force; compressions
+    X, Y and X_T = X + Y; velocities of both balls."""
+    axes = _axes(ax, 3)
+    h = collision.history
+    t = 1e3 * h.t
+    axes[0].plot(t, h.force, color="C0", label="F")
+    axes[0].set_ylabel("force [N]")
+    axes[1].plot(t, 1e3 * h.compression_a, color="C1", label="X (ball a)")
+    axes[1].plot(t, 1e3 * h.compression_b, color="C2", label="Y (ball b)")
+    axes[1].plot(t, 1e3 * h.total_compression, color="k", ls="--", label="X_T = X + Y")
+    axes[1].set_ylabel("compression [mm]")
+    axes[2].plot(t, h.velocity_a, color="C1", label="ball a")
+    axes[2].plot(t, h.velocity_b, color="C2", label="ball b")
+    axes[2].set_ylabel("velocity [m/s]")
+    axes[2].set_xlabel("time [ms]")
+    for a in axes:
+        a.legend(fontsize="small")
+    axes[0].set_title(title or f"e = {collision.e:.3f}")
+    return axes
+
+
+def plot_cor_vs_stiffness(
+    ax=None, k0: float = 2e4, ratios=None, mass: float = 0.0103, speed: float = 4.0
+):
+    """e of an unhappy ball (k0) on happy balls against k2/k0: the integration (markers)
+    and Eq. 16 (line)."""
+    ax = _axes(ax, 1)
+    ratios = np.geomspace(0.05, 10, 16) if ratios is None else np.asarray(ratios)
+    unhappy = Ball(mass, SineLaw(k0))
+    simulated = [collide(unhappy, Ball(mass, LinearSpring(r * k0)), speed).e for r in ratios]
+    fine = np.geomspace(ratios.min(), ratios.max(), 300)
+    ax.plot(
+        fine,
+        [unhappy_cor(k0, r * k0) for r in fine],
+        color="C0",
+        label="Eq. 16: (pi k0 - k2)/(pi k0 + k2)",
+    )
+    ax.plot(ratios, simulated, "o", color="C1", label="integration of Eqs. 7-11")
+    ax.axhline(0, color="0.6", lw=0.8)
+    ax.set_xscale("log")
+    ax.set_xlabel("k2 / k0")
+    ax.set_ylabel("e")
+    ax.legend(fontsize="small")
+    return ax
+
+
+def plot_serve_what_if(table, ax=None):
+    """Serve-speed reduction of a zero-COR ball against string and ball stiffness (the
+    table of :func:`studies.serve.serve_what_if`)."""
+    ax = _axes(ax, 1)
+    for (varied, group), marker in zip(table.groupby("varied", sort=False), "os", strict=False):
+        label = "string-bed stiffness" if varied == "string_stiffness" else "ball stiffness"
+        ax.plot(group["value"], group["reduction_simulated_percent"], marker + "-", label=label)
+    ax.set_xscale("log")
+    ax.set_xlabel("stiffness [N/m]")
+    ax.set_ylabel("serve-speed reduction, zero-COR ball [%]")
+    ax.legend(fontsize="small")
+    return ax

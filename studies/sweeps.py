@@ -1,0 +1,160 @@
+"""Impact-position sweeps over any grid of parameters, as tidy tables.
+
+Each combination of the grid runs all its impact positions together (one vectorized call
+of :func:`racket.impact`); the rows are gathered into one pandas DataFrame, one row per
+impact, SI columns.
+"""
+
+from __future__ import annotations
+
+import itertools
+import sys
+from collections.abc import Mapping, Sequence
+from dataclasses import replace
+
+import numpy as np
+import pandas as pd
+
+from ball import Ball
+from beam import Beam
+from common.checks import positive
+from racket import Racket, StringBed, impact
+
+COLUMNS = (
+    "position_from_tip_m",
+    "e",
+    "e_A",
+    "effective_mass_kg",
+    "v_cm_m_s",
+    "omega_rad_s",
+    "ball_rebound_m_s",
+    "vibration_energy_fraction",
+    "contact_time_s",
+    "peak_force_N",
+    "e_van_zandt",
+)
+"""The columns every sweep returns, in order; one column per varying parameter follows."""
+
+PARAMETERS = {
+    "speed": "speed_m_s",
+    "string_stiffness": "string_stiffness_N_m",
+    "f1": "f1_Hz",
+    "support": "support",
+    "ball": "ball",
+}
+"""Sweepable parameters and their column names."""
+
+
+def with_f1(beam: Beam, f1: float) -> Beam:
+    """The beam with every bending stiffness scaled so its first frequency is ``f1`` [Hz].
+
+    Frequencies scale as sqrt(EI), so scaling EI by (f1 / f1_now)**2 keeps the mode shapes.
+    """
+    scale = (positive("f1", f1, "Hz") / beam.modes.frequencies[0]) ** 2
+    return replace(beam, bending_stiffness=tuple(scale * np.asarray(beam.bending_stiffness)))
+
+
+def _variant(racket: Racket, string_stiffness=None, f1=None, support=None) -> Racket:
+    beam = racket.beam if f1 is None else with_f1(racket.beam, f1)
+    strings = (
+        racket.strings
+        if string_stiffness is None
+        else StringBed(string_stiffness, racket.strings.extent)
+    )
+    return Racket(beam, strings, racket.support if support is None else support)
+
+
+def _as_list(name, value):
+    if isinstance(value, Mapping):
+        return list(value.items())
+    if isinstance(value, (str, Ball)) or np.ndim(value) == 0:
+        return [value]
+    values = list(value)
+    if not values:
+        raise ValueError(f"{name} must not be empty")
+    return values
+
+
+def _ball_label(item) -> tuple[str, Ball]:
+    if isinstance(item, tuple):
+        return item
+    return repr(item.law), item
+
+
+def _progress(iterable, total: int, progress: bool | None):
+    """A tqdm bar on a terminal (or when asked), silence otherwise."""
+    show = sys.stderr.isatty() if progress is None else progress
+    if not show or total < 2:
+        return iterable
+    from tqdm import tqdm
+
+    return tqdm(iterable, total=total, desc="sweep", unit="run")
+
+
+def sweep(
+    racket: Racket,
+    ball: Ball | Sequence[Ball] | Mapping[str, Ball],
+    positions=None,
+    speed: float | Sequence[float] = 10.0,
+    *,
+    string_stiffness=None,
+    f1=None,
+    support=None,
+    swing_speed: float = 0.0,
+    pivot: float | None = None,
+    progress: bool | None = None,
+) -> pd.DataFrame:
+    """Impacts at ``positions`` for every combination of the parameters given as lists.
+
+    Parameters
+    ----------
+    racket : Racket
+        The racket; the grid parameters replace its values.
+    ball : Ball, sequence of Ball, or mapping label -> Ball
+        The ball(s); a mapping names them in the ``ball`` column.
+    positions : array_like, optional
+        Impact points [m from the tip]; default 101 points across the string bed.
+    speed : float or sequence
+        Ball speed towards the strings [m/s].
+    string_stiffness : float or sequence, optional
+        String-bed stiffness [N/m].
+    f1 : float or sequence, optional
+        First bending frequency of the frame [Hz] (EI scaled, mode shapes kept).
+    support : str or sequence, optional
+        ``"free"`` or ``"clamped-head"``.
+    swing_speed, pivot :
+        A swung racket, as in :func:`racket.impact`.
+    progress : bool, optional
+        Show a progress bar; default: when standard error is a terminal.
+
+    Returns
+    -------
+    DataFrame
+        One row per impact: :data:`COLUMNS`, then one column per parameter that varies.
+    """
+    if positions is None:
+        positions = np.linspace(*racket.strings.extent, 101)
+    grid = {
+        "speed": _as_list("speed", speed),
+        "string_stiffness": _as_list("string_stiffness", string_stiffness),
+        "f1": _as_list("f1", f1),
+        "support": _as_list("support", support),
+        "ball": [_ball_label(b) for b in _as_list("ball", ball)],
+    }
+    varying = [name for name, values in grid.items() if len(values) > 1]
+    combos = list(itertools.product(*grid.values()))
+    frames = []
+    for sp, ks, freq, sup, (label, b) in _progress(combos, len(combos), progress):
+        variant = _variant(racket, ks, freq, sup)
+        frame = impact(variant, b, positions, sp, swing_speed=swing_speed, pivot=pivot).to_frame()
+        values = {
+            "speed": sp,
+            "string_stiffness": variant.strings.stiffness,
+            "f1": variant.beam.modes.frequencies[0],
+            "support": variant.support,
+            "ball": label,
+        }
+        for name in varying:
+            frame[PARAMETERS[name]] = values[name]
+        frames.append(frame)
+    return pd.concat(frames, ignore_index=True)

@@ -1,0 +1,171 @@
+"""The racket-impact command line: every subcommand, output files, and bad input."""
+
+import json
+import subprocess
+import sys
+
+import pandas as pd
+import pytest
+
+from studies.cli import main
+
+EXAMPLES = __import__("pathlib").Path(__file__).parent.parent / "examples"
+
+
+def run(capsys, *args):
+    status = main(list(args))
+    out, err = capsys.readouterr()
+    return status, out, err
+
+
+def test_paper_writes_table_json_and_figures(tmp_path, capsys):
+    status, out, _ = run(
+        capsys, "paper", "--out", str(tmp_path / "figs"), "--json", str(tmp_path / "paper.json")
+    )
+    assert status == 0
+    assert "claims reproduced within tolerance" in out
+    rows = json.loads((tmp_path / "paper.json").read_text())
+    assert set(rows[0]) == {"claim", "paper", "simulated", "tolerance", "ok"}
+    assert all(r["ok"] for r in rows)
+    pngs = sorted(p.name for p in (tmp_path / "figs").glob("*.png"))
+    assert "cor_along_racket.png" in pngs and "fig3_soft_happy_ball.png" in pngs
+    assert all((tmp_path / "figs" / p).stat().st_size > 10_000 for p in pngs)
+
+
+@pytest.mark.parametrize("suffix", [".csv", ".json", ".parquet"])
+def test_sweep_outputs(tmp_path, capsys, suffix):
+    path = tmp_path / f"sweep{suffix}"
+    status, out, _ = run(
+        capsys, "sweep", "--points", "7", "--speed", "10", "20", "--out", str(path)
+    )
+    assert status == 0 and "largest e" in out
+    table = {".csv": pd.read_csv, ".json": pd.read_json, ".parquet": pd.read_parquet}[suffix](path)
+    assert len(table) == 14
+    assert {"position_from_tip_m", "e", "e_A", "speed_m_s", "e_van_zandt"} <= set(table.columns)
+    assert table["e"].between(0, 1).all()
+
+
+def test_sweep_toml_racket_mph_and_plot(tmp_path, capsys):
+    status, _out, _ = run(
+        capsys,
+        "sweep",
+        "--racket",
+        str(EXAMPLES / "stiff_racket.toml"),
+        "--ball",
+        str(EXAMPLES / "hertz_ball.toml"),
+        "--speed-mph",
+        "45",
+        "--points",
+        "5",
+        "--csv",
+        str(tmp_path / "s.csv"),
+        "--plot",
+        str(tmp_path / "e.svg"),
+    )
+    assert status == 0
+    assert (tmp_path / "e.svg").read_text().startswith("<?xml")
+    assert len(pd.read_csv(tmp_path / "s.csv")) == 5
+
+
+def test_serve(tmp_path, capsys):
+    status, out, _ = run(
+        capsys, "serve", "--racket-speed-mph", "90", "--out", str(tmp_path / "serve.json")
+    )
+    assert status == 0 and "zero-COR" in out and "90.0 mph" in out
+    rows = json.loads((tmp_path / "serve.json").read_text())
+    assert rows[1]["ball"] == "zero-COR" and 15 < rows[1]["reduction_simulated_percent"] < 23
+
+
+def test_serve_what_if_plot(tmp_path, capsys):
+    status, _, _ = run(capsys, "serve", "--what-if", "--plot", str(tmp_path / "w.pdf"))
+    assert status == 0
+    assert (tmp_path / "w.pdf").read_bytes()[:4] == b"%PDF"
+
+
+def test_collide(tmp_path, capsys):
+    status, out, _ = run(
+        capsys, "collide", "--history", str(tmp_path / "h.csv"), "--plot", str(tmp_path / "c.png")
+    )
+    assert status == 0
+    values = dict(line.split() for line in out.strip().splitlines())
+    assert float(values["v_b_after_m_s"]) == pytest.approx(3.034, abs=0.002)
+    assert float(values["e"]) == pytest.approx(0.517, abs=0.002)
+    assert {"t_s", "force_N"} <= set(pd.read_csv(tmp_path / "h.csv").columns)
+
+
+def test_collide_with_wall(capsys):
+    status, out, _ = run(capsys, "collide", "--a", "tennis", "--b", "wall", "--va", "20")
+    assert status == 0 and "e                  0.75" in out
+
+
+def test_modes(tmp_path, capsys):
+    status, out, _ = run(capsys, "modes", "--count", "3", "--out", str(tmp_path / "m.csv"))
+    assert status == 0
+    assert "swingweight       326.9 kg cm^2" in out
+    modes = pd.read_csv(tmp_path / "m.csv")
+    assert modes["frequency_Hz"].round(1).tolist() == [120.0, 330.8, 648.5]
+
+
+BAD_INPUTS = [
+    (["sweep", "--racket", "wooden"], "unknown racket preset 'wooden'"),
+    (["sweep", "--ball", "golf"], "unknown ball preset 'golf'"),
+    (["sweep", "--racket", "missing.toml"], "cannot read missing.toml"),
+    (["sweep", "--from", "0.5"], "position must be on the strings"),
+    (["sweep", "--to", "-0.1"], "position must be on the strings"),
+    (["sweep", "--speed", "-3"], "speed must be >= 0 m/s, got -3.0"),
+    (["sweep", "--speed", "nan"], "speed"),
+    (["sweep", "--points", "1"], "points must be >= 2"),
+    (["sweep", "--string-stiffness", "-40000"], "stiffness must be > 0 N/m, got -40000.0"),
+    (["sweep", "--f1", "0"], "f1 must be > 0 Hz, got 0.0"),
+    (["sweep", "--csv", "out.xlsx"], "table file must end in"),
+    (["sweep", "--plot", "e.gif"], "plot file must end in"),
+    (["serve", "--position", "0.5"], "position must be on the strings"),
+    (["serve", "--racket-speed", "-40"], "racket_speed must be > 0 m/s, got -40.0"),
+    (["serve", "--plot", "w.png"], "--plot needs --what-if"),
+    (["collide", "--va", "1", "--vb", "2"], "approach"),
+    (["collide", "--a", "wall"], "unknown ball preset 'wall'"),
+    (["modes", "--racket", "BAD_TOML"], "is not valid TOML"),
+    (["modes", "--racket", "UNKNOWN_KEY"], "unknown key 'stifness' in [racket.strings]"),
+    (["modes", "--racket", "NEG_MASS"], "mass must be > 0"),
+    (["collide", "--a", "BAD_LAW"], "unknown law 'rubber'"),
+    (["sweep", "--speed"], "expected at least one argument"),
+    (["paper", "--bogus"], "unrecognized arguments"),
+]
+
+
+@pytest.fixture
+def bad_files(tmp_path):
+    (tmp_path / "bad.toml").write_text("[racket\nmass = ")
+    (tmp_path / "key.toml").write_text("[racket]\n[racket.strings]\nstifness = 4e4\n")
+    (tmp_path / "neg.toml").write_text("[racket]\nmass = -0.3\n")
+    (tmp_path / "law.toml").write_text('[ball]\nmass = 0.05\nlaw = "rubber"\nk = 1e4\n')
+    return {
+        "BAD_TOML": tmp_path / "bad.toml",
+        "UNKNOWN_KEY": tmp_path / "key.toml",
+        "NEG_MASS": tmp_path / "neg.toml",
+        "BAD_LAW": tmp_path / "law.toml",
+    }
+
+
+@pytest.mark.parametrize("argv, message", BAD_INPUTS)
+def test_bad_input_one_line_status_2(argv, message, bad_files, capsys, monkeypatch, tmp_path):
+    monkeypatch.chdir(tmp_path)
+    argv = [str(bad_files.get(a, a)) for a in argv]
+    with pytest.raises(SystemExit) as exit_info:
+        raise SystemExit(main(argv))
+    assert exit_info.value.code == 2
+    _out, err = capsys.readouterr()
+    assert message in err
+    assert len(err.strip().splitlines()) == 1
+    assert "Traceback" not in err
+
+
+def test_installed_script_exits_2_without_traceback(tmp_path):
+    proc = subprocess.run(
+        [sys.executable, "-m", "studies.cli", "sweep", "--from", "2"],
+        capture_output=True,
+        text=True,
+        cwd=tmp_path,
+    )
+    assert proc.returncode == 2
+    assert proc.stderr.count("\n") == 1 and "Traceback" not in proc.stderr
