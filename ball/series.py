@@ -50,12 +50,14 @@ def series_force(laws: Sequence[MonotoneLaw], z, f_max, rtol: float = 1e-14):
     lo = np.zeros(z_a.shape)
     # Start at the force a linear spring with the laws' compliance at 1 N would need.
     hi = np.maximum(fm_a, z_a / series_compression(laws, 1.0, 1.0))
-    while True:  # grow the bracket until it holds the root
+    for _ in range(2100):  # grow the bracket until it holds the root (2**2100 > max float)
         short = series_compression(laws, hi, fm_a) < z_a
         if not np.any(short):
             break
         lo = np.where(short, hi, lo)
         hi = np.where(short, 2.0 * hi, hi)
+    else:
+        raise RuntimeError("no finite force compresses the laws by z")
     f = hi
     for _ in range(200):
         resid = series_compression(laws, f, fm_a) - z_a

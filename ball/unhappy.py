@@ -62,8 +62,9 @@ _NODES = 8001  # grid points per interval of theta
 
 
 def _clustered(a: float, b: float, n: int = _NODES) -> np.ndarray:
-    """n points from a to b, clustered quadratically at both ends."""
-    return a + (b - a) * 0.5 * (1.0 - np.cos(np.linspace(0.0, np.pi, n)))
+    """Up to n points from a to b, clustered quadratically at both ends; points that
+    coincide in floating point (a tiny interval) are dropped, so the grid strictly rises."""
+    return np.unique(a + (b - a) * 0.5 * (1.0 - np.cos(np.linspace(0.0, np.pi, n))))
 
 
 class _Path:
@@ -189,8 +190,8 @@ def unhappy_contact(
     if theta_star >= theta_end:  # no fold: the approach ends at theta_end, not at rest
         s_approach = s_approach + path.work(theta_end, np.pi)
     parts = [(approach, force, x, y, h_prime, s_approach, 1.0)]
-    if theta_end > theta_star:
-        sep = _clustered(theta_star, theta_end)
+    sep = _clustered(theta_star, theta_end)
+    if sep.size > 2:
         f_s, x_s, y_s, hp_s = path.state(sep)
         s_sep = np.maximum(-cumulative_simpson(path.power(sep), x=sep, initial=0.0), 0.0)
         parts.append((sep[1:], f_s[1:], x_s[1:], y_s[1:], hp_s[1:], s_sep[1:], -1.0))

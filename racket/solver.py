@@ -392,11 +392,13 @@ def _self_consistent_x_o(run, ball: Ball, closing: float, count: int) -> np.ndar
     x_wall = closing * np.sqrt(np.pi * ball.mass / (4.0 * ball.law.k0))
     lo = np.full(count, 1e-3 * x_wall)
     hi = np.full(count, 2.0 * x_wall)
-    while True:
+    for _ in range(60):
         snapped = run(hi, False)[2][:, kernel.SNAPPED] > 0
         if not np.any(snapped):
             break
         hi = np.where(snapped, 2.0 * hi, hi)
+    else:
+        raise RuntimeError("no Xo keeps the unhappy ball from snapping through")
     for _ in range(55):
         mid = np.sqrt(lo * hi)
         snapped = run(mid, False)[2][:, kernel.SNAPPED] > 0

@@ -295,6 +295,23 @@ def _ball_arg(p, flag="--ball", default="tennis", what="ball"):
     )
 
 
+def _speed_option(p, name: str, default, what: str, many: bool = False):
+    """``--NAME`` in m/s or ``--NAME-mph`` in mph, not both."""
+    group = p.add_mutually_exclusive_group()
+    nargs = "+" if many else None
+    group.add_argument(
+        f"--{name}",
+        type=float,
+        nargs=nargs,
+        default=default,
+        metavar="M_S",
+        help=f"{what} [m/s] (default {default if not many else default[0]:g})",
+    )
+    group.add_argument(
+        f"--{name}-mph", type=float, nargs=nargs, metavar="MPH", help=f"{what} [mph]"
+    )
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = _Parser(prog="racket-impact", description=__doc__.split("\n\n")[0])
     sub = parser.add_subparsers(dest="command", required=True, parser_class=_Parser)
@@ -316,18 +333,7 @@ def build_parser() -> argparse.ArgumentParser:
     p = sub.add_parser("sweep", help="impacts along the strings, over any parameter grid")
     _racket_arg(p)
     _ball_arg(p)
-    speed = p.add_mutually_exclusive_group()
-    speed.add_argument(
-        "--speed",
-        type=float,
-        nargs="+",
-        default=[10.0],
-        metavar="M_S",
-        help="ball speed(s) towards the strings [m/s] (default 10)",
-    )
-    speed.add_argument(
-        "--speed-mph", type=float, nargs="+", metavar="MPH", help="ball speed(s) [mph]"
-    )
+    _speed_option(p, "speed", [10.0], "ball speed(s) towards the strings", many=True)
     p.add_argument(
         "--from",
         dest="from_",
@@ -377,20 +383,7 @@ def build_parser() -> argparse.ArgumentParser:
         metavar="M",
         help="impact point [m from the tip] (default: centre of the strings)",
     )
-    rs = p.add_mutually_exclusive_group()
-    rs.add_argument(
-        "--racket-speed",
-        type=float,
-        default=40.0,
-        metavar="M_S",
-        help="impact-point speed of the swung racket [m/s] (default 40)",
-    )
-    rs.add_argument(
-        "--racket-speed-mph",
-        type=float,
-        metavar="MPH",
-        help="impact-point speed of the swung racket [mph]",
-    )
+    _speed_option(p, "racket-speed", 40.0, "impact-point speed of the swung racket")
     p.add_argument(
         "--pivot",
         type=float,
@@ -414,24 +407,8 @@ def build_parser() -> argparse.ArgumentParser:
         metavar="PRESET_OR_TOML",
         help="ball b: preset, TOML file, or 'wall' (default: happy)",
     )
-    va = p.add_mutually_exclusive_group()
-    va.add_argument(
-        "--va",
-        type=float,
-        default=4.0,
-        metavar="M_S",
-        help="velocity of a towards b [m/s] (default 4)",
-    )
-    va.add_argument("--va-mph", type=float, metavar="MPH", help="velocity of a [mph]")
-    vb = p.add_mutually_exclusive_group()
-    vb.add_argument(
-        "--vb",
-        type=float,
-        default=0.0,
-        metavar="M_S",
-        help="velocity of b, same direction as a's [m/s] (default 0)",
-    )
-    vb.add_argument("--vb-mph", type=float, metavar="MPH", help="velocity of b [mph]")
+    _speed_option(p, "va", 4.0, "velocity of a towards b")
+    _speed_option(p, "vb", 0.0, "velocity of b, same direction as a's")
     p.add_argument("--out", metavar="FILE", help="summary file: .csv, .json or .parquet")
     p.add_argument("--history", metavar="FILE", help="time history: .csv, .json or .parquet")
     p.add_argument("--plot", metavar="FILE", help="history plot (.png, .svg, .pdf)")

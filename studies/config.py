@@ -190,29 +190,25 @@ def ball_from_table(table: dict) -> Ball:
     return Ball(table["mass"], law)
 
 
-def load_racket(spec: str) -> Racket:
-    """A racket from a preset name or a TOML file with a ``[racket]`` table."""
-    if spec in RACKETS:
-        return RACKETS[spec]()
+def _load(spec: str, presets: dict, kind: str, from_table):
+    """A preset by name, or the ``[kind]`` table of a TOML file built by ``from_table``."""
+    if spec in presets:
+        return presets[spec]()
     if not spec.endswith(".toml"):
         raise ValueError(
-            f"unknown racket preset {spec!r}; presets: {', '.join(RACKETS)} (or a .toml file)"
+            f"unknown {kind} preset {spec!r}; presets: {', '.join(presets)} (or a .toml file)"
         )
     data = read_toml(spec)
-    if "racket" not in data:
-        raise ValueError(f"{spec} has no [racket] table")
-    return racket_from_table(data["racket"])
+    if kind not in data:
+        raise ValueError(f"{spec} has no [{kind}] table")
+    return from_table(data[kind])
+
+
+def load_racket(spec: str) -> Racket:
+    """A racket from a preset name or a TOML file with a ``[racket]`` table."""
+    return _load(spec, RACKETS, "racket", racket_from_table)
 
 
 def load_ball(spec: str) -> Ball:
     """A ball from a preset name or a TOML file with a ``[ball]`` table."""
-    if spec in BALLS:
-        return BALLS[spec]()
-    if not spec.endswith(".toml"):
-        raise ValueError(
-            f"unknown ball preset {spec!r}; presets: {', '.join(BALLS)} (or a .toml file)"
-        )
-    data = read_toml(spec)
-    if "ball" not in data:
-        raise ValueError(f"{spec} has no [ball] table")
-    return ball_from_table(data["ball"])
+    return _load(spec, BALLS, "ball", ball_from_table)
