@@ -321,11 +321,7 @@ def impact(
     rigid_qd = qd[:, :2] if free else np.zeros((x.size, 2))
     v_cm = rigid_qd[:, 0] / np.sqrt(modes.mass)
     omega = rigid_qd[:, 1] / np.sqrt(modes.inertia_cm)
-    v2_dc = (
-        np.sum(phi[:, :2] * rigid_qd[:, : phi[:, :2].shape[1]], axis=1)
-        if free
-        else (np.zeros(x.size))
-    )
+    v2_dc = v_cm + (modes.center_of_mass - x) * omega  # V = V_cm + b omega (Fig. 5)
     v2_total = np.sum(phi * qd, axis=1)
     mode_energy = 0.5 * (qd[:, 2:] ** 2 + (modes.omega[2:n] * q[:, 2:]) ** 2)
     vibration = mode_energy.sum(axis=1)

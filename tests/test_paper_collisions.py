@@ -23,6 +23,9 @@ def test_fig2_unhappy_ball_on_rigid_wall():
     assert r.energy_lost == pytest.approx(r.energy_initial, rel=1e-6)
     # The ball's velocity falls monotonically to zero (paper, Sec. IV).
     assert np.all(np.diff(r.history.velocity_a) <= 1e-12)
+    # The force follows Eq. 7 along the whole history.
+    sine = UNHAPPY.law.force(r.history.compression_a, r.x_o)
+    assert np.allclose(r.history.force, sine, atol=1e-9 * f_o)
 
 
 def test_fig3_soft_happy_ball():
@@ -41,6 +44,7 @@ def test_fig4_stiff_happy_ball():
 
 def test_centre_of_mass_frame_and_swapped_roles():
     cm = collide(UNHAPPY, happy(2e4), 2.0, -2.0)
+    assert cm.energy_lost_fraction == pytest.approx(1 - cm.e**2, abs=1e-9)  # Eq. 4
     assert cm.v_a_after == pytest.approx(-1.034, abs=0.002)
     assert cm.v_b_after == pytest.approx(1.034, abs=0.002)
     swapped = collide(happy(2e4), UNHAPPY, 4.0)
