@@ -75,3 +75,16 @@ def test_history_is_consistent():
     assert np.max(h.force) == pytest.approx(r.peak_force)
     frame = h.to_frame()
     assert list(frame.columns)[:2] == ["t_s", "force_N"] and len(frame) == h.t.size
+
+
+@pytest.mark.parametrize("e_a, e_b", [(1e-6, 1e-4), (0.0, 1e-5), (1e-3, 1e-3), (0.01, 0.0)])
+def test_nearly_vertical_unloading(e_a, e_b):
+    """Tiny e: the contact opens within ~e**2 of the largest compression."""
+    k_a, k_b = 5.9e5, 6.6e5
+    a, b = Ball(0.9, LinearHysteresis(k_a, e_a)), Ball(0.088, LinearHysteresis(k_b, e_b))
+    r = collide(a, b, 0.9, -21.5)
+    # Energy returned / stored = e**2, with each ball's share of the stored energy.
+    e2 = (e_a**2 / k_a + e_b**2 / k_b) / (1 / k_a + 1 / k_b)
+    assert r.e == pytest.approx(np.sqrt(e2), rel=1e-6, abs=1e-9)
+    assert r.energy_lost == pytest.approx(r.energy_dissipated_a + r.energy_dissipated_b,
+                                          rel=1e-9)
