@@ -115,8 +115,11 @@ def monotone_contact(
         # so the separation speed follows from the energy it returns, int F dz (Gauss-Legendre,
         # exact for linear laws); its duration is the quarter period of that sliver.
         nodes, weights = np.polynomial.legendre.leggauss(32)
-        returned = 0.5 * travel * weights @ series_force(
-            laws, z_open + 0.5 * travel * (nodes + 1.0), f_max
+        returned = (
+            0.5
+            * travel
+            * weights
+            @ series_force(laws, z_open + 0.5 * travel * (nodes + 1.0), f_max)
         )
         speed_end = -np.sqrt(2.0 * returned / mu)
         t_end = t1 + 0.5 * np.pi * np.sqrt(mu * travel / f_max)

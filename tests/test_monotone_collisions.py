@@ -86,5 +86,4 @@ def test_nearly_vertical_unloading(e_a, e_b):
     # Energy returned / stored = e**2, with each ball's share of the stored energy.
     e2 = (e_a**2 / k_a + e_b**2 / k_b) / (1 / k_a + 1 / k_b)
     assert r.e == pytest.approx(np.sqrt(e2), rel=1e-6, abs=1e-9)
-    assert r.energy_lost == pytest.approx(r.energy_dissipated_a + r.energy_dissipated_b,
-                                          rel=1e-9)
+    assert r.energy_lost == pytest.approx(r.energy_dissipated_a + r.energy_dissipated_b, rel=1e-9)
