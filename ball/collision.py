@@ -53,23 +53,6 @@ class CollisionHistory:
         """X_T = X + Y [m], the total compression (Fig. 3)."""
         return self.compression_a + self.compression_b
 
-    def to_frame(self):
-        """The history as a pandas DataFrame (one row per time sample, SI column names)."""
-        import pandas as pd
-
-        return pd.DataFrame(
-            {
-                "t_s": self.t,
-                "force_N": self.force,
-                "compression_a_m": self.compression_a,
-                "compression_b_m": self.compression_b,
-                "position_a_m": self.position_a,
-                "position_b_m": self.position_b,
-                "velocity_a_m_s": self.velocity_a,
-                "velocity_b_m_s": self.velocity_b,
-            }
-        )
-
 
 @dataclass(frozen=True)
 class Collision:

@@ -157,28 +157,6 @@ class Impact:
         """ac (vibration) part of the impact point's velocity against time [m/s]."""
         return self.point_velocity - self.point_velocity_dc_history
 
-    def to_frame(self):
-        """One row per impact with the summary numbers (pandas DataFrame, SI columns)."""
-        import pandas as pd
-
-        return pd.DataFrame(
-            {
-                "position_from_tip_m": np.atleast_1d(self.position),
-                "e": np.atleast_1d(self.e),
-                "e_A": np.atleast_1d(self.e_A),
-                "effective_mass_kg": np.atleast_1d(self.effective_mass),
-                "v_cm_m_s": np.atleast_1d(self.v_cm),
-                "omega_rad_s": np.atleast_1d(self.omega),
-                "ball_rebound_m_s": np.atleast_1d(self.ball_rebound),
-                "vibration_energy_fraction": np.atleast_1d(
-                    self.vibration_energy / self.energy_initial
-                ),
-                "contact_time_s": np.atleast_1d(self.contact_time),
-                "peak_force_N": np.atleast_1d(self.peak_force),
-                "e_van_zandt": np.atleast_1d(self.e_van_zandt),
-            }
-        )
-
 
 def _swing_velocities(modes, position, swing_speed, pivot):
     """Rigid-mode velocities (P, 2) of a racket whose impact point moves at -swing_speed."""

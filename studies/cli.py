@@ -19,6 +19,7 @@ import pandas as pd
 from ball import WALL, collide
 from common.units import MPH
 from studies.config import BALLS, RACKETS, load_ball, load_racket
+from studies.tables import history_table
 
 TABLE_FORMATS = (".csv", ".json", ".parquet")
 PLOT_FORMATS = (".png", ".svg", ".pdf")
@@ -228,7 +229,7 @@ def cmd_collide(args) -> int:
     if args.out:
         write_table(pd.DataFrame([rows]), args.out)
     if args.history:
-        write_table(r.history.to_frame(), args.history)
+        write_table(history_table(r.history), args.history)
     if args.plot:
         from studies.plots import plot_collision
 

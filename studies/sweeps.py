@@ -19,6 +19,7 @@ from ball import Ball
 from beam import Beam
 from common.checks import positive
 from racket import Racket, StringBed, impact
+from studies.tables import impact_table
 
 COLUMNS = (
     "position_from_tip_m",
@@ -146,7 +147,9 @@ def sweep(
     frames = []
     for sp, ks, freq, sup, (label, b) in _progress(combos, len(combos), progress):
         variant = _variant(racket, ks, freq, sup)
-        frame = impact(variant, b, positions, sp, swing_speed=swing_speed, pivot=pivot).to_frame()
+        frame = impact_table(
+            impact(variant, b, positions, sp, swing_speed=swing_speed, pivot=pivot)
+        )
         values = {
             "speed": sp,
             "string_stiffness": variant.strings.stiffness,

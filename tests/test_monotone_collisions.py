@@ -12,6 +12,7 @@ from ball import (
     collide,
     series_cor,
 )
+from studies.tables import history_table
 
 TENNIS = Ball(0.057, LinearHysteresis(k=4e4, e=0.75))
 
@@ -73,7 +74,7 @@ def test_history_is_consistent():
     assert h.t[0] == 0.0 and h.t[-1] == pytest.approx(r.contact_time)
     assert np.allclose(h.position_a - h.position_b, h.total_compression, atol=1e-12)
     assert np.max(h.force) == pytest.approx(r.peak_force)
-    frame = h.to_frame()
+    frame = history_table(h)
     assert list(frame.columns)[:2] == ["t_s", "force_N"] and len(frame) == h.t.size
 
 

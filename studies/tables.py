@@ -1,0 +1,43 @@
+"""Simulation results as tidy pandas tables (SI units in the column names)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+
+from ball import CollisionHistory
+from racket import Impact
+
+
+def impact_table(result: Impact) -> pd.DataFrame:
+    """One row per impact of an :func:`racket.impact` result, with the summary numbers."""
+    columns = {
+        "position_from_tip_m": result.position,
+        "e": result.e,
+        "e_A": result.e_A,
+        "effective_mass_kg": result.effective_mass,
+        "v_cm_m_s": result.v_cm,
+        "omega_rad_s": result.omega,
+        "ball_rebound_m_s": result.ball_rebound,
+        "vibration_energy_fraction": np.divide(result.vibration_energy, result.energy_initial),
+        "contact_time_s": result.contact_time,
+        "peak_force_N": result.peak_force,
+        "e_van_zandt": result.e_van_zandt,
+    }
+    return pd.DataFrame({name: np.atleast_1d(value) for name, value in columns.items()})
+
+
+def history_table(history: CollisionHistory) -> pd.DataFrame:
+    """A two-ball collision's history, one row per time sample."""
+    return pd.DataFrame(
+        {
+            "t_s": history.t,
+            "force_N": history.force,
+            "compression_a_m": history.compression_a,
+            "compression_b_m": history.compression_b,
+            "position_a_m": history.position_a,
+            "position_b_m": history.position_b,
+            "velocity_a_m_s": history.velocity_a,
+            "velocity_b_m_s": history.velocity_b,
+        }
+    )
