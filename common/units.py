@@ -2,3 +2,12 @@
 
 MPH = 0.44704
 """One mile per hour [m/s]."""
+
+LB = 4.4482216152605
+"""One pound-force [N] (string tensions are quoted in lb)."""
+
+IN2 = 0.00064516
+"""One square inch [m^2] (head sizes are quoted in in^2)."""
+
+POINT = 0.003175
+"""One balance point, 1/8 in [m] (balance is quoted in points head-light)."""

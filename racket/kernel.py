@@ -3,9 +3,11 @@
 Scheme
 ------
 Between two steps the contact force is taken to vary linearly (first-order hold).  For a
-force of that shape each mode, a damped oscillator q'' + 2 zeta omega q' + omega**2 q =
-phi(b) F, is advanced *exactly* by precomputed 2x2 transition matrices (see
-:func:`racket.solver.step_matrices`), and so is the ball (u'' = -F / m1).  Only the force
+force of that shape the racket, a linear system in real 2x2 blocks (each free mode, a
+damped oscillator q'' + 2 zeta omega q' + omega**2 q = phi(b) F, is one block; a hand-held
+racket's coupled modes are brought to such blocks by :mod:`racket.system`), is advanced
+*exactly* by precomputed 2x2 transition matrices (:func:`racket.system.block_steps`), and
+so is the ball (u'' = -F / m1).  Only the force
 at the end of the step is unknown; the compression of the ball plus strings then depends
 on it linearly through the step's compliance c, so the step reduces to one scalar equation
 
@@ -167,12 +169,16 @@ def sine_step(k0, x_o, a, z_pred, x_n, slack):
 
 @njit(cache=True, parallel=True)
 def run_impacts(
-    phi,
     trans,
-    g0,
-    g1,
-    omega,
-    damp_rate,
+    gin0,
+    gin1,
+    out_d,
+    out_v,
+    out_dc,
+    reach_w,
+    metric,
+    damp_blocks,
+    damp_rows,
     ball_trans,
     ball_g0,
     ball_g1,
@@ -182,34 +188,41 @@ def run_impacts(
     p1,
     p2,
     ball_velocity,
-    modal_velocity,
+    state0,
     x_o,
     dt,
     max_steps,
     force_tol,
     record,
     out_ball,
-    out_modal,
+    out_state,
     summary,
     history,
 ):
     """Advance P impacts from first touch until the ball has left for good.
 
-    After the force first returns to zero the stepping goes on, so that a vibrating frame
-    can catch the ball again, until the dc motion separates the two and the gap exceeds the
-    reach of the remaining vibration.
+    The racket is a linear system in real 2x2 blocks (:mod:`racket.system`).  After the
+    force first returns to zero the stepping goes on, so that a vibrating frame can catch
+    the ball again, until the dc motion separates the two and the gap exceeds the reach of
+    the remaining vibration.
 
     Parameters
     ----------
-    phi : (P, n)
-        Mode shapes at each impact point.
-    trans, g0, g1 : (n, 2, 2), (n, 2), (n, 2)
-        Exact step of each mode for a unit modal force varying linearly over the step:
-        s_next = trans s + g0 F_start + g1 F_end.
-    omega : (n,)
-        Angular frequency of each mode [rad/s] (0 for the rigid-body modes).
-    damp_rate : (n,)
-        2 zeta omega of each mode [1/s] (damping power 2 zeta omega q'**2).
+    trans : (nb, 2, 2)
+        Exact step of each block: s_next = trans s + gin0 F_start + gin1 F_end.
+    gin0, gin1 : (P, nb, 2)
+        Each block's response to a unit contact force at each impact point, varying
+        linearly over the step (force at the step's start and end).
+    out_d, out_v, out_dc : (P, nb, 2)
+        Rows giving the impact point's displacement, velocity and dc (rigid-body) velocity
+        from the block states.
+    reach_w : (P, nb)
+        Size of each block's contribution to the point's displacement (0 for dc blocks).
+    metric : (nb, 2)
+        sqrt(metric . s**2) bounds a block's future amplitude.
+    damp_blocks, damp_rows : (R, K) int, (R, K, 2)
+        Dissipated power = sum_r (sum_k damp_rows[r, k] . s[damp_blocks[r, k]])**2 (the K
+        blocks of each row that can be non-zero: one for a free racket's diagonal damping).
     ball_trans, ball_g0, ball_g1 : (2, 2), (2,), (2,)
         The same for the ball (force -F on it).
     inv_ks : float
@@ -218,57 +231,49 @@ def run_impacts(
         Ball law (see the module docstring).
     ball_velocity : (P,)
         Ball velocity at first touch [m/s] (towards the racket positive).
-    modal_velocity : (P, n)
-        Modal velocities at first touch (a swung racket's rigid-body motion).
+    state0 : (P, nb, 2)
+        Block states at first touch (a swung racket's rigid-body motion).
     x_o : (P,)
         Sine law's Xo per impact [m] (ignored by other laws).
-    out_ball : (P, 2), out_modal : (P, n, 2), summary : (P, N_SUMMARY),
+    out_ball : (P, 2), out_state : (P, nb, 2), summary : (P, N_SUMMARY),
     history : (N_HISTORY, P, max_steps + 1)
-        Outputs: ball and modal state at separation, summary numbers, histories (if record).
+        Outputs: ball and block states at the end, summary numbers, histories (if record).
     """
-    n_points, n = phi.shape
+    n_points, nb = reach_w.shape
     for p in prange(n_points):
-        q = np.zeros((n, 2))
-        q[:, 1] = modal_velocity[p]
+        s = state0[p].copy()
         u, ud = 0.0, ball_velocity[p]
-        c = ball_g1[0] * -1.0  # ball displacement per unit force at the step end, sign flipped
-        for i in range(n):
-            c += phi[p, i] ** 2 * g1[i, 0]
+        c = -ball_g1[0]  # ball displacement per unit force at the step end, sign flipped
+        for j in range(nb):
+            c += out_d[p, j, 0] * gin1[p, j, 0] + out_d[p, j, 1] * gin1[p, j, 1]
         a = inv_ks + c
+        # The point's displacement after a force-free step: dT . s + c0 F (F the force at
+        # the step's start).
+        d_t = np.empty((nb, 2))
+        c0 = 0.0
+        for j in range(nb):
+            d_t[j, 0] = out_d[p, j, 0] * trans[j, 0, 0] + out_d[p, j, 1] * trans[j, 1, 0]
+            d_t[j, 1] = out_d[p, j, 0] * trans[j, 0, 1] + out_d[p, j, 1] * trans[j, 1, 1]
+            c0 += out_d[p, j, 0] * gin0[p, j, 0] + out_d[p, j, 1] * gin0[p, j, 1]
         force, f_max, f_peak, x_ball, slack, snapped = 0.0, 0.0, 0.0, 0.0, False, False
         damping_loss = 0.0
         sine_work = 0.0
         t_contact = 0.0
-        power_prev = 0.0
-        for i in range(n):
-            power_prev += damp_rate[i] * q[i, 1] ** 2
+        power_prev = _power(damp_blocks, damp_rows, s)
         ended = False
         step = 0
-        closing = ud
-        for i in range(n):
-            closing -= phi[p, i] * q[i, 1]
+        closing = ud - _dot(out_v, p, s, nb)
         if record:
             history[H_BALL_VEL, p, 0] = ud
-            w_dot = 0.0
-            w_dot_dc = 0.0
-            for i in range(n):
-                w_dot += phi[p, i] * q[i, 1]
-                if i < 2:
-                    w_dot_dc += phi[p, i] * q[i, 1]
-            history[H_POINT_VEL, p, 0] = w_dot
-            history[H_POINT_VEL_DC, p, 0] = w_dot_dc
+            history[H_POINT_VEL, p, 0] = _dot(out_v, p, s, nb)
+            history[H_POINT_VEL_DC, p, 0] = _dot(out_dc, p, s, nb)
         while step < max_steps:
             # Free prediction (no force at the step end).
             u_p = ball_trans[0, 0] * u + ball_trans[0, 1] * ud + ball_g0[0] * force
             ud_p = ball_trans[1, 0] * u + ball_trans[1, 1] * ud + ball_g0[1] * force
-            z_pred = u_p
-            for i in range(n):
-                qi = (
-                    trans[i, 0, 0] * q[i, 0]
-                    + trans[i, 0, 1] * q[i, 1]
-                    + g0[i, 0] * phi[p, i] * force
-                )
-                z_pred -= phi[p, i] * qi
+            z_pred = u_p - c0 * force
+            for j in range(nb):
+                z_pred -= d_t[j, 0] * s[j, 0] + d_t[j, 1] * s[j, 1]
             if code == SINE:
                 x_before = x_ball
                 f_new, x_ball, snap = sine_step(p0, x_o[p], a, z_pred, x_ball, slack)
@@ -281,31 +286,27 @@ def run_impacts(
             # Advance everything with the force varying from `force` to `f_new`.
             u_new = u_p + ball_g1[0] * f_new
             ud_new = ud_p + ball_g1[1] * f_new
-            power = 0.0
-            w_dot = 0.0
-            w_dot_dc = 0.0
-            for i in range(n):
-                q0 = (
-                    trans[i, 0, 0] * q[i, 0]
-                    + trans[i, 0, 1] * q[i, 1]
-                    + phi[p, i] * (g0[i, 0] * force + g1[i, 0] * f_new)
+            for j in range(nb):
+                s0 = (
+                    trans[j, 0, 0] * s[j, 0]
+                    + trans[j, 0, 1] * s[j, 1]
+                    + gin0[p, j, 0] * force
+                    + gin1[p, j, 0] * f_new
                 )
-                q1 = (
-                    trans[i, 1, 0] * q[i, 0]
-                    + trans[i, 1, 1] * q[i, 1]
-                    + phi[p, i] * (g0[i, 1] * force + g1[i, 1] * f_new)
+                s1 = (
+                    trans[j, 1, 0] * s[j, 0]
+                    + trans[j, 1, 1] * s[j, 1]
+                    + gin0[p, j, 1] * force
+                    + gin1[p, j, 1] * f_new
                 )
-                q[i, 0] = q0
-                q[i, 1] = q1
-                power += damp_rate[i] * q1 * q1
-                w_dot += phi[p, i] * q1
-                if i < 2:
-                    w_dot_dc += phi[p, i] * q1
+                s[j, 0] = s0
+                s[j, 1] = s1
+            power = _power(damp_blocks, damp_rows, s)
             damping_loss += 0.5 * (power + power_prev) * dt
             power_prev = power
-            z_now = u_new
-            for i in range(n):
-                z_now -= phi[p, i] * q[i, 0]
+            w_dot = _dot(out_v, p, s, nb)
+            w_dot_dc = _dot(out_dc, p, s, nb)
+            z_now = u_new - _dot(out_d, p, s, nb)
             u, ud = u_new, ud_new
             force = f_new
             f_max = max(f_max, force)
@@ -340,16 +341,19 @@ def run_impacts(
                 else:
                     z_open = ball_compression(code, p0, p1, p2, 0.0, f_max)
                 reach = 0.0
-                for i in range(2, n):
-                    reach += abs(phi[p, i]) * math.sqrt(q[i, 0] ** 2 + (q[i, 1] / omega[i]) ** 2)
+                for j in range(nb):
+                    if reach_w[p, j] > 0.0:
+                        reach += reach_w[p, j] * math.sqrt(
+                            metric[j, 0] * s[j, 0] ** 2 + metric[j, 1] * s[j, 1] ** 2
+                        )
                 if z_open - z_now >= reach:
                     ended = True
                     break
         out_ball[p, 0] = u
         out_ball[p, 1] = ud
-        for i in range(n):
-            out_modal[p, i, 0] = q[i, 0]
-            out_modal[p, i, 1] = q[i, 1]
+        for j in range(nb):
+            out_state[p, j, 0] = s[j, 0]
+            out_state[p, j, 1] = s[j, 1]
         summary[p, T_END] = step * dt
         summary[p, T_CONTACT] = t_contact
         summary[p, F_PEAK] = f_peak
@@ -358,3 +362,25 @@ def run_impacts(
         summary[p, DAMPING_LOSS] = damping_loss
         summary[p, SNAPPED] = 1.0 if snapped else 0.0
         summary[p, ENDED] = 1.0 if ended else 0.0
+
+
+@njit(cache=True)
+def _dot(rows, p, s, nb):
+    """rows[p] . s over all blocks."""
+    total = 0.0
+    for j in range(nb):
+        total += rows[p, j, 0] * s[j, 0] + rows[p, j, 1] * s[j, 1]
+    return total
+
+
+@njit(cache=True)
+def _power(damp_blocks, damp_rows, s):
+    """Dissipated power (see ``damp_blocks`` in :func:`run_impacts`)."""
+    total = 0.0
+    for r in range(damp_rows.shape[0]):
+        v = 0.0
+        for k in range(damp_rows.shape[1]):
+            j = damp_blocks[r, k]
+            v += damp_rows[r, k, 0] * s[j, 0] + damp_rows[r, k, 1] * s[j, 1]
+        total += v * v
+    return total

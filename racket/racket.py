@@ -9,7 +9,42 @@ import numpy as np
 from beam import Beam
 from common.checks import finite_array, non_negative, positive
 
-SUPPORTS = ("free", "clamped-head")
+SUPPORTS = ("free", "clamped-head", "hand-held")
+
+
+@dataclass(frozen=True)
+class Hand:
+    """A hand holding the handle: a spring and a dashpot spread evenly over the grip.
+
+    Parameters
+    ----------
+    stiffness : float
+        Total transverse stiffness of the hand on the handle [N/m].
+    damping : float
+        Total damping coefficient of the hand [N s/m].
+    grip_length : float
+        Length of handle the hand covers, from the butt [m].
+
+    The defaults (1e4 N/m, 10 N s/m over 0.10 m, a palm's width) are this project's
+    order-of-magnitude choice, not a measurement: the hand-arm system is usually described
+    by lumped masses, springs and dashpots (ISO 10068, the driving-point impedance of the
+    hand-arm system), and how a grip changes a racket's modes depends strongly on how hard
+    it is squeezed (D. Chadefaux et al., "The effects of player grip on the dynamic
+    behaviour of a tennis racket", J. Sports Sci. 35, 2017).  The defaults give the held
+    racket a rocking mode of a few Hz and a first bending mode damped within a few tens of
+    cycles; ``racket-impact specs`` prints both.  The ball's rebound from the string centre
+    hardly depends on them (the impulse reaches the hand after the ball has left, paper
+    Sec. VII): the tests vary both by a factor of ten each way.
+    """
+
+    stiffness: float = 1e4
+    damping: float = 10.0
+    grip_length: float = 0.10
+
+    def __post_init__(self):
+        object.__setattr__(self, "stiffness", positive("hand stiffness", self.stiffness, "N/m"))
+        object.__setattr__(self, "damping", non_negative("hand damping", self.damping, "N s/m"))
+        object.__setattr__(self, "grip_length", positive("grip_length", self.grip_length, "m"))
 
 
 @dataclass(frozen=True)
@@ -58,12 +93,15 @@ class Racket:
         ``"free"`` (default): the racket is free during the impact; a hand's impulse over
         the 4-5 ms of contact is negligible (paper Sec. VII).  ``"clamped-head"``: the head
         is rigidly held, so the strings act on an immovable support, as in head-clamped COR
-        tests.
+        tests.  ``"hand-held"``: the handle is held by ``hand``.
+    hand : Hand
+        The hand of a hand-held racket (ignored otherwise).
     """
 
     beam: Beam
     strings: StringBed
     support: str = "free"
+    hand: Hand = Hand()
 
     def __post_init__(self):
         if not isinstance(self.beam, Beam):
@@ -77,6 +115,13 @@ class Racket:
             )
         if self.support not in SUPPORTS:
             raise ValueError(f"support must be one of {SUPPORTS}, got {self.support!r}")
+        if not isinstance(self.hand, Hand):
+            raise ValueError(f"hand must be a Hand, got {self.hand!r}")
+        if self.hand.grip_length >= self.beam.length - self.strings.extent[1]:
+            raise ValueError(
+                f"grip_length must end below the strings, < "
+                f"{self.beam.length - self.strings.extent[1]:g} m, got {self.hand.grip_length!r}"
+            )
 
     def check_positions(self, position) -> np.ndarray:
         """Impact positions [m from the tip] as an array; ValueError if any is off the strings."""

@@ -17,12 +17,12 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.linalg import expm
 
 from ball import Ball, LinearHysteresis, LinearSpring, PowerLawHysteresis, SineLaw
 from common.checks import finite, non_negative, positive
 from racket import kernel
 from racket.racket import Racket
+from racket.system import block_steps, racket_system
 
 DEFAULT_STEPS_PER_CONTACT = 600
 """Time steps per estimated contact time: e then changes by < 1e-4 when halved."""
@@ -30,33 +30,6 @@ DEFAULT_STEPS_PER_CONTACT = 600
 FORCE_TOL = 1e-6
 """An unhappy-ball contact that approaches a common speed asymptotically is over when its
 force has fallen to this fraction of its peak."""
-
-
-def step_matrices(omega, zeta, dt: float, inv_mass=1.0):
-    """Exact one-step propagation of damped oscillators under a linearly varying force.
-
-    For q'' + 2 zeta omega q' + omega**2 q = inv_mass F(t), with F going linearly from
-    F0 to F1 over a step dt, the state s = (q, q') advances as s1 = T s0 + g0 F0 + g1 F1.
-    Computed from the exponential of the augmented system (state, F, dF/dt).
-
-    Returns T (n, 2, 2), g0 (n, 2), g1 (n, 2).
-    """
-    omega = np.atleast_1d(np.asarray(omega, dtype=float))
-    zeta = np.broadcast_to(np.asarray(zeta, dtype=float), omega.shape)
-    inv_mass = np.broadcast_to(np.asarray(inv_mass, dtype=float), omega.shape)
-    trans = np.empty((omega.size, 2, 2))
-    g0 = np.empty((omega.size, 2))
-    g1 = np.empty((omega.size, 2))
-    for i, (w, z, b) in enumerate(zip(omega, zeta, inv_mass, strict=True)):
-        aug = np.zeros((4, 4))
-        aug[0, 1] = 1.0
-        aug[1, 0], aug[1, 1], aug[1, 2] = -(w**2), -2.0 * z * w, b
-        aug[2, 3] = 1.0
-        e = expm(aug * dt)
-        trans[i] = e[:2, :2]
-        g1[i] = e[:2, 3] / dt
-        g0[i] = e[:2, 2] - g1[i]
-    return trans, g0, g1
 
 
 def _law_code(law):
@@ -233,34 +206,58 @@ def impact(
     max_steps = 12 * steps_per_contact
     code, p0, p1, p2 = _law_code(ball.law)
 
-    free = racket.support == "free"
+    moving = racket.support != "clamped-head"
     modes = racket.beam.modes
-    n = modes.count if free else 0
-    phi = modes.shape(x).T.copy() if free else np.zeros((x.size, 0))
-    trans, g0, g1 = step_matrices(modes.omega[:n], modes.damping[:n], dt)
-    damp_rate = 2.0 * modes.damping[:n] * modes.omega[:n]
-    ball_trans, ball_g0, ball_g1 = (a[0] for a in step_matrices(0.0, 0.0, dt, -1.0 / ball.mass))
-    modal_velocity = np.zeros((x.size, n))
-    if free:
-        modal_velocity[:, :2] = _swing_velocities(modes, x, swing_speed, pivot)
-    elif swing_speed:
-        raise ValueError("swing_speed must be 0 for a clamped-head racket (it cannot move)")
+    phi = modes.shape(x).T.copy() if moving else np.zeros((x.size, 0))
+    if swing_speed and racket.support != "free":
+        raise ValueError(
+            f"swing_speed must be 0 for a {racket.support} racket (the hand or clamp is at "
+            "rest); swing a free racket, as the paper does"
+        )
+    (ball_trans,), (ball_g0,), (ball_g1,) = block_steps([[0.0, 1.0], [0.0, 0.0]], dt)
+    ball_g0, ball_g1 = ball_g0[:, 1] / -ball.mass, ball_g1[:, 1] / -ball.mass
+    if moving:
+        system = racket_system(modes, racket.support, racket.hand)
+        trans, g0, g1 = system.step(dt)
+        unit = system.inputs(phi)
+        gin0 = np.einsum("jab,pjb->pja", g0, unit)
+        gin1 = np.einsum("jab,pjb->pja", g1, unit)
+        out_d, out_v = system.outputs(phi)
+        n = system.count
+        out_dc = (phi[:, :2] @ system.basis[n : n + 2]).reshape(x.size, -1, 2)
+        reach_w = np.linalg.norm(out_d, axis=2) * ~system.dc
+        metric = system.metric
+        damp_blocks, damp_rows = system.damping_rows()
+        z0 = np.zeros((x.size, 2 * n))
+        z0[:, n : n + 2] = _swing_velocities(modes, x, swing_speed, pivot)
+        state0 = np.linalg.solve(system.basis, z0.T).T.reshape(x.size, -1, 2).copy()
+    else:
+        system = None
+        trans = g0 = np.zeros((0, 2, 2))
+        gin0 = gin1 = out_d = out_v = out_dc = state0 = np.zeros((x.size, 0, 2))
+        reach_w, metric = np.zeros((x.size, 0)), np.zeros((0, 2))
+        damp_blocks, damp_rows = np.zeros((0, 1), dtype=np.int64), np.zeros((0, 1, 2))
     ball_velocity = np.full(x.size, speed)
+    nb = trans.shape[0]
 
     def run(x_o, record):
         out_ball = np.zeros((x.size, 2))
-        out_modal = np.zeros((x.size, n, 2))
+        out_state = np.zeros((x.size, nb, 2))
         summary = np.zeros((x.size, kernel.N_SUMMARY))
         hist = np.zeros(
             (kernel.N_HISTORY, x.size, max_steps + 1) if record else (kernel.N_HISTORY, 1, 1)
         )
         kernel.run_impacts(
-            phi,
             trans,
-            g0,
-            g1,
-            modes.omega[:n],
-            damp_rate,
+            gin0,
+            gin1,
+            out_d,
+            out_v,
+            out_dc,
+            reach_w,
+            metric,
+            damp_blocks,
+            damp_rows,
             ball_trans,
             ball_g0,
             ball_g1,
@@ -270,43 +267,50 @@ def impact(
             p1,
             p2,
             ball_velocity,
-            modal_velocity,
+            state0,
             x_o,
             dt,
             max_steps,
             FORCE_TOL,
             record,
             out_ball,
-            out_modal,
+            out_state,
             summary,
             hist,
         )
-        return out_ball, out_modal, summary, hist
+        return out_ball, out_state, summary, hist
 
     x_o = np.full(x.size, np.nan)
     if code == kernel.SINE:
         x_o = _self_consistent_x_o(run, ball, closing, x.size)
-    out_ball, out_modal, summary, hist = run(x_o, True)
+    out_ball, out_state, summary, hist = run(x_o, True)
     if not np.all(summary[:, kernel.ENDED]):
         bad = x[summary[:, kernel.ENDED] == 0][0]
         raise RuntimeError(
             f"the impact at {bad:g} m from the tip had not ended after {max_steps * dt:.3g} s"
         )
 
-    # dc part (rigid-body modes) and ac part (bending modes) after the ball has left.
+    # dc part (rigid-body motion) and ac part (the rest) after the ball has left.
     ball_after = out_ball[:, 1]
-    q, qd = out_modal[..., 0], out_modal[..., 1]
-    rigid_qd = qd[:, :2] if free else np.zeros((x.size, 2))
+    if moving:
+        q, qd = system.modal_state(out_state)
+        stiffness = system.stiffness
+    else:
+        q = qd = np.zeros((x.size, 0))
+        stiffness = np.zeros((0, 0))
+    rigid_qd = qd[:, :2] if moving else np.zeros((x.size, 2))
     v_cm = rigid_qd[:, 0] / np.sqrt(modes.mass)
     omega = rigid_qd[:, 1] / np.sqrt(modes.inertia_cm)
     v2_dc = v_cm + (modes.center_of_mass - x) * omega  # V = V_cm + b omega (Fig. 5)
     v2_total = np.sum(phi * qd, axis=1)
-    mode_energy = 0.5 * (qd[:, 2:] ** 2 + (modes.omega[2:n] * q[:, 2:]) ** 2)
-    vibration = mode_energy.sum(axis=1)
-
-    energy_initial = 0.5 * ball.mass * speed**2 + 0.5 * np.sum(modal_velocity**2, axis=1)
-    ball_energy = 0.5 * ball.mass * ball_after**2
+    mode_energy = 0.5 * (qd[:, 2:] ** 2 + (modes.omega[2 : q.shape[1]] * q[:, 2:]) ** 2)
     racket_energy = 0.5 * np.sum(rigid_qd**2, axis=1)
+    mechanical = 0.5 * np.sum(qd**2, axis=1) + 0.5 * np.einsum("pi,ij,pj->p", q, stiffness, q)
+    vibration = mechanical - racket_energy
+
+    swing_qd = _swing_velocities(modes, x, swing_speed, pivot)
+    energy_initial = 0.5 * ball.mass * speed**2 + 0.5 * np.sum(swing_qd**2, axis=1)
+    ball_energy = 0.5 * ball.mass * ball_after**2
     if code == kernel.SINE:
         ball_loss = summary[:, kernel.SINE_WORK]  # X never decreases: all work on it is lost
     else:
@@ -322,7 +326,7 @@ def impact(
 
     with np.errstate(invalid="ignore", divide="ignore"):
         e_a = np.where(speed > 0, -ball_after / speed, np.nan)
-    m_eff = racket.beam.effective_mass(x) if free else np.full(x.size, np.inf)
+    m_eff = racket.beam.effective_mass(x) if moving else np.full(x.size, np.inf)
     fields = dict(
         position=x,
         e=(v2_dc - ball_after) / closing,

@@ -1,0 +1,194 @@
+"""The racket's linear dynamics in real 2x2 blocks, the form the time-stepper advances.
+
+The frame is described by its free-free modes q (rigid-body modes first, mass-normalised,
+see :class:`beam.Modes`): q'' + D q' + W q = phi(b) F, W = diag(omega**2), D = diag(2 zeta
+omega), with F the contact force at the impact point b.
+
+* A free racket is already in blocks: block i holds (q_i, q_i').
+* A hand-held racket adds the hand, a spring k and a dashpot c per unit length over the
+  grip: W += K_h and D += C_h with K_h,ij = int_grip k phi_i phi_j dx (and C_h likewise).
+  The modes are then coupled and the damping is not proportional, so the first-order
+  system z' = A z, z = (q, q'), is brought to real block-diagonal form exactly: each complex
+  pair of eigenvalues sigma +- i w gives a block [[sigma, w], [-w, sigma]], two real
+  eigenvalues a block diag(l1, l2).  Nothing is approximated beyond the truncation to the
+  beam's modes.
+
+In both cases the state s (blocks, 2 values each) maps to z by ``basis``: z = basis s.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.linalg import expm
+
+from beam import Modes
+from racket.racket import Hand
+
+_GRIP_POINTS = 24  # Gauss-Legendre points over the grip
+
+
+@dataclass(frozen=True)
+class BlockSystem:
+    """z' = A z + B F in real 2x2 blocks (see the module docstring).
+
+    Attributes
+    ----------
+    blocks : (nb, 2, 2)
+        The block matrices.
+    basis : (2N, 2N)
+        z = basis @ s, s the blocks' states in order (s_0a, s_0b, s_1a, ...), z = (q, q').
+    dc : (nb,) bool
+        Blocks of the rigid-body motion (free) or of the racket rocking on the hand
+        (hand-held): left out of the vibration's reach when deciding that the ball has left.
+    metric : (nb, 2)
+        Weights w with sqrt(w0 s_a**2 + w1 s_b**2) bounding a block's future amplitude.
+    stiffness, damping : (N, N)
+        W (+ K_h) and D (+ C_h) in modal coordinates.
+    """
+
+    blocks: np.ndarray
+    basis: np.ndarray
+    dc: np.ndarray
+    metric: np.ndarray
+    stiffness: np.ndarray
+    damping: np.ndarray
+
+    @property
+    def count(self) -> int:
+        """Number of modal coordinates N."""
+        return self.stiffness.shape[0]
+
+    def step(self, dt: float):
+        """Exact step of every block for an input varying linearly over ``dt``.
+
+        Returns T, G0, G1, each (nb, 2, 2): s1 = T s0 + G0 u0 + G1 u1 for the block input
+        u (a 2-vector) going linearly from u0 to u1.
+        """
+        return block_steps(self.blocks, dt)
+
+    def inputs(self, phi: np.ndarray) -> np.ndarray:
+        """Block inputs (P, nb, 2) of a unit force at points with mode shapes phi (P, N)."""
+        n = self.count
+        b = np.zeros((phi.shape[0], 2 * n))
+        b[:, n:] = phi
+        return np.linalg.solve(self.basis, b.T).T.reshape(phi.shape[0], -1, 2)
+
+    def outputs(self, phi: np.ndarray):
+        """Displacement and velocity of points with shapes phi (P, N), as (P, nb, 2) rows."""
+        n = self.count
+        disp = (phi @ self.basis[:n]).reshape(phi.shape[0], -1, 2)
+        vel = (phi @ self.basis[n:]).reshape(phi.shape[0], -1, 2)
+        return disp, vel
+
+    def damping_rows(self):
+        """The dissipated power q'^T D q' as sum_r (L_r . s)**2, sparsely.
+
+        Returns blocks (R, K) and rows (R, K, 2): L_r is non-zero only on the K blocks
+        ``blocks[r]`` (K = 1 for a free racket, whose damping is diagonal).
+        """
+        c, u = np.linalg.eigh(self.damping)
+        keep = c > 1e-12 * max(c.max(), 1e-300)
+        rows = (np.sqrt(c[keep])[:, None] * u[:, keep].T) @ self.basis[self.count :]
+        rows = rows.reshape(rows.shape[0], self.blocks.shape[0], 2)
+        nonzero = np.any(rows != 0.0, axis=2)
+        width = max(int(nonzero.sum(axis=1).max(initial=0)), 1)
+        blocks = np.zeros((rows.shape[0], width), dtype=np.int64)
+        values = np.zeros((rows.shape[0], width, 2))
+        for r, row in enumerate(nonzero):
+            j = np.nonzero(row)[0]
+            blocks[r, : j.size] = j
+            values[r, : j.size] = rows[r, j]
+        return blocks, values
+
+    def modal_state(self, s: np.ndarray):
+        """Modal displacements and velocities (P, N) from block states (P, nb, 2)."""
+        z = s.reshape(s.shape[0], -1) @ self.basis.T
+        return z[:, : self.count], z[:, self.count :]
+
+
+def block_steps(blocks: np.ndarray, dt: float):
+    """T, G0, G1 (n, 2, 2) of :meth:`BlockSystem.step` for any 2x2 blocks (n, 2, 2).
+
+    From the exponential of the augmented system (state, input, input rate).
+    """
+    blocks = np.asarray(blocks, dtype=float).reshape(-1, 2, 2)
+    trans = np.empty_like(blocks)
+    g0 = np.empty_like(blocks)
+    g1 = np.empty_like(blocks)
+    eye = np.eye(2)
+    for i, a in enumerate(blocks):
+        aug = np.zeros((6, 6))
+        aug[:2, :2] = a
+        aug[:2, 2:4] = eye
+        aug[2:4, 4:6] = eye
+        e = expm(aug * dt)
+        trans[i] = e[:2, :2]
+        g1[i] = e[:2, 4:6] / dt
+        g0[i] = e[:2, 2:4] - g1[i]
+    return trans, g0, g1
+
+
+def free_system(modes: Modes) -> BlockSystem:
+    """The free racket: block i is mode i, (q_i, q_i')."""
+    n = modes.count
+    w2 = modes.omega**2
+    d = 2.0 * modes.damping * modes.omega
+    blocks = np.zeros((n, 2, 2))
+    blocks[:, 0, 1] = 1.0
+    blocks[:, 1, 0] = -w2
+    blocks[:, 1, 1] = -d
+    basis = np.zeros((2 * n, 2 * n))
+    basis[np.arange(n), 2 * np.arange(n)] = 1.0
+    basis[n + np.arange(n), 2 * np.arange(n) + 1] = 1.0
+    dc = modes.omega == 0.0
+    metric = np.column_stack([np.ones(n), np.where(dc, 0.0, 1.0 / np.maximum(w2, 1e-300))])
+    return BlockSystem(blocks, basis, dc, metric, np.diag(w2), np.diag(d))
+
+
+def hand_matrices(modes: Modes, hand: Hand):
+    """K_h and C_h (N, N) of the hand over the grip (see the module docstring)."""
+    nodes, weights = np.polynomial.legendre.leggauss(_GRIP_POINTS)
+    start = modes.length - hand.grip_length
+    x = start + 0.5 * hand.grip_length * (nodes + 1.0)
+    w = 0.5 * hand.grip_length * weights
+    phi = modes.shape(x)
+    overlap = (phi * w) @ phi.T / hand.grip_length  # int phi_i phi_j dx / grip length
+    return hand.stiffness * overlap, hand.damping * overlap
+
+
+def held_system(modes: Modes, hand: Hand) -> BlockSystem:
+    """The hand-held racket in real blocks (see the module docstring)."""
+    k_h, c_h = hand_matrices(modes, hand)
+    n = modes.count
+    stiffness = np.diag(modes.omega**2) + k_h
+    damping = np.diag(2.0 * modes.damping * modes.omega) + c_h
+    a = np.block([[np.zeros((n, n)), np.eye(n)], [-stiffness, -damping]])
+    lam, vec = np.linalg.eig(a)
+    scale = np.abs(lam).max()
+    complex_ = lam.imag > 1e-10 * scale
+    real = np.abs(lam.imag) <= 1e-10 * scale
+    blocks, columns, freq = [], [], []
+    for i in np.nonzero(complex_)[0]:
+        s, w = lam[i].real, lam[i].imag
+        blocks.append([[s, w], [-w, s]])
+        columns += [vec[:, i].real, vec[:, i].imag]
+        freq.append(abs(lam[i]))
+    reals = np.sort(np.nonzero(real)[0])
+    for i, j in zip(reals[::2], reals[1::2], strict=True):
+        blocks.append([[lam[i].real, 0.0], [0.0, lam[j].real]])
+        columns += [vec[:, i].real, vec[:, j].real]
+        freq.append(max(abs(lam[i]), abs(lam[j])))
+    blocks, basis, freq = np.array(blocks), np.column_stack(columns), np.array(freq)
+    # Blocks of the racket rocking on the hand: slower than half the first bending mode.
+    dc = freq < 0.5 * modes.omega[2]
+    # A rotating block's output never exceeds |c| |s|; a pair of decaying exponentials
+    # never exceeds |c0 s0| + |c1 s1| <= sqrt(2) |c| |s|.
+    metric = np.repeat(np.where(blocks[:, 0, 1] == 0.0, 2.0, 1.0)[:, None], 2, axis=1)
+    return BlockSystem(blocks, basis, dc, metric, stiffness, damping)
+
+
+def racket_system(modes: Modes, support: str, hand: Hand) -> BlockSystem:
+    """The block system of a free or hand-held racket."""
+    return held_system(modes, hand) if support == "hand-held" else free_system(modes)
