@@ -6,7 +6,7 @@ x = 0 and its butt is x = length).
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import cached_property
 
 import numpy as np
@@ -178,6 +178,11 @@ class Beam:
         return self.inertia_about(self.center_of_mass)
 
     @property
+    def recoil_weight_kgcm2(self) -> float:
+        """Recoil weight: the moment of inertia about the centre of mass [kg cm^2]."""
+        return self.inertia_cm * 1e4
+
+    @property
     def swingweight(self) -> float:
         """Moment of inertia about the axis 10 cm from the butt [kg m^2]."""
         return self.inertia_about(self.length - SWINGWEIGHT_AXIS)
@@ -192,6 +197,11 @@ class Beam:
         with b = x_cm - x the distance from the centre of mass."""
         b = self.center_of_mass - np.asarray(x, dtype=float)
         return 1.0 / (1.0 / self.mass + b**2 / self.inertia_cm)
+
+    def with_point_masses(self, *masses) -> Beam:
+        """This beam with more point masses (lead tape): pairs (position [m from the tip],
+        mass [kg])."""
+        return replace(self, point_masses=(*self.point_masses, *map(tuple, masses)))
 
     # ----- modes -----------------------------------------------------------------------
     @property

@@ -1,20 +1,30 @@
 """Ball impacts on a flexible racket (paper Sec. VII).
 
-Public API: :class:`Racket`, :class:`StringBed`, :func:`impact` and its :class:`Impact`
-result, the presets :func:`paper_racket` and :func:`tennis_ball`.
+Public API: :class:`Racket`, :class:`StringBed`, :class:`Hand`, :func:`impact` and its
+:class:`Impact` result, the presets :func:`paper_racket` and :func:`tennis_ball`, rackets from
+spec sheets (:func:`from_specs`, :func:`string_bed_stiffness`, the :data:`CATALOG` of
+well-known rackets) and the modelled flex test (:func:`flex_test_stiffness`).
 """
 
+from racket.catalog import CATALOG
+from racket.flex import flex_test_stiffness
 from racket.presets import TENNIS_BALL_MASS, paper_racket, tennis_ball
-from racket.racket import SUPPORTS, Racket, StringBed
+from racket.racket import SUPPORTS, Hand, Racket, StringBed
 from racket.solver import Impact, impact
+from racket.specs import from_specs, string_bed_stiffness
 
 __all__ = [
+    "CATALOG",
     "SUPPORTS",
     "TENNIS_BALL_MASS",
+    "Hand",
     "Impact",
     "Racket",
     "StringBed",
+    "flex_test_stiffness",
+    "from_specs",
     "impact",
     "paper_racket",
+    "string_bed_stiffness",
     "tennis_ball",
 ]

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -122,6 +122,11 @@ class Racket:
                 f"grip_length must end below the strings, < "
                 f"{self.beam.length - self.strings.extent[1]:g} m, got {self.hand.grip_length!r}"
             )
+
+    def with_mass(self, mass_kg: float, position_m: float) -> Racket:
+        """This racket with a point mass (lead tape) of ``mass_kg`` [kg] at ``position_m``
+        [m from the tip]; mass, balance, swingweight and modes follow from the new beam."""
+        return replace(self, beam=self.beam.with_point_masses((position_m, mass_kg)))
 
     def check_positions(self, position) -> np.ndarray:
         """Impact positions [m from the tip] as an array; ValueError if any is off the strings."""

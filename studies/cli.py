@@ -1,9 +1,9 @@
 """The ``racket-impact`` command line.
 
-Subcommands: ``paper``, ``sweep``, ``serve``, ``collide``, ``modes``.  Rackets and balls are
-presets or TOML files (:mod:`studies.config`).  Tables go to CSV, JSON or Parquet by the
-file's extension, plots to PNG, SVG or PDF.  Bad input prints one line naming the problem
-and exits with status 2.
+Subcommands: ``paper``, ``sweep``, ``serve``, ``collide``, ``modes``, ``specs``, ``compare``.
+Rackets and balls are presets or TOML files (:mod:`studies.config`).  Tables go to CSV,
+JSON or Parquet by the file's extension, plots to PNG, SVG or PDF.  Bad input prints one
+line naming the problem and exits with status 2.
 """
 
 from __future__ import annotations
@@ -18,7 +18,8 @@ import pandas as pd
 
 from ball import WALL, collide
 from common.units import MPH
-from studies.config import BALLS, RACKETS, load_ball, load_racket
+from racket import SUPPORTS
+from studies.config import BALLS, RACKETS, load_ball, load_racket, racket_specs
 from studies.tables import history_table
 
 TABLE_FORMATS = (".csv", ".json", ".parquet")
@@ -275,6 +276,77 @@ def cmd_modes(args) -> int:
     return 0
 
 
+def cmd_specs(args) -> int:
+    from studies.report import spec_report
+
+    racket = load_racket(args.racket)
+    specs, sources = racket_specs(args.racket)
+    report = spec_report(racket, specs, count=args.count)
+    if specs is not None:
+        print("spec sheet and fitted model (f1 given on the spec sheet, not inferred):")
+        _print_table(report.fit, "{:.5g}")
+        print()
+    _print_table(report.properties, "{:.4g}")
+    print(
+        "\nmodes: free-free, and held by the hand (stiffness "
+        f"{racket.hand.stiffness:g} N/m, damping {racket.hand.damping:g} N s/m over "
+        f"{100 * racket.hand.grip_length:g} cm)"
+    )
+    _print_table(report.modes, "{:.4g}")
+    print("\neffective mass along the strings (Eq. 20)")
+    _print_table(report.effective_mass, "{:.4g}")
+    if sources:
+        print("\nsources:")
+        for key, source in sources.items():
+            print(f"  {key}: {source}")
+    if args.out:
+        write_table(report.effective_mass, args.out)
+    if args.plot:
+        from studies.plots import plot_modes
+
+        save_plot(plot_modes(racket, count=args.count), args.plot)
+    return 0
+
+
+def cmd_compare(args) -> int:
+    from studies.sweeps import compare
+
+    names = args.racket or ["paper", "pure-drive-2021"]
+    if len(names) < 2:
+        raise ValueError(f"compare needs two or more --racket, got {len(names)}")
+    rackets = {Path(n).stem if n.endswith(".toml") else n: load_racket(n) for n in names}
+    if args.support:
+        from dataclasses import replace
+
+        rackets = {k: replace(r, support=args.support) for k, r in rackets.items()}
+    table = compare(rackets, load_ball(args.ball), _speed(args, "speed"), args.points)
+    rows = []
+    for label, group in table.groupby("racket", sort=False):
+        best = group.loc[group["e"].idxmax()]
+        rows.append(
+            {
+                "racket": label,
+                "largest_e": best["e"],
+                "at_cm_from_tip": 100 * best["position_from_tip_m"],
+                "e_at_string_centre": float(
+                    np.interp(
+                        rackets[label].strings.center, group["position_from_tip_m"], group["e"]
+                    )
+                ),
+                "e_near_tip": group["e"].iloc[1],
+            }
+        )
+    _print_table(pd.DataFrame(rows))
+    if args.out:
+        write_table(table, args.out)
+    if args.plot:
+        from studies.plots import plot_cor_comparison
+
+        groups = {k: g for k, g in table.groupby("racket", sort=False)}
+        save_plot(plot_cor_comparison(groups), args.plot)
+    return 0
+
+
 # ----- parser -----------------------------------------------------------------------------
 def _racket_arg(p):
     p.add_argument(
@@ -366,7 +438,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument(
         "--support",
         nargs="+",
-        choices=["free", "clamped-head"],
+        choices=list(SUPPORTS),
         help="support(s) (default: the racket's)",
     )
     p.add_argument("--out", metavar="FILE", help="table file: .csv, .json or .parquet")
@@ -421,6 +493,35 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--out", metavar="FILE", help="mode table: .csv, .json or .parquet")
     p.add_argument("--plot", metavar="FILE", help="mode shapes (.png, .svg, .pdf)")
     p.set_defaults(func=cmd_modes)
+
+    p = sub.add_parser(
+        "specs", help="the model fitted to a spec sheet: fit, masses, modes, effective mass"
+    )
+    p.add_argument(
+        "racket",
+        metavar="PRESET_OR_TOML",
+        help=f"racket preset ({', '.join(RACKETS)}) or TOML file with a [racket] table "
+        "(a [racket.specs] spec sheet, or any racket)",
+    )
+    p.add_argument("--count", type=int, default=4, help="bending modes listed (default 4)")
+    p.add_argument("--out", metavar="FILE", help="effective-mass table: .csv, .json, .parquet")
+    p.add_argument("--plot", metavar="FILE", help="mode shapes (.png, .svg, .pdf)")
+    p.set_defaults(func=cmd_specs)
+
+    p = sub.add_parser("compare", help="e along the strings of two or more rackets")
+    p.add_argument(
+        "--racket",
+        action="append",
+        metavar="PRESET_OR_TOML",
+        help="a racket (repeat; default: paper and pure-drive-2021)",
+    )
+    _ball_arg(p)
+    _speed_option(p, "speed", 10.0, "ball speed towards the strings")
+    p.add_argument("--points", type=int, default=101, help="impact points per racket")
+    p.add_argument("--support", choices=list(SUPPORTS), help="support for every racket")
+    p.add_argument("--out", metavar="FILE", help="table file: .csv, .json or .parquet")
+    p.add_argument("--plot", metavar="FILE", help="comparison plot (.png, .svg, .pdf)")
+    p.set_defaults(func=cmd_compare)
     return parser
 
 

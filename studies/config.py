@@ -1,9 +1,10 @@
 """Rackets and balls from presets or TOML files (the CLI's ``--racket`` and ``--ball``).
 
-Schema (every key optional unless marked; SI units; unknown keys are errors)::
+Schema (every key optional unless marked; SI units unless the key names its unit; unknown
+keys are errors)::
 
     [racket]
-    preset = "paper"            # start from a preset, then override
+    preset = "paper"            # start from a preset (see RACKETS), then override
     length = 0.68               # m      } a uniform frame ...
     mass = 0.34                 # kg     }
     f1 = 120.0                  # Hz     }
@@ -11,13 +12,28 @@ Schema (every key optional unless marked; SI units; unknown keys are errors)::
     mass_per_length = [...]     # kg/m per segment }
     bending_stiffness = [...]   # N m^2 per segment }
     point_masses = [[0.05, 0.004]]   # [position m from the tip, mass kg]
+    lead_tape = [{mass_g = 3.0, from_butt_cm = 68.0}]   # lead tape, in tennis units
     damping = 0.005             # modal damping ratio (one value or one per mode)
     n_modes = 8
-    support = "free"            # or "clamped-head"
+    support = "free"            # or "clamped-head" or "hand-held"
+
+    [racket.specs]              # ... or a spec sheet (racket.from_specs keywords):
+    length_m = 0.6858
+    mass_kg = 0.321
+    balance_cm = 33.0           # or balance_pts_hl (1 pt = 1/8 in head-light)
+    swingweight_kgcm2 = 325
+    f1_hz = 150                 # (ra is refused until the RA scale is calibrated)
+    head_size_cm2 = 645         # or head_size_in2
+    tension_lb = 55             # or tension_n, or string_stiffness_n_m
 
     [racket.strings]
     stiffness = 4e4             # N/m
     extent = [0.0, 0.32]        # m from the tip
+
+    [racket.hand]               # the hand of a hand-held racket (racket.Hand)
+    stiffness = 1e4             # N/m
+    damping = 10.0              # N s/m
+    grip_length = 0.10          # m from the butt
 
     [ball]
     preset = "tennis"           # or: mass (kg) and law, with the law's parameters:
@@ -30,19 +46,20 @@ Schema (every key optional unless marked; SI units; unknown keys are errors)::
 from __future__ import annotations
 
 import sys
+from dataclasses import replace
 from pathlib import Path
 
 from ball import Ball, LinearHysteresis, LinearSpring, PowerLawHysteresis, SineLaw
 from beam import Beam
-from racket import Racket, StringBed, paper_racket, tennis_ball
+from racket import CATALOG, Hand, Racket, StringBed, from_specs, paper_racket, tennis_ball
 
 if sys.version_info >= (3, 11):
     import tomllib
 else:  # pragma: no cover
     import tomli as tomllib
 
-RACKETS = {"paper": paper_racket}
-"""Racket presets by name."""
+RACKETS = {"paper": paper_racket, **{name: entry.racket for name, entry in CATALOG.items()}}
+"""Racket presets by name: the paper's uniform racket and the catalogue (racket.catalog)."""
 
 BALLS = {
     "tennis": tennis_ball,
@@ -73,8 +90,27 @@ _RACKET_KEYS = {
     "n_modes",
     "support",
     "strings",
+    "specs",
+    "lead_tape",
+    "hand",
 }
 _STRING_KEYS = {"stiffness", "extent"}
+_SPEC_KEYS = {
+    "length_m",
+    "mass_kg",
+    "balance_cm",
+    "balance_pts_hl",
+    "swingweight_kgcm2",
+    "f1_hz",
+    "ra",
+    "head_size_in2",
+    "head_size_cm2",
+    "tension_lb",
+    "tension_n",
+    "string_stiffness_n_m",
+}
+_LEAD_KEYS = {"mass_g", "from_butt_cm"}
+_HAND_KEYS = {"stiffness", "damping", "grip_length"}
 _BALL_KEYS = {"preset", "mass", "law", "k", "e", "a", "b", "k0"}
 
 
@@ -106,10 +142,19 @@ def read_toml(path: str | Path) -> dict:
 def racket_from_table(table: dict) -> Racket:
     """A racket from a ``[racket]`` table (see the module docstring)."""
     _check_keys(table, _RACKET_KEYS, "racket")
-    base = _preset(table.get("preset", "paper"), RACKETS, "racket")
-    beam = base.beam
     uniform = {"length", "mass", "f1"} & set(table)
     profile = {"stations", "mass_per_length", "bending_stiffness"} & set(table)
+    if "specs" in table:
+        if uniform or profile or "preset" in table:
+            raise ValueError(
+                "[racket.specs] replaces preset, length/mass/f1 and the profile keys; "
+                "give one of them"
+            )
+        _check_keys(table["specs"], _SPEC_KEYS, "racket.specs")
+        base = from_specs(**table["specs"])
+    else:
+        base = _preset(table.get("preset", "paper"), RACKETS, "racket")
+    beam = base.beam
     if uniform and profile:
         raise ValueError(
             "give either length/mass/f1 or stations/mass_per_length/"
@@ -139,21 +184,14 @@ def racket_from_table(table: dict) -> Racket:
             n_modes=n_modes,
         )
     else:
-        beam = Beam(
-            beam.stations,
-            beam.mass_per_length,
-            beam.bending_stiffness,
-            damping=damping,
-            n_modes=n_modes,
-        )
-    if "point_masses" in table:
-        beam = Beam(
-            beam.stations,
-            beam.mass_per_length,
-            beam.bending_stiffness,
-            point_masses=table["point_masses"],
-            damping=beam.damping,
-            n_modes=beam.n_modes,
+        beam = replace(beam, damping=damping, n_modes=n_modes)
+    beam = beam.with_point_masses(*table.get("point_masses", ()))
+    for tape in table.get("lead_tape", ()):
+        _check_keys(tape, _LEAD_KEYS, "racket.lead_tape")
+        if set(tape) != _LEAD_KEYS:
+            raise ValueError("each lead_tape entry needs mass_g and from_butt_cm")
+        beam = beam.with_point_masses(
+            (beam.length - tape["from_butt_cm"] / 100.0, tape["mass_g"] / 1000.0)
         )
     strings_table = table.get("strings", {})
     _check_keys(strings_table, _STRING_KEYS, "racket.strings")
@@ -161,7 +199,9 @@ def racket_from_table(table: dict) -> Racket:
         strings_table.get("stiffness", base.strings.stiffness),
         tuple(strings_table.get("extent", base.strings.extent)),
     )
-    return Racket(beam, strings, table.get("support", base.support))
+    hand_table = table.get("hand", {})
+    _check_keys(hand_table, _HAND_KEYS, "racket.hand")
+    return Racket(beam, strings, table.get("support", base.support), Hand(**hand_table))
 
 
 def ball_from_table(table: dict) -> Ball:
@@ -212,3 +252,18 @@ def load_racket(spec: str) -> Racket:
 def load_ball(spec: str) -> Ball:
     """A ball from a preset name or a TOML file with a ``[ball]`` table."""
     return _load(spec, BALLS, "ball", ball_from_table)
+
+
+def racket_specs(spec: str) -> tuple[dict | None, dict | None]:
+    """The spec sheet a racket preset or TOML file was built from, and the sources of its
+    numbers (catalogue presets only); (None, None) for a racket not built from one."""
+    if spec in CATALOG:
+        return dict(CATALOG[spec].specs), dict(CATALOG[spec].sources)
+    if spec in RACKETS or not spec.endswith(".toml"):
+        return None, None
+    table = read_toml(spec).get("racket", {})
+    if "specs" in table:
+        return dict(table["specs"]), None
+    if table.get("preset") in CATALOG:
+        return dict(CATALOG[table["preset"]].specs), dict(CATALOG[table["preset"]].sources)
+    return None, None

@@ -127,6 +127,39 @@ def plot_cor_along_racket(result, racket: Racket, ax=None, pivot: float | None =
     return ax
 
 
+def plot_cor_comparison(results, ax=None, show_apparent: bool = True):
+    """e along the strings for several rackets on one Axes.
+
+    Parameters
+    ----------
+    results : mapping label -> Impact or DataFrame
+        For each racket, an :func:`racket.impact` over many positions or a
+        :func:`studies.sweep` table (e.g. from :func:`studies.sweeps.compare`).
+    show_apparent : bool
+        Also draw e_A (dashed, same colour).
+    """
+    ax = _axes(ax, 1)
+    for k, (label, result) in enumerate(results.items()):
+        x, e, e_a = _columns(result)
+        order = np.argsort(x)
+        color = f"C{k}"
+        best = int(np.argmax(e))
+        ax.plot(
+            100 * x[order],
+            e[order],
+            color=color,
+            lw=2,
+            label=f"{label}: e, largest {e[best]:.3f} at {100 * x[best]:.1f} cm",
+        )
+        if show_apparent:
+            ax.plot(100 * x[order], e_a[order], color=color, ls="--", lw=1.2, label="_e_A")
+    ax.set_xlabel("impact point [cm from the tip]")
+    ax.set_ylabel("coefficient of restitution")
+    ax.set_title("e (solid) and e_A (dashed) along the strings" if show_apparent else "e")
+    ax.legend(loc="lower center", fontsize="small")
+    return ax
+
+
 def plot_impact(result, ax=None):
     """Force, compressions and velocities of one impact against time (three panels); the
     impact point's velocity is split into its dc (rigid-body) and ac (vibration) parts."""

@@ -62,7 +62,9 @@ def _variant(racket: Racket, string_stiffness=None, f1=None, support=None) -> Ra
         if string_stiffness is None
         else StringBed(string_stiffness, racket.strings.extent)
     )
-    return Racket(beam, strings, racket.support if support is None else support)
+    return replace(
+        racket, beam=beam, strings=strings, support=racket.support if support is None else support
+    )
 
 
 def _as_list(name, value):
@@ -122,7 +124,7 @@ def sweep(
     f1 : float or sequence, optional
         First bending frequency of the frame [Hz] (EI scaled, mode shapes kept).
     support : str or sequence, optional
-        ``"free"`` or ``"clamped-head"``.
+        ``"free"``, ``"clamped-head"`` or ``"hand-held"``.
     swing_speed, pivot :
         A swung racket, as in :func:`racket.impact`.
     progress : bool, optional
@@ -159,5 +161,32 @@ def sweep(
         }
         for name in varying:
             frame[PARAMETERS[name]] = values[name]
+        frames.append(frame)
+    return pd.concat(frames, ignore_index=True)
+
+
+def compare(
+    rackets: Mapping[str, Racket],
+    ball: Ball,
+    speed: float = 10.0,
+    points: int = 101,
+) -> pd.DataFrame:
+    """Impacts across the string bed of each racket: one sweep table, a ``racket`` column.
+
+    Parameters
+    ----------
+    rackets : mapping label -> Racket
+    ball : Ball
+    speed : float
+        Ball speed towards the strings [m/s].
+    points : int
+        Impact points across each racket's string bed.
+    """
+    frames = []
+    for label, racket in rackets.items():
+        frame = impact_table(
+            impact(racket, ball, np.linspace(*racket.strings.extent, points), speed)
+        )
+        frame.insert(0, "racket", label)
         frames.append(frame)
     return pd.concat(frames, ignore_index=True)

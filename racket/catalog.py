@@ -1,0 +1,123 @@
+"""Well-known rackets from their published spec sheets, each number with its source.
+
+Every entry holds the keyword arguments of :func:`racket.specs.from_specs` and, for each, where
+it comes from.  Two numbers are not on any spec sheet and are the same assumption for all:
+
+* ``f1_hz``: spec sheets give the RA rating, which cannot be converted yet (see
+  :mod:`racket.flex`), so the first free-free frequency is set to :data:`ASSUMED_F1`.  The
+  published RA is kept in ``published_ra`` for when a calibration exists.
+* ``tension_lb``: a racket is strung to the player's taste; 55 lb is the paper's "typical of
+  most rackets" (Sec. VIII).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from racket.racket import Racket
+from racket.specs import from_specs
+
+ASSUMED_F1 = 150.0
+"""First free-free frequency [Hz] assumed for catalogue rackets.  Composite rackets made after
+1980 ring higher than the wooden rackets before 1970, which were "typically characterised by
+... natural frequencies below 120 Hz" (L. Taraborrelli et al., "Materials have driven the
+historical development of the tennis racket", Appl. Sci. 9, 4352, 2019); the paper's 1990s
+graphite racket is at 120 Hz.  150 Hz is an assumption, not a measurement of these models."""
+
+ASSUMED = "assumption (see racket.catalog)"
+PAPER_TENSION = "the paper, Sec. VIII: 55 lb is typical of most rackets"
+OUNCE = 0.028349523125
+"""One ounce [kg] (US spec sheets quote strung weight in oz)."""
+
+
+@dataclass(frozen=True)
+class Entry:
+    """A catalogue racket: its name, spec-sheet keywords and their sources."""
+
+    name: str
+    specs: dict
+    sources: dict
+    published_ra: float | None = None
+    notes: str = ""
+
+    def racket(self, support: str = "free") -> Racket:
+        """The fitted racket (see :func:`racket.specs.from_specs`)."""
+        return from_specs(support=support, **self.specs)
+
+
+_TENNISADDICT = (
+    "tennisaddict.fr, 'BABOLAT Pure Drive 2020 / 2021' test (8 Sept 2020), measured strung"
+)
+_TENNIS_COM = "tennis.com, 'Racquet review: Babolat Pure Drive' (2025), strung values"
+_TENNIS_EXPRESS = "tennisexpress.com, 'Wilson Pro Staff 97L CV tennis racquet review'"
+
+CATALOG = {
+    "pure-drive-2021": Entry(
+        name="Babolat Pure Drive (2021)",
+        specs=dict(
+            length_m=0.6858,
+            mass_kg=0.321,
+            balance_cm=33.0,
+            swingweight_kgcm2=325.0,
+            head_size_cm2=645.0,
+            f1_hz=ASSUMED_F1,
+            tension_lb=55.0,
+        ),
+        sources=dict(
+            length_m="27 in, the standard length; Pure Drive: tennis.com review (Length 27 in)",
+            mass_kg=_TENNISADDICT + ": masse 321 g",
+            balance_cm=_TENNISADDICT + ": equilibre 330 mm",
+            swingweight_kgcm2=_TENNISADDICT + ": inertie 325",
+            head_size_cm2=_TENNISADDICT + ": tamis 645 cm2",
+            f1_hz=ASSUMED,
+            tension_lb=PAPER_TENSION,
+        ),
+        published_ra=66.0,
+        notes="RA 66 strung (68 unstrung) measured by tennisaddict.fr; Babolat quotes 72.",
+    ),
+    "pure-drive-2025": Entry(
+        name="Babolat Pure Drive (2025)",
+        specs=dict(
+            length_m=0.6858,
+            mass_kg=11.1 * OUNCE,
+            balance_pts_hl=4.0,
+            swingweight_kgcm2=315.0,
+            head_size_in2=100.0,
+            f1_hz=ASSUMED_F1,
+            tension_lb=55.0,
+        ),
+        sources=dict(
+            length_m=_TENNIS_COM + ": Length 27 in",
+            mass_kg=_TENNIS_COM + ": Weight 11.1 oz",
+            balance_pts_hl=_TENNIS_COM + ": Balance 4 pts HL",
+            swingweight_kgcm2=_TENNIS_COM + ": Swingweight 315",
+            head_size_in2=_TENNIS_COM + ": Head Size 100 sq. in.",
+            f1_hz=ASSUMED,
+            tension_lb=PAPER_TENSION,
+        ),
+        published_ra=69.0,
+    ),
+    "pro-staff-97l-cv": Entry(
+        name="Wilson Pro Staff 97L CV",
+        specs=dict(
+            length_m=0.6858,
+            mass_kg=10.7 * OUNCE,
+            balance_pts_hl=6.0,
+            swingweight_kgcm2=313.0,
+            head_size_in2=97.0,
+            f1_hz=ASSUMED_F1,
+            tension_lb=55.0,
+        ),
+        sources=dict(
+            length_m=_TENNIS_EXPRESS + ": Length 27 inches",
+            mass_kg=_TENNIS_EXPRESS + ": Weight strung 10.7 oz",
+            balance_pts_hl=_TENNIS_EXPRESS + ": Balance 6 Pts Head Light",
+            swingweight_kgcm2=_TENNIS_EXPRESS + ": Swing Weight 313",
+            head_size_in2=_TENNIS_EXPRESS + ": Head Size 97 sq. in.",
+            f1_hz=ASSUMED,
+            tension_lb=PAPER_TENSION,
+        ),
+        published_ra=68.0,
+    ),
+}
+"""Catalogue rackets by preset name."""

@@ -1,0 +1,134 @@
+"""What a fitted racket model is: the tables ``racket-impact specs`` prints.
+
+:func:`spec_report` compares a racket with the spec sheet it was fitted to and lists its
+mass properties, mass split, modes (free and hand-held), centre of percussion, flex-test
+stiffness and effective mass along the strings.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+
+import numpy as np
+import pandas as pd
+
+from racket import Racket, flex_test_stiffness
+from racket.specs import fit_profile, spec_sheet
+from racket.system import held_system
+from studies.plots import HAND_FROM_BUTT, center_of_percussion
+
+
+@dataclass(frozen=True)
+class SpecReport:
+    """Tables describing a racket model (each a DataFrame)."""
+
+    fit: pd.DataFrame
+    properties: pd.DataFrame
+    modes: pd.DataFrame
+    effective_mass: pd.DataFrame
+
+
+def _fit_table(racket: Racket, specs: dict) -> pd.DataFrame:
+    sheet = spec_sheet(**specs)
+    beam = racket.beam
+    rows = [
+        ("mass", 1e3 * sheet.mass, 1e3 * beam.mass, "g"),
+        ("balance", 100 * sheet.balance, 100 * beam.balance, "cm from the butt"),
+        ("swingweight", 1e4 * sheet.swingweight, beam.swingweight_kgcm2, "kg cm^2"),
+        ("f1 (free-free)", sheet.f1, beam.modes.frequencies[0], "Hz"),
+        ("string-bed stiffness", sheet.string_stiffness, racket.strings.stiffness, "N/m"),
+    ]
+    table = pd.DataFrame(rows, columns=["quantity", "spec_sheet", "model", "unit"])
+    table["relative_difference"] = table["model"] / table["spec_sheet"] - 1.0
+    return table
+
+
+def _properties(racket: Racket, specs: dict | None) -> pd.DataFrame:
+    beam = racket.beam
+    hand = beam.length - HAND_FROM_BUTT
+    rows = [
+        ("length", 100 * beam.length, "cm"),
+        ("mass", 1e3 * beam.mass, "g"),
+        ("balance", 100 * beam.balance, "cm from the butt"),
+        ("swingweight", beam.swingweight_kgcm2, "kg cm^2 (axis 10 cm from the butt)"),
+        ("recoil weight", beam.recoil_weight_kgcm2, "kg cm^2 (about the centre of mass)"),
+        (
+            "centre of percussion",
+            100 * (beam.length - center_of_percussion(racket, hand)),
+            f"cm from the butt (hand {100 * HAND_FROM_BUTT:.0f} cm from the butt)",
+        ),
+        ("string-bed stiffness", racket.strings.stiffness, "N/m"),
+        ("string bed", 100 * (racket.strings.extent[1] - racket.strings.extent[0]), "cm long"),
+        (
+            "flex-test tip stiffness",
+            flex_test_stiffness(beam, racket.strings.extent[1]),
+            "N/m (handle and throat supported; not converted to RA)",
+        ),
+    ]
+    if specs is not None:
+        _, profile = fit_profile(spec_sheet(**specs))
+        rows += [
+            ("head hoop mass", 1e3 * profile.head_hoop, "g"),
+            ("strings mass", 1e3 * profile.strings, "g"),
+            ("throat mass", 1e3 * profile.throat, "g"),
+            ("handle mass", 1e3 * profile.handle, f"g (last {100 * profile.handle_length:g} cm)"),
+        ]
+        extra = beam.mass - (profile.head_hoop + profile.strings + profile.throat + profile.handle)
+        if abs(extra) > 1e-9:
+            rows.append(("added point masses", 1e3 * extra, "g (lead tape)"))
+    return pd.DataFrame(rows, columns=["quantity", "value", "unit"])
+
+
+def _modes(racket: Racket, count: int) -> pd.DataFrame:
+    modes = racket.beam.modes
+    held = held_system(modes, racket.hand)
+    lam = held.blocks[:, 0, 0] + 1j * held.blocks[:, 0, 1]
+    order = np.argsort(np.abs(lam))
+    bending = order[~held.dc[order]]
+    rows = []
+    for k in range(1, min(count, modes.count - 2) + 1):
+        row = {
+            "mode": k,
+            "free_Hz": modes.frequencies[k - 1],
+            "nodes_cm_from_tip": ", ".join(f"{100 * n:.1f}" for n in modes.nodes(k)),
+        }
+        if k <= bending.size:
+            root = lam[bending[k - 1]]
+            row["hand_held_Hz"] = abs(root.imag) / (2 * np.pi)
+            row["hand_held_damping_ratio"] = -root.real / abs(root)
+        rows.append(row)
+    for i, j in enumerate(order[held.dc[order]]):
+        root = lam[j]
+        rows.append(
+            {
+                "mode": f"rocking {i + 1}",
+                "hand_held_Hz": abs(root.imag) / (2 * np.pi),
+                "hand_held_damping_ratio": -root.real / abs(root),
+            }
+        )
+    return pd.DataFrame(rows)
+
+
+def spec_report(racket: Racket, specs: dict | None = None, count: int = 4) -> SpecReport:
+    """Tables describing ``racket``; with the spec sheet it was fitted to (``specs``, the
+    keywords of :func:`racket.from_specs`), also the comparison and the mass split.
+
+    The modes table lists the free-free bending modes and, for the racket held by its
+    :class:`racket.Hand`, the coupled modes (frequency and damping ratio), including the
+    slow modes of the racket rocking on the hand.
+    """
+    held = replace(racket, support="hand-held")
+    x = np.linspace(*racket.strings.extent, 9)
+    effective = pd.DataFrame(
+        {
+            "position_from_tip_m": x,
+            "position_from_butt_cm": 100 * (racket.beam.length - x),
+            "effective_mass_kg": racket.beam.effective_mass(x),
+        }
+    )
+    return SpecReport(
+        fit=_fit_table(racket, specs) if specs is not None else pd.DataFrame(),
+        properties=_properties(racket, specs),
+        modes=_modes(held, count),
+        effective_mass=effective,
+    )
