@@ -1,0 +1,101 @@
+"""The hand-held racket: the exact block form of the coupled modes, energy, and how little
+the hand changes the ball's rebound at the string centre (more near the tip)."""
+
+from dataclasses import replace
+
+import numpy as np
+import pytest
+from scipy.linalg import block_diag
+
+from racket import Hand, from_specs, impact, paper_racket, tennis_ball
+from racket.system import free_system, held_system
+
+BALL = tennis_ball()
+RACKET = from_specs(
+    mass_kg=0.321,
+    balance_cm=33.0,
+    swingweight_kgcm2=325,
+    head_size_cm2=645,
+    f1_hz=150,
+    tension_lb=55,
+)
+
+
+def _rebound_change(hand, positions, speed=20.0):
+    free = impact(RACKET, BALL, positions, speed)
+    held = impact(replace(RACKET, support="hand-held", hand=hand), BALL, positions, speed)
+    return held.ball_rebound / free.ball_rebound - 1.0, held
+
+
+def test_rebound_at_string_centre_within_one_percent_and_the_tip_difference():
+    tips, centre = [0.0, 0.01, 0.03], RACKET.strings.center
+    change, held = _rebound_change(Hand(), np.array([*tips, centre]))
+    print(f"\nhand-held vs free rebound at 20 m/s: {100 * change[-1]:+.3f} % at the string centre")
+    for tip, c in zip(tips, change, strict=False):
+        print(f"  {100 * c:+.3f} % at {100 * tip:g} cm from the tip")
+    assert abs(change[-1]) < 0.01
+    assert np.abs(held.energy_residual / held.energy_initial).max() < 1e-5
+
+
+@pytest.mark.parametrize("scale", [0.1, 0.3, 3.0])
+def test_string_centre_insensitive_to_the_hand_values(scale):
+    hand = Hand(stiffness=1e4 * scale, damping=10.0 * scale)
+    change, _ = _rebound_change(hand, np.array([RACKET.strings.center]))
+    assert abs(change[0]) < 0.01
+
+
+def test_block_form_reproduces_the_coupled_system_exactly():
+    modes = RACKET.beam.modes
+    system = held_system(modes, Hand())
+    n = system.count
+    a = np.block([[np.zeros((n, n)), np.eye(n)], [-system.stiffness, -system.damping]])
+    rebuilt = system.basis @ block_diag(*system.blocks) @ np.linalg.inv(system.basis)
+    assert np.abs(rebuilt - a).max() < 1e-9 * np.abs(a).max()
+    assert system.dc.sum() == 2  # the racket rocking and bouncing on the hand
+    free = free_system(modes)
+    assert np.array_equal(free.dc, modes.omega == 0)
+
+
+def test_hand_held_energy_budget_closes_at_second_order():
+    held = replace(RACKET, support="hand-held")
+    x = np.linspace(0.0, 0.33, 9)
+    residual = [
+        np.abs(
+            (r := impact(held, BALL, x, 20.0, steps_per_contact=n)).energy_residual
+            / r.energy_initial
+        ).max()
+        for n in (600, 2400)
+    ]
+    assert residual[1] < 1e-6
+    assert residual[0] / residual[1] > 10
+
+
+def test_hand_held_converges_in_modes():
+    held = replace(RACKET, support="hand-held")
+    x = np.array([0.02, 0.15, 0.3])
+    coarse = impact(held, BALL, x, 20.0)
+    fine = impact(replace(held, beam=replace(held.beam, n_modes=16)), BALL, x, 20.0)
+    assert np.abs(fine.e - coarse.e).max() < 1e-3
+
+
+def test_hand_held_racket_cannot_be_swung():
+    with pytest.raises(ValueError, match="swing_speed must be 0 for a hand-held"):
+        impact(replace(paper_racket(), support="hand-held"), BALL, 0.1, 10.0, swing_speed=5.0)
+
+
+@pytest.mark.parametrize(
+    "kwargs, match",
+    [
+        (dict(stiffness=0.0), "hand stiffness must be > 0"),
+        (dict(damping=-1.0), "hand damping must be >= 0"),
+        (dict(grip_length=float("nan")), "grip_length must be a finite number"),
+    ],
+)
+def test_bad_hand_values(kwargs, match):
+    with pytest.raises(ValueError, match=match):
+        Hand(**kwargs)
+
+
+def test_grip_must_end_below_the_strings():
+    with pytest.raises(ValueError, match="grip_length must end below the strings"):
+        replace(paper_racket(), hand=Hand(grip_length=0.5))
