@@ -283,9 +283,10 @@ def cmd_specs(args) -> int:
     specs, sources = racket_specs(args.racket)
     report = spec_report(racket, specs, count=args.count)
     if specs is not None:
-        print("spec sheet and fitted model (f1 given on the spec sheet, not inferred):")
+        print("spec sheet and fitted model (f1 given on the spec sheet, not inferred from RA):")
         _print_table(report.fit, "{:.5g}")
         print()
+    print("the racket (with any lead tape, strings and support of the file):")
     _print_table(report.properties, "{:.4g}")
     print(
         "\nmodes: free-free, and held by the hand (stiffness "

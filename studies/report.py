@@ -28,18 +28,18 @@ class SpecReport:
     effective_mass: pd.DataFrame
 
 
-def _fit_table(racket: Racket, specs: dict) -> pd.DataFrame:
+def _fit_table(specs: dict) -> pd.DataFrame:
+    """The spec sheet against the fitted model (before lead tape or other changes)."""
     sheet = spec_sheet(**specs)
-    beam = racket.beam
+    beam, _ = fit_profile(sheet)
     rows = [
         ("mass", 1e3 * sheet.mass, 1e3 * beam.mass, "g"),
         ("balance", 100 * sheet.balance, 100 * beam.balance, "cm from the butt"),
         ("swingweight", 1e4 * sheet.swingweight, beam.swingweight_kgcm2, "kg cm^2"),
         ("f1 (free-free)", sheet.f1, beam.modes.frequencies[0], "Hz"),
-        ("string-bed stiffness", sheet.string_stiffness, racket.strings.stiffness, "N/m"),
     ]
-    table = pd.DataFrame(rows, columns=["quantity", "spec_sheet", "model", "unit"])
-    table["relative_difference"] = table["model"] / table["spec_sheet"] - 1.0
+    table = pd.DataFrame(rows, columns=["quantity", "spec_sheet", "fitted_model", "unit"])
+    table["relative_difference"] = table["fitted_model"] / table["spec_sheet"] - 1.0
     return table
 
 
@@ -111,7 +111,8 @@ def _modes(racket: Racket, count: int) -> pd.DataFrame:
 
 def spec_report(racket: Racket, specs: dict | None = None, count: int = 4) -> SpecReport:
     """Tables describing ``racket``; with the spec sheet it was fitted to (``specs``, the
-    keywords of :func:`racket.from_specs`), also the comparison and the mass split.
+    keywords of :func:`racket.from_specs`), also the sheet against the fitted model (before
+    any lead tape) and the mass split.
 
     The modes table lists the free-free bending modes and, for the racket held by its
     :class:`racket.Hand`, the coupled modes (frequency and damping ratio), including the
@@ -127,7 +128,7 @@ def spec_report(racket: Racket, specs: dict | None = None, count: int = 4) -> Sp
         }
     )
     return SpecReport(
-        fit=_fit_table(racket, specs) if specs is not None else pd.DataFrame(),
+        fit=_fit_table(specs) if specs is not None else pd.DataFrame(),
         properties=_properties(racket, specs),
         modes=_modes(held, count),
         effective_mass=effective,

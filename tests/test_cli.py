@@ -106,6 +106,78 @@ def test_modes(tmp_path, capsys):
     assert modes["frequency_Hz"].round(1).tolist() == [120.0, 330.8, 648.5]
 
 
+def test_specs_of_a_catalogue_racket(capsys):
+    status, out, _ = run(capsys, "specs", "pure-drive-2021")
+    assert status == 0
+    assert "f1 given on the spec sheet, not inferred from RA" in out
+    assert "tennisaddict.fr" in out  # the sources are printed
+    assert "rocking" in out and "hand_held_Hz" in out
+    assert "flex-test tip stiffness" in out
+
+
+def test_specs_of_the_example_sheet_with_lead_tape(tmp_path, capsys):
+    status, out, _ = run(
+        capsys,
+        "specs",
+        str(EXAMPLES / "my_racket_specs.toml"),
+        "--out",
+        str(tmp_path / "m_eff.csv"),
+        "--plot",
+        str(tmp_path / "modes.png"),
+    )
+    assert status == 0
+    assert "added point masses" in out
+    table = pd.read_csv(tmp_path / "m_eff.csv")
+    assert list(table.columns) == [
+        "position_from_tip_m",
+        "position_from_butt_cm",
+        "effective_mass_kg",
+    ]
+    assert table["effective_mass_kg"].is_monotonic_increasing  # light tip, heavy throat
+    assert (tmp_path / "modes.png").stat().st_size > 10_000
+
+
+def test_compare_two_rackets(tmp_path, capsys):
+    status, out, _ = run(
+        capsys,
+        "compare",
+        "--racket",
+        "paper",
+        "--racket",
+        str(EXAMPLES / "my_racket_specs.toml"),
+        "--points",
+        "11",
+        "--support",
+        "hand-held",
+        "--out",
+        str(tmp_path / "cmp.csv"),
+        "--plot",
+        str(tmp_path / "cmp.png"),
+    )
+    assert status == 0
+    assert "my_racket_specs" in out and "largest_e" in out
+    table = pd.read_csv(tmp_path / "cmp.csv")
+    assert table["racket"].unique().tolist() == ["paper", "my_racket_specs"]
+    assert len(table) == 22
+    assert (tmp_path / "cmp.png").stat().st_size > 10_000
+
+
+def test_sweep_spec_racket_free_and_hand_held(capsys):
+    status, out, _ = run(
+        capsys,
+        "sweep",
+        "--racket",
+        str(EXAMPLES / "my_racket_specs.toml"),
+        "--support",
+        "free",
+        "hand-held",
+        "--points",
+        "3",
+    )
+    assert status == 0
+    assert "hand-held" in out
+
+
 BAD_INPUTS = [
     (["sweep", "--racket", "wooden"], "unknown racket preset 'wooden'"),
     (["sweep", "--ball", "golf"], "unknown ball preset 'golf'"),
@@ -130,6 +202,13 @@ BAD_INPUTS = [
     (["collide", "--a", "BAD_LAW"], "unknown law 'rubber'"),
     (["sweep", "--speed"], "expected at least one argument"),
     (["paper", "--bogus"], "unrecognized arguments"),
+    (["specs", "SPEC_KEY"], "unknown key 'balance' in [racket.specs]"),
+    (["specs", "SPEC_RA"], "RA scale has no public calibration"),
+    (["specs", "SPEC_SW"], "swingweight_kgcm2 must be in"),
+    (["specs", "LEAD_KEY"], "unknown key 'grams' in [racket.lead_tape]"),
+    (["sweep", "--racket", "HAND_KEY"], "unknown key 'grip' in [racket.hand]"),
+    (["compare", "--racket", "paper"], "compare needs two or more --racket"),
+    (["sweep", "--support", "glued"], "invalid choice: 'glued'"),
 ]
 
 
@@ -139,11 +218,24 @@ def bad_files(tmp_path):
     (tmp_path / "key.toml").write_text("[racket]\n[racket.strings]\nstifness = 4e4\n")
     (tmp_path / "neg.toml").write_text("[racket]\nmass = -0.3\n")
     (tmp_path / "law.toml").write_text('[ball]\nmass = 0.05\nlaw = "rubber"\nk = 1e4\n')
+    sheet = "mass_kg = 0.32\nswingweight_kgcm2 = 320\nhead_size_in2 = 100\ntension_lb = 55\n"
+    (tmp_path / "spec_key.toml").write_text("[racket.specs]\nbalance = 33\n" + sheet)
+    (tmp_path / "spec_ra.toml").write_text("[racket.specs]\nbalance_cm = 33\nra = 66\n" + sheet)
+    (tmp_path / "spec_sw.toml").write_text(
+        "[racket.specs]\nbalance_cm = 33\nf1_hz = 150\n" + sheet.replace("320", "420")
+    )
+    (tmp_path / "lead.toml").write_text("[racket]\nlead_tape = [{grams = 3}]\n")
+    (tmp_path / "hand.toml").write_text("[racket.hand]\ngrip = 0.1\n")
     return {
         "BAD_TOML": tmp_path / "bad.toml",
         "UNKNOWN_KEY": tmp_path / "key.toml",
         "NEG_MASS": tmp_path / "neg.toml",
         "BAD_LAW": tmp_path / "law.toml",
+        "SPEC_KEY": tmp_path / "spec_key.toml",
+        "SPEC_RA": tmp_path / "spec_ra.toml",
+        "SPEC_SW": tmp_path / "spec_sw.toml",
+        "LEAD_KEY": tmp_path / "lead.toml",
+        "HAND_KEY": tmp_path / "hand.toml",
     }
 
 

@@ -87,3 +87,21 @@ def test_serve_what_if_plot():
 def test_multi_panel_plots_check_their_axes():
     with pytest.raises(ValueError, match="3 Axes"):
         plots.plot_impact(impact(paper_racket(), tennis_ball(), 0.1, 10.0), ax=plt.subplots()[1])
+
+
+def test_cor_comparison_draws_each_racket_on_one_axes():
+    from racket import CATALOG
+    from studies.sweeps import compare
+
+    rackets = {"paper": paper_racket(), "pd": CATALOG["pure-drive-2021"].racket()}
+    table = compare(rackets, tennis_ball(), 10.0, points=9)
+    groups = dict(tuple(table.groupby("racket", sort=False)))
+    ax = plots.plot_cor_comparison(groups)
+    names = [n for n in labels(ax) if not n.startswith("_")]
+    assert [n.split(":")[0] for n in names] == ["paper", "pd"]
+    best = table[table.racket == "pd"]["e"].max()
+    assert f"largest {best:.3f}" in names[1]
+    assert len(ax.get_lines()) == 4  # e and e_A for each
+    _fig, given = plt.subplots()
+    assert plots.plot_cor_comparison(groups, ax=given, show_apparent=False) is given
+    assert len(given.get_lines()) == 2
