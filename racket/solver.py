@@ -5,7 +5,9 @@ string bed, for one impact point or many at once, and splits the racket's motion
 ball has left into its dc part (the rigid-body modes) and its ac part (the bending modes):
 
 * e_A = V1 / v1, the apparent COR, from the ball's speeds;
-* e = (V1 + V2) / v1 with V2 = V_cm + b omega the dc speed of the impact point (Eq. 21);
+* e = (V1 + V2) / v1 with V2 = V_cm + b omega the dc speed of the impact point (Eq. 21),
+  V_cm and omega the racket's momentum and angular momentum over its mass and moment of
+  inertia (for a free racket, its rigid-body modes);
 * e_van_zandt, the same with the whole impact-point speed at separation, vibration
   included (Van Zandt's error, Sec. VII);
 * the energy budget: ball and racket kinetic energy, vibration energy per mode, the energy
@@ -75,15 +77,19 @@ class Impact:
     e : COR from the dc (rigid-body) motion, Eq. 21 / Eq. 1.
     e_A : apparent COR V1 / v1 (NaN for a ball at rest).
     e_van_zandt : COR with the vibration at separation wrongly included.
-    effective_mass : racket effective mass at the impact point [kg] (Eq. 20; inf clamped).
+    effective_mass : racket effective mass at the impact point [kg] (Eq. 20 for the free
+        racket, also quoted for a hand-held one; inf clamped).
     ball_rebound : V1, ball speed after, away from the strings [m/s].
     v_cm : racket centre-of-mass velocity after [m/s] (along the ball's incoming path).
     omega : racket angular velocity after [rad/s]; the point at x moves at
         v_cm + (x_cm - x) omega.
     point_velocity_dc : V2 = v_cm + b omega, dc velocity of the impact point after [m/s].
     contact_time : [s].  peak_force : [N].
-    vibration_energy : energy in the bending modes when the ball leaves [J].
-    mode_energy : (..., n_bending) energy of each bending mode when the ball leaves [J].
+    vibration_energy : the racket's mechanical energy beyond its rigid-body kinetic energy
+        when the ball leaves [J]: the bending modes, and for a hand-held racket also the
+        energy in the hand's spring.
+    mode_energy : (..., n_bending) energy of each free-free bending mode when the ball
+        leaves [J].
     energy_initial, ball_energy, racket_energy, ball_loss, damping_loss, energy_residual :
         Energy budget [J]: initial kinetic energy = ball_energy + racket_energy (rigid
         body) + vibration_energy + ball_loss + damping_loss + energy_residual; the residual

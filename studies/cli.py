@@ -334,7 +334,7 @@ def cmd_compare(args) -> int:
                         rackets[label].strings.center, group["position_from_tip_m"], group["e"]
                     )
                 ),
-                "e_near_tip": group["e"].iloc[1],
+                "e_at_tip_end": group["e"].iloc[0],
             }
         )
     _print_table(pd.DataFrame(rows))
