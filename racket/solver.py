@@ -212,39 +212,30 @@ def impact(
     max_steps = 12 * steps_per_contact
     code, p0, p1, p2 = _law_code(ball.law)
 
-    moving = racket.support != "clamped-head"
-    modes = racket.beam.modes
-    phi = modes.shape(x).T.copy() if moving else np.zeros((x.size, 0))
     if swing_speed and racket.support != "free":
         raise ValueError(
             f"swing_speed must be 0 for a {racket.support} racket (the hand or clamp is at "
             "rest); swing a free racket, as the paper does"
         )
+    modes = racket.beam.modes
+    system = racket_system(modes, racket.support, racket.hand)
+    n = system.count
+    phi = modes.shape(x).T[:, :n].copy()
     (ball_trans,), (ball_g0,), (ball_g1,) = block_steps([[0.0, 1.0], [0.0, 0.0]], dt)
     ball_g0, ball_g1 = ball_g0[:, 1] / -ball.mass, ball_g1[:, 1] / -ball.mass
-    if moving:
-        system = racket_system(modes, racket.support, racket.hand)
-        trans, g0, g1 = system.step(dt)
-        unit = system.inputs(phi)
-        gin0 = np.einsum("jab,pjb->pja", g0, unit)
-        gin1 = np.einsum("jab,pjb->pja", g1, unit)
-        out_d, out_v = system.outputs(phi)
-        n = system.count
-        out_dc = (phi[:, :2] @ system.basis[n : n + 2]).reshape(x.size, -1, 2)
-        reach_w = np.linalg.norm(out_d, axis=2) * ~system.dc
-        metric = system.metric
-        damp_blocks, damp_rows = system.damping_rows()
-        z0 = np.zeros((x.size, 2 * n))
+    trans, g0, g1 = system.step(dt)
+    unit = system.inputs(phi)
+    gin0 = np.einsum("jab,pjb->pja", g0, unit)
+    gin1 = np.einsum("jab,pjb->pja", g1, unit)
+    out_d, out_v, out_dc = system.outputs(phi)
+    reach_w = np.linalg.norm(out_d, axis=2) * ~system.dc
+    damp_blocks, damp_rows = system.damping_rows()
+    z0 = np.zeros((x.size, 2 * n))
+    if swing_speed:
         z0[:, n : n + 2] = _swing_velocities(modes, x, swing_speed, pivot)
-        state0 = np.linalg.solve(system.basis, z0.T).T.reshape(x.size, -1, 2).copy()
-    else:
-        system = None
-        trans = g0 = np.zeros((0, 2, 2))
-        gin0 = gin1 = out_d = out_v = out_dc = state0 = np.zeros((x.size, 0, 2))
-        reach_w, metric = np.zeros((x.size, 0)), np.zeros((0, 2))
-        damp_blocks, damp_rows = np.zeros((0, 1), dtype=np.int64), np.zeros((0, 1, 2))
+    state0 = system.state(z0)
     ball_velocity = np.full(x.size, speed)
-    nb = trans.shape[0]
+    nb = system.blocks.shape[0]
 
     def run(x_o, record):
         out_ball = np.zeros((x.size, 2))
@@ -261,7 +252,7 @@ def impact(
             out_v,
             out_dc,
             reach_w,
-            metric,
+            system.metric,
             damp_blocks,
             damp_rows,
             ball_trans,
@@ -298,20 +289,17 @@ def impact(
 
     # dc part (rigid-body motion) and ac part (the rest) after the ball has left.
     ball_after = out_ball[:, 1]
-    if moving:
-        q, qd = system.modal_state(out_state)
-        stiffness = system.stiffness
-    else:
-        q = qd = np.zeros((x.size, 0))
-        stiffness = np.zeros((0, 0))
-    rigid_qd = qd[:, :2] if moving else np.zeros((x.size, 2))
+    q, qd = system.modal_state(out_state)
+    rigid_qd = qd[:, :2] if n else np.zeros((x.size, 2))
     v_cm = rigid_qd[:, 0] / np.sqrt(modes.mass)
     omega = rigid_qd[:, 1] / np.sqrt(modes.inertia_cm)
     v2_dc = v_cm + (modes.center_of_mass - x) * omega  # V = V_cm + b omega (Fig. 5)
     v2_total = np.sum(phi * qd, axis=1)
     mode_energy = 0.5 * (qd[:, 2:] ** 2 + (modes.omega[2 : q.shape[1]] * q[:, 2:]) ** 2)
     racket_energy = 0.5 * np.sum(rigid_qd**2, axis=1)
-    mechanical = 0.5 * np.sum(qd**2, axis=1) + 0.5 * np.einsum("pi,ij,pj->p", q, stiffness, q)
+    mechanical = 0.5 * np.sum(qd**2, axis=1) + 0.5 * np.einsum(
+        "pi,ij,pj->p", q, system.stiffness, q
+    )
     vibration = mechanical - racket_energy
 
     swing_qd = _swing_velocities(modes, x, swing_speed, pivot)
@@ -332,7 +320,7 @@ def impact(
 
     with np.errstate(invalid="ignore", divide="ignore"):
         e_a = np.where(speed > 0, -ball_after / speed, np.nan)
-    m_eff = racket.beam.effective_mass(x) if moving else np.full(x.size, np.inf)
+    m_eff = racket.beam.effective_mass(x) if n else np.full(x.size, np.inf)
     fields = dict(
         position=x,
         e=(v2_dc - ball_after) / closing,

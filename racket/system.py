@@ -68,19 +68,26 @@ class BlockSystem:
         """
         return block_steps(self.blocks, dt)
 
+    def _blocks_of(self, rows: np.ndarray) -> np.ndarray:
+        """(P, 2N) rows over the state s as (P, nb, 2), contiguous for the kernel."""
+        return np.ascontiguousarray(rows).reshape(rows.shape[0], self.blocks.shape[0], 2)
+
+    def state(self, z: np.ndarray) -> np.ndarray:
+        """Block states (P, nb, 2) of modal states z = (q, q') (P, 2N)."""
+        return self._blocks_of(np.linalg.solve(self.basis, z.T).T if self.count else z)
+
     def inputs(self, phi: np.ndarray) -> np.ndarray:
         """Block inputs (P, nb, 2) of a unit force at points with mode shapes phi (P, N)."""
-        n = self.count
-        b = np.zeros((phi.shape[0], 2 * n))
-        b[:, n:] = phi
-        return np.linalg.solve(self.basis, b.T).T.reshape(phi.shape[0], -1, 2)
+        return self.state(np.hstack([np.zeros_like(phi), phi]))
 
     def outputs(self, phi: np.ndarray):
-        """Displacement and velocity of points with shapes phi (P, N), as (P, nb, 2) rows."""
+        """Rows (P, nb, 2) giving the displacement, the velocity and the dc (rigid-body)
+        velocity of points with mode shapes phi (P, N) from the block states."""
         n = self.count
-        disp = (phi @ self.basis[:n]).reshape(phi.shape[0], -1, 2)
-        vel = (phi @ self.basis[n:]).reshape(phi.shape[0], -1, 2)
-        return disp, vel
+        disp = self._blocks_of(phi @ self.basis[:n])
+        vel = self._blocks_of(phi @ self.basis[n:])
+        dc = self._blocks_of(phi[:, :2] @ self.basis[n : n + 2])
+        return disp, vel, dc
 
     def damping_rows(self):
         """The dissipated power q'^T D q' as sum_r (L_r . s)**2, sparsely.
@@ -89,9 +96,10 @@ class BlockSystem:
         ``blocks[r]`` (K = 1 for a free racket, whose damping is diagonal).
         """
         c, u = np.linalg.eigh(self.damping)
-        keep = c > 1e-12 * max(c.max(), 1e-300)
-        rows = (np.sqrt(c[keep])[:, None] * u[:, keep].T) @ self.basis[self.count :]
-        rows = rows.reshape(rows.shape[0], self.blocks.shape[0], 2)
+        keep = c > 1e-12 * max(c.max(initial=0.0), 1e-300)
+        rows = self._blocks_of(
+            (np.sqrt(c[keep])[:, None] * u[:, keep].T) @ self.basis[self.count :]
+        )
         nonzero = np.any(rows != 0.0, axis=2)
         width = max(int(nonzero.sum(axis=1).max(initial=0)), 1)
         blocks = np.zeros((rows.shape[0], width), dtype=np.int64)
@@ -104,7 +112,7 @@ class BlockSystem:
 
     def modal_state(self, s: np.ndarray):
         """Modal displacements and velocities (P, N) from block states (P, nb, 2)."""
-        z = s.reshape(s.shape[0], -1) @ self.basis.T
+        z = s.reshape(s.shape[0], 2 * self.count) @ self.basis.T
         return z[:, : self.count], z[:, self.count :]
 
 
@@ -189,6 +197,16 @@ def held_system(modes: Modes, hand: Hand) -> BlockSystem:
     return BlockSystem(blocks, basis, dc, metric, stiffness, damping)
 
 
+def clamped_system() -> BlockSystem:
+    """A clamped head: nothing moves, no blocks."""
+    empty = np.zeros((0, 0))
+    return BlockSystem(
+        np.zeros((0, 2, 2)), empty, np.zeros(0, bool), np.zeros((0, 2)), empty, empty
+    )
+
+
 def racket_system(modes: Modes, support: str, hand: Hand) -> BlockSystem:
-    """The block system of a free or hand-held racket."""
+    """The block system of a free, hand-held or clamped-head racket."""
+    if support == "clamped-head":
+        return clamped_system()
     return held_system(modes, hand) if support == "hand-held" else free_system(modes)
