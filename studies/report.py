@@ -7,7 +7,7 @@ stiffness and effective mass along the strings.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
 import numpy as np
 import pandas as pd
@@ -118,7 +118,6 @@ def spec_report(racket: Racket, specs: dict | None = None, count: int = 4) -> Sp
     :class:`racket.Hand`, the coupled modes (frequency and damping ratio), including the
     slow modes of the racket rocking on the hand.
     """
-    held = replace(racket, support="hand-held")
     x = np.linspace(*racket.strings.extent, 9)
     effective = pd.DataFrame(
         {
@@ -130,6 +129,6 @@ def spec_report(racket: Racket, specs: dict | None = None, count: int = 4) -> Sp
     return SpecReport(
         fit=_fit_table(specs) if specs is not None else pd.DataFrame(),
         properties=_properties(racket, specs),
-        modes=_modes(held, count),
+        modes=_modes(racket, count),
         effective_mass=effective,
     )
