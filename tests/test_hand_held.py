@@ -7,18 +7,11 @@ import numpy as np
 import pytest
 from scipy.linalg import block_diag
 
-from racket import Hand, from_specs, impact, paper_racket, tennis_ball
+from racket import CATALOG, Hand, impact, paper_racket, tennis_ball
 from racket.system import free_system, held_system
 
 BALL = tennis_ball()
-RACKET = from_specs(
-    mass_kg=0.321,
-    balance_cm=33.0,
-    swingweight_kgcm2=325,
-    head_size_cm2=645,
-    f1_hz=150,
-    tension_lb=55,
-)
+RACKET = CATALOG["pure-drive-2021"].racket()  # 321 g, 33 cm, 325 kg cm^2, f1 150 Hz
 
 
 def _rebound_change(hand, positions, speed=20.0):
