@@ -5,6 +5,8 @@ from dataclasses import replace
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from scipy.linalg import block_diag
 
 from racket import CATALOG, Hand, impact, paper_racket, tennis_ball
@@ -92,3 +94,18 @@ def test_bad_hand_values(kwargs, match):
 def test_grip_must_end_below_the_strings():
     with pytest.raises(ValueError, match="grip_length must end below the strings"):
         replace(paper_racket(), hand=Hand(grip_length=0.5))
+
+
+@settings(max_examples=15, deadline=None)
+@given(
+    position=st.floats(0.0, 0.33),
+    stiffness=st.floats(1e3, 3e4),
+    damping=st.floats(0.0, 30.0),
+)
+def test_hand_held_invariants(position, stiffness, damping):
+    held = replace(RACKET, support="hand-held", hand=Hand(stiffness, damping))
+    r = impact(held, BALL, position, 15.0)
+    assert 0.0 <= r.e <= 1.0
+    assert -1.0 < r.e_A <= r.e  # the racket recoils: the ball's rebound is below e
+    assert abs(r.energy_residual) < 1e-5 * r.energy_initial
+    assert r.damping_loss >= 0.0 and r.vibration_energy >= 0.0

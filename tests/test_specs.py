@@ -199,3 +199,31 @@ def test_catalogue_rackets_fit_and_name_every_source(name):
     assert beam.mass == pytest.approx(sheet.mass, rel=1e-9)
     assert beam.balance == pytest.approx(sheet.balance, rel=1e-9)
     assert beam.swingweight == pytest.approx(sheet.swingweight, rel=1e-9)
+
+
+@settings(max_examples=30, deadline=None)
+@given(
+    mass=st.floats(0.22, 0.40),
+    balance=st.floats(0.28, 0.38),
+    swingweight=st.floats(200.0, 420.0),
+    head=st.floats(85.0, 120.0),
+)
+def test_any_sheet_round_trips_or_is_refused_with_a_reason(mass, balance, swingweight, head):
+    specs = dict(
+        mass_kg=mass,
+        balance_cm=100 * balance,
+        swingweight_kgcm2=swingweight,
+        head_size_in2=head,
+        f1_hz=150.0,
+        tension_lb=55,
+    )
+    try:
+        racket = from_specs(**specs)
+    except ValueError as err:
+        assert "swingweight_kgcm2 must be in" in str(err) or "no positive mass" in str(err)
+        return
+    beam = racket.beam
+    assert min(beam.mass_per_length) > 0
+    assert beam.mass == pytest.approx(mass, rel=1e-9)
+    assert beam.balance == pytest.approx(balance, rel=1e-9)
+    assert beam.swingweight_kgcm2 == pytest.approx(swingweight, rel=1e-9)
