@@ -198,6 +198,13 @@ class Beam:
         b = self.center_of_mass - np.asarray(x, dtype=float)
         return 1.0 / (1.0 / self.mass + b**2 / self.inertia_cm)
 
+    def with_f1(self, f1: float) -> Beam:
+        """This beam with every bending stiffness scaled so its first frequency is ``f1``
+        [Hz].  Frequencies scale as sqrt(EI), so scaling EI by (f1 / f1_now)**2 keeps the
+        mode shapes."""
+        scale = (positive("f1", f1, "Hz") / self.modes.frequencies[0]) ** 2
+        return replace(self, bending_stiffness=tuple(scale * np.asarray(self.bending_stiffness)))
+
     def with_point_masses(self, *masses) -> Beam:
         """This beam with more point masses (lead tape): pairs (position [m from the tip],
         mass [kg])."""

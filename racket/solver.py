@@ -230,9 +230,10 @@ def impact(
     out_d, out_v, out_dc = system.outputs(phi)
     reach_w = np.linalg.norm(out_d, axis=2) * ~system.dc
     damp_blocks, damp_rows = system.damping_rows()
+    swing_qd = _swing_velocities(modes, x, swing_speed, pivot)
     z0 = np.zeros((x.size, 2 * n))
     if swing_speed:
-        z0[:, n : n + 2] = _swing_velocities(modes, x, swing_speed, pivot)
+        z0[:, n : n + 2] = swing_qd
     state0 = system.state(z0)
     ball_velocity = np.full(x.size, speed)
     nb = system.blocks.shape[0]
@@ -302,7 +303,6 @@ def impact(
     )
     vibration = mechanical - racket_energy
 
-    swing_qd = _swing_velocities(modes, x, swing_speed, pivot)
     energy_initial = 0.5 * ball.mass * speed**2 + 0.5 * np.sum(swing_qd**2, axis=1)
     ball_energy = 0.5 * ball.mass * ball_after**2
     if code == kernel.SINE:

@@ -229,25 +229,22 @@ def fit_profile(sheet: SpecSheet) -> tuple[Beam, Profile]:
     Returns the beam (tip at x = 0) and the fitted mass split.  Raises ValueError, with the
     reason, when no positive mass split meets the spec sheet.
     """
-    stations, shapes, head = _basis(sheet)
-    axis = sheet.length - SWINGWEIGHT_AXIS
-    moments = _moments(stations, shapes, axis)  # (3 quantities, 4 parts)
-    target = np.array([sheet.mass, sheet.mass * (sheet.length - sheet.balance), sheet.swingweight])
-    free = target - STRING_MASS * moments[:, 1]
+    if sheet.f1 is None:
+        raise ValueError(RA_UNCALIBRATED)
     if sheet.mass <= STRING_MASS:
         raise ValueError(
             f"mass_kg must exceed the strings' {1e3 * STRING_MASS:g} g, got {sheet.mass!r}"
         )
-    if sheet.f1 is None:
-        raise ValueError(RA_UNCALIBRATED)
+    stations, shapes, head = _basis(sheet)
+    moments = _moments(stations, shapes, sheet.length - SWINGWEIGHT_AXIS)  # (3, 4 parts)
+    target = np.array([sheet.mass, sheet.mass * (sheet.length - sheet.balance), sheet.swingweight])
+    free = target - STRING_MASS * moments[:, 1]
     parts = moments[:, [0, 2, 3]]
     masses = np.linalg.solve(parts, free)
     if np.any(masses <= 0.0):
         raise ValueError(_infeasible_reason(sheet, parts, free, masses, target[2] - free[2]))
     rho = shapes[[0, 2, 3]].T @ masses + STRING_MASS * shapes[1]
-    unit = Beam(tuple(stations), tuple(rho), (1.0,) * rho.size)
-    ei = (sheet.f1 / unit.modes.frequencies[0]) ** 2
-    beam = Beam(tuple(stations), tuple(rho), (ei,) * rho.size)
+    beam = Beam(tuple(stations), tuple(rho), (1.0,) * rho.size).with_f1(sheet.f1)
     profile = Profile(
         head_hoop=float(masses[0]),
         strings=STRING_MASS,

@@ -12,8 +12,9 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
+from beam import Beam
 from racket import Racket, flex_test_stiffness
-from racket.specs import fit_profile, spec_sheet
+from racket.specs import Profile, SpecSheet, fit_profile, spec_sheet
 from racket.system import held_system
 from studies.plots import HAND_FROM_BUTT, center_of_percussion
 
@@ -28,10 +29,8 @@ class SpecReport:
     effective_mass: pd.DataFrame
 
 
-def _fit_table(specs: dict) -> pd.DataFrame:
+def _fit_table(sheet: SpecSheet, beam: Beam) -> pd.DataFrame:
     """The spec sheet against the fitted model (before lead tape or other changes)."""
-    sheet = spec_sheet(**specs)
-    beam, _ = fit_profile(sheet)
     rows = [
         ("mass", 1e3 * sheet.mass, 1e3 * beam.mass, "g"),
         ("balance", 100 * sheet.balance, 100 * beam.balance, "cm from the butt"),
@@ -43,7 +42,7 @@ def _fit_table(specs: dict) -> pd.DataFrame:
     return table
 
 
-def _properties(racket: Racket, specs: dict | None) -> pd.DataFrame:
+def _properties(racket: Racket, profile: Profile | None) -> pd.DataFrame:
     beam = racket.beam
     hand = beam.length - HAND_FROM_BUTT
     rows = [
@@ -65,8 +64,7 @@ def _properties(racket: Racket, specs: dict | None) -> pd.DataFrame:
             "N/m (handle and throat supported; not converted to RA)",
         ),
     ]
-    if specs is not None:
-        _, profile = fit_profile(spec_sheet(**specs))
+    if profile is not None:
         rows += [
             ("head hoop mass", 1e3 * profile.head_hoop, "g"),
             ("strings mass", 1e3 * profile.strings, "g"),
@@ -126,9 +124,14 @@ def spec_report(racket: Racket, specs: dict | None = None, count: int = 4) -> Sp
             "effective_mass_kg": racket.beam.effective_mass(x),
         }
     )
+    fit, profile = pd.DataFrame(), None
+    if specs is not None:
+        sheet = spec_sheet(**specs)
+        fitted, profile = fit_profile(sheet)
+        fit = _fit_table(sheet, fitted)
     return SpecReport(
-        fit=_fit_table(specs) if specs is not None else pd.DataFrame(),
-        properties=_properties(racket, specs),
+        fit=fit,
+        properties=_properties(racket, profile),
         modes=_modes(racket, count),
         effective_mass=effective,
     )

@@ -16,8 +16,6 @@ import numpy as np
 import pandas as pd
 
 from ball import Ball
-from beam import Beam
-from common.checks import positive
 from racket import Racket, StringBed, impact
 from studies.tables import impact_table
 
@@ -46,17 +44,8 @@ PARAMETERS = {
 """Sweepable parameters and their column names."""
 
 
-def with_f1(beam: Beam, f1: float) -> Beam:
-    """The beam with every bending stiffness scaled so its first frequency is ``f1`` [Hz].
-
-    Frequencies scale as sqrt(EI), so scaling EI by (f1 / f1_now)**2 keeps the mode shapes.
-    """
-    scale = (positive("f1", f1, "Hz") / beam.modes.frequencies[0]) ** 2
-    return replace(beam, bending_stiffness=tuple(scale * np.asarray(beam.bending_stiffness)))
-
-
 def _variant(racket: Racket, string_stiffness=None, f1=None, support=None) -> Racket:
-    beam = racket.beam if f1 is None else with_f1(racket.beam, f1)
+    beam = racket.beam if f1 is None else racket.beam.with_f1(f1)
     strings = (
         racket.strings
         if string_stiffness is None

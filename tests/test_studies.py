@@ -6,7 +6,7 @@ import pytest
 from racket import impact, paper_racket, tennis_ball
 from studies.paper import paper_table
 from studies.serve import serve_table, serve_what_if
-from studies.sweeps import COLUMNS, sweep, with_f1
+from studies.sweeps import COLUMNS, sweep
 
 
 def test_sweep_columns_and_values_match_impact():
@@ -39,7 +39,7 @@ def test_sweep_grid_adds_one_column_per_varying_parameter():
 
 def test_with_f1_scales_frequencies_and_keeps_shapes():
     beam = paper_racket().beam
-    stiff = with_f1(beam, 180.0)
+    stiff = beam.with_f1(180.0)
     assert stiff.modes.frequencies[0] == pytest.approx(180.0)
     assert stiff.modes.frequencies[1] / stiff.modes.frequencies[0] == pytest.approx(
         beam.modes.frequencies[1] / beam.modes.frequencies[0]
