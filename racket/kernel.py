@@ -20,12 +20,25 @@ contact (about 1/600 of it by default), not by the highest mode.
 
 The unhappy ball (sine law) uses a return mapping in its compression X, which never
 decreases: the ball flows along the sine (X + c' F_sine(X) = z_pred) when the contact
-pushes it, locks (X frozen, F below the sine) when the contact relaxes before its fold,
-and crosses the fold on the falling branch.  Pushed again on the falling branch (by the
-frame's vibration) it holds its compression until the force falls back to the sine.  If
-the contact would push past the fold's maximum the ball would snap through; the step
-flags it, and :func:`racket.solver.impact` raises Xo until no impact snaps (the
+pushes it, and locks (X frozen, F below the sine) when the contact relaxes.  Only a ball
+that has reached the fold (the maximum of X + c' F_sine(X)) to within ``cross_tol`` Xo
+crosses it, onto the falling branch, so X never jumps.  Pushed again on the falling branch
+(by the frame's vibration) it holds its compression until the force falls back to the
+sine.  If the contact would push the ball past the fold's maximum, or push a spent ball
+(X = Xo, force back to zero) again, Xo was not the ball's largest compression: the step
+flags a *snap*, and the summary's ``SNAP_RESIDUAL`` says by how much (the overshoot, > 0)
+or how close the contact came to it (minus the smallest gap to the fold, <= 0), a
+continuous function of Xo that :func:`racket.solver.impact` drives to zero (the
 self-consistent Xo of :mod:`ball.unhappy`).
+
+Outcome at separation
+---------------------
+After the force first returns to zero the stepping goes on, so that a vibrating frame can
+catch the ball again, until the dc motion has separated the two by more than the reach of
+the remaining vibration (and then ``extra_steps`` more).  The outcome (ball and racket
+states, energies) is the state at the step where the force last returned to zero: the
+moment the ball finally left.  For a hand-held racket the hand keeps pushing after that,
+and the racket's momentum keeps changing, so any later moment would give another e.
 
 Law codes: 0 linear hysteresis (k, e), 1 power law (k, a, b), 2 sine law (k0).
 """
@@ -40,8 +53,20 @@ from numba import njit, prange
 LINEAR, POWER, SINE = 0, 1, 2
 
 # Columns of the per-impact summary array.
-T_END, T_CONTACT, F_PEAK, F_MAX, SINE_WORK, DAMPING_LOSS, SNAPPED, ENDED = range(8)
-N_SUMMARY = 8
+(
+    T_END,
+    T_STOP,
+    T_CONTACT,
+    F_PEAK,
+    SINE_WORK,
+    DAMPING_LOSS,
+    SNAPPED,
+    ENDED,
+    SNAP_RESIDUAL,
+    X_END,
+    RECONTACTS,
+) = range(11)
+N_SUMMARY = 11
 
 # Rows of the history array.
 H_FORCE, H_BALL_COMP, H_STRING, H_BALL_VEL, H_POINT_VEL, H_POINT_VEL_DC = range(6)
@@ -133,15 +158,19 @@ def _sine_root(target, c, k0, x_o, lo, hi):
 
 
 @njit(cache=True)
-def sine_step(k0, x_o, a, z_pred, x_n, slack):
+def sine_step(k0, x_o, a, z_pred, x_n, cross_tol):
     """One return-mapping step of the unhappy ball.
 
-    Returns (force, new X, snapped).  ``a`` = 1/k_s + c is the compliance in series with
-    the ball, ``x_n`` its compression so far, ``slack`` True once it has collapsed.
+    Returns (force, new X, residual): ``residual`` > 0 is a snap (the overshoot past the
+    fold's maximum, or the push on a spent ball, over Xo), otherwise minus the gap left to
+    the fold's maximum over Xo while the ball flows along the rising branch (-inf
+    elsewhere).  ``a`` = 1/k_s + c is the compliance in series with the ball, ``x_n`` its
+    compression so far.
     """
-    if slack or x_n >= x_o:
-        # Compressed beyond Xo: Xo was not the largest compression (flagged like a snap).
-        return 0.0, max(x_n, z_pred), slack or z_pred > x_n
+    if x_n >= x_o:  # spent: the force came back to zero at X = Xo
+        if z_pred > x_n:
+            return 0.0, x_n, (z_pred - x_n) / x_o
+        return 0.0, x_n, -math.inf
 
     ck = a * k0 * math.pi
     x_fold = x_o / math.pi * math.acos(-1.0 / ck) if ck > 1.0 else x_o
@@ -151,20 +180,23 @@ def sine_step(k0, x_o, a, z_pred, x_n, slack):
         if z_pred >= h_n:
             if z_pred <= h_fold:
                 x = _sine_root(z_pred, a, k0, x_o, x_n, x_fold)
-                return k0 * x_o * math.sin(math.pi * x / x_o), x, False
-            return 0.0, z_pred, True  # pushed past the fold's maximum: snap-through
-        if x_fold < x_o and z_pred >= x_o:  # cross the fold onto the falling branch
+                return k0 * x_o * math.sin(math.pi * x / x_o), x, (z_pred - h_fold) / x_o
+            return 0.0, x_n, (z_pred - h_fold) / x_o  # past the fold's maximum: a snap
+        if h_fold - h_n > cross_tol * x_o or x_fold >= x_o:
+            return max((z_pred - x_n) / a, 0.0), x_n, -math.inf  # lock
+        # At the fold and relaxing: cross onto the falling branch.
+        if z_pred >= x_o:
             x = _sine_root(z_pred, a, k0, x_o, x_fold, x_o)
-            return k0 * x_o * math.sin(math.pi * x / x_o), x, False
-        return max((z_pred - x_n) / a, 0.0), x_n, False  # lock
+            return k0 * x_o * math.sin(math.pi * x / x_o), x, -math.inf
+        return 0.0, x_o, -math.inf
     if z_pred > h_n:
         # Pushed again on the falling branch (the frame's vibration): the ball holds its
         # compression, like any loaded material reloaded below its previous peak.
-        return (z_pred - x_n) / a, x_n, False
+        return (z_pred - x_n) / a, x_n, -math.inf
     if z_pred >= x_o:
         x = _sine_root(z_pred, a, k0, x_o, x_n, x_o)
-        return k0 * x_o * math.sin(math.pi * x / x_o), x, False
-    return 0.0, x_o, False  # force back to zero at X = Xo: the contact opens
+        return k0 * x_o * math.sin(math.pi * x / x_o), x, -math.inf
+    return 0.0, x_o, -math.inf  # force back to zero at X = Xo: the contact opens
 
 
 @njit(cache=True, parallel=True)
@@ -190,9 +222,12 @@ def run_impacts(
     ball_velocity,
     state0,
     x_o,
+    cross_tol,
     dt,
     max_steps,
+    extra_steps,
     force_tol,
+    stop_on_snap,
     record,
     out_ball,
     out_state,
@@ -201,10 +236,8 @@ def run_impacts(
 ):
     """Advance P impacts from first touch until the ball has left for good.
 
-    The racket is a linear system in real 2x2 blocks (:mod:`racket.system`).  After the
-    force first returns to zero the stepping goes on, so that a vibrating frame can catch
-    the ball again, until the dc motion separates the two and the gap exceeds the reach of
-    the remaining vibration.
+    The racket is a linear system in real 2x2 blocks (:mod:`racket.system`).  The outputs
+    are the states at the final separation (see the module docstring).
 
     Parameters
     ----------
@@ -235,9 +268,23 @@ def run_impacts(
         Block states at first touch (a swung racket's rigid-body motion).
     x_o : (P,)
         Sine law's Xo per impact [m] (ignored by other laws).
+    cross_tol : float
+        A sine-law ball closer than this times Xo to its fold's maximum may cross the fold.
+    dt : float
+        Time step [s].
+    max_steps, extra_steps : int
+        Most steps in all; steps to go on after the ball has left for good.
+    force_tol : float
+        A sine-law contact approaching a common speed without a fold ends when its force
+        has fallen to this fraction of its peak.
+    stop_on_snap : bool
+        Stop an impact at its first snap (an Xo search needs no more).
+    record : bool
+        Fill ``history``.
     out_ball : (P, 2), out_state : (P, nb, 2), summary : (P, N_SUMMARY),
     history : (N_HISTORY, P, max_steps + 1)
-        Outputs: ball and block states at the end, summary numbers, histories (if record).
+        Outputs: ball and block states at the final separation, summary numbers,
+        histories (if record).
     """
     n_points, nb = reach_w.shape
     for p in prange(n_points):
@@ -255,19 +302,24 @@ def run_impacts(
             d_t[j, 0] = out_d[p, j, 0] * trans[j, 0, 0] + out_d[p, j, 1] * trans[j, 1, 0]
             d_t[j, 1] = out_d[p, j, 0] * trans[j, 0, 1] + out_d[p, j, 1] * trans[j, 1, 1]
             c0 += out_d[p, j, 0] * gin0[p, j, 0] + out_d[p, j, 1] * gin0[p, j, 1]
-        force, f_max, f_peak, x_ball, slack, snapped = 0.0, 0.0, 0.0, 0.0, False, False
+        force, f_peak, x_ball, snapped = 0.0, 0.0, 0.0, False
+        residual = -math.inf
         damping_loss = 0.0
         sine_work = 0.0
-        t_contact = 0.0
         power_prev = _power(damp_blocks, damp_rows, s)
-        ended = False
+        stop_at = -1  # step at which to stop, once the ball has left for good
+        recontacts = -1  # contacts after the first
+        # The state when the ball last left (force back to zero).
+        sep_step, sep_u, sep_ud, sep_x = 0, u, ud, 0.0
+        sep_damping, sep_work, sep_contact = 0.0, 0.0, 0.0
+        sep_s = s.copy()
         step = 0
         closing = ud - _dot(out_v, p, s, nb)
         if record:
             history[H_BALL_VEL, p, 0] = ud
             history[H_POINT_VEL, p, 0] = _dot(out_v, p, s, nb)
             history[H_POINT_VEL_DC, p, 0] = _dot(out_dc, p, s, nb)
-        while step < max_steps:
+        while step < max_steps and step != stop_at:
             # Free prediction (no force at the step end).
             u_p = ball_trans[0, 0] * u + ball_trans[0, 1] * ud + ball_g0[0] * force
             ud_p = ball_trans[1, 0] * u + ball_trans[1, 1] * ud + ball_g0[1] * force
@@ -276,13 +328,17 @@ def run_impacts(
                 z_pred -= d_t[j, 0] * s[j, 0] + d_t[j, 1] * s[j, 1]
             if code == SINE:
                 x_before = x_ball
-                f_new, x_ball, snap = sine_step(p0, x_o[p], a, z_pred, x_ball, slack)
+                f_new, x_ball, step_residual = sine_step(p0, x_o[p], a, z_pred, x_ball, cross_tol)
                 sine_work += 0.5 * (force + f_new) * (x_ball - x_before)
-                if snap:
-                    slack = True
+                if step_residual > 0.0 and not snapped:
                     snapped = True
+                    residual = step_residual
+                    if stop_on_snap:
+                        break
+                elif not snapped:
+                    residual = max(residual, step_residual)
             else:
-                f_new = monotone_force(code, p0, p1, p2, a, z_pred, f_max)
+                f_new = monotone_force(code, p0, p1, p2, a, z_pred, f_peak)
             # Advance everything with the force varying from `force` to `f_new`.
             u_new = u_p + ball_g1[0] * f_new
             ud_new = ud_p + ball_g1[1] * f_new
@@ -308,8 +364,11 @@ def run_impacts(
             w_dot_dc = _dot(out_dc, p, s, nb)
             z_now = u_new - _dot(out_d, p, s, nb)
             u, ud = u_new, ud_new
+            if f_new > 0.0 and force == 0.0:
+                recontacts += 1
+                stop_at = -1  # caught again: not over yet
+            left = f_new == 0.0 and force > 0.0
             force = f_new
-            f_max = max(f_max, force)
             f_peak = max(f_peak, force)
             step += 1
             if record:
@@ -318,28 +377,34 @@ def run_impacts(
                     history[H_BALL_COMP, p, step] = x_ball
                 else:
                     history[H_BALL_COMP, p, step] = ball_compression(
-                        code, p0, p1, p2, force, max(force, f_max)
+                        code, p0, p1, p2, force, f_peak
                     )
                 history[H_STRING, p, step] = force * inv_ks
                 history[H_BALL_VEL, p, step] = ud
                 history[H_POINT_VEL, p, step] = w_dot
                 history[H_POINT_VEL_DC, p, step] = w_dot_dc
-            if force > 0.0:
-                t_contact = step * dt
-            if (
+            asymptotic = (
                 code == SINE
                 and 0.0 < force < force_tol * f_peak
                 and abs(ud - w_dot) < 1e-5 * closing
-            ):
-                ended = True  # common speed approached asymptotically (no fold)
+            )
+            if left or asymptotic:
+                sep_step, sep_u, sep_ud, sep_x = step, u, ud, x_ball
+                sep_damping, sep_work = damping_loss, sine_work
+                sep_contact = (step - 1) * dt if left else step * dt
+                for j in range(nb):
+                    sep_s[j, 0] = s[j, 0]
+                    sep_s[j, 1] = s[j, 1]
+            if asymptotic:
+                stop_at = step  # common speed approached asymptotically (no fold)
                 break
-            if force == 0.0 and w_dot_dc > ud:
+            if stop_at < 0 and force == 0.0 and w_dot_dc > ud:
                 # Open and separating in the dc motion: over for good once the gap exceeds
                 # the largest deflection the remaining vibration can bring to the point.
                 if code == SINE:
                     z_open = x_ball
                 else:
-                    z_open = ball_compression(code, p0, p1, p2, 0.0, f_max)
+                    z_open = ball_compression(code, p0, p1, p2, 0.0, f_peak)
                 reach = 0.0
                 for j in range(nb):
                     if reach_w[p, j] > 0.0:
@@ -347,21 +412,23 @@ def run_impacts(
                             metric[j, 0] * s[j, 0] ** 2 + metric[j, 1] * s[j, 1] ** 2
                         )
                 if z_open - z_now >= reach:
-                    ended = True
-                    break
-        out_ball[p, 0] = u
-        out_ball[p, 1] = ud
+                    stop_at = step + extra_steps
+        out_ball[p, 0] = sep_u
+        out_ball[p, 1] = sep_ud
         for j in range(nb):
-            out_state[p, j, 0] = s[j, 0]
-            out_state[p, j, 1] = s[j, 1]
-        summary[p, T_END] = step * dt
-        summary[p, T_CONTACT] = t_contact
+            out_state[p, j, 0] = sep_s[j, 0]
+            out_state[p, j, 1] = sep_s[j, 1]
+        summary[p, T_END] = sep_step * dt
+        summary[p, T_STOP] = step * dt
+        summary[p, T_CONTACT] = sep_contact
         summary[p, F_PEAK] = f_peak
-        summary[p, F_MAX] = f_max
-        summary[p, SINE_WORK] = sine_work
-        summary[p, DAMPING_LOSS] = damping_loss
+        summary[p, SINE_WORK] = sep_work
+        summary[p, DAMPING_LOSS] = sep_damping
         summary[p, SNAPPED] = 1.0 if snapped else 0.0
-        summary[p, ENDED] = 1.0 if ended else 0.0
+        summary[p, ENDED] = 1.0 if step == stop_at else 0.0
+        summary[p, SNAP_RESIDUAL] = residual
+        summary[p, X_END] = sep_x
+        summary[p, RECONTACTS] = max(recontacts, 0)
 
 
 @njit(cache=True)

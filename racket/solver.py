@@ -16,6 +16,7 @@ ball has left into its dc part (the rigid-body modes) and its ac part (the bendi
 
 from __future__ import annotations
 
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
@@ -32,6 +33,19 @@ DEFAULT_STEPS_PER_CONTACT = 600
 FORCE_TOL = 1e-6
 """An unhappy-ball contact that approaches a common speed asymptotically is over when its
 force has fallen to this fraction of its peak."""
+
+CROSS_TOL = 1e-10
+"""An unhappy ball crosses its fold when the contact relaxes within this fraction of Xo of
+the fold's maximum (the Xo search drives the gap below half of it)."""
+
+SELF_CONSISTENT_TOL = 1e-6
+"""An unhappy-ball impact is self-consistent when its compression at separation equals
+Xo to this relative tolerance."""
+
+SCAN_START, SCAN_RATIO, SCAN_MAX, REFINE_MAX = 0.5, 1.01, 400, 60
+"""The Xo search: start at this fraction of the rigid racket's Xo, step up by this ratio
+(so a gap in the non-snapping Xo narrower than 1 % can be missed), at most this many scan
+and refinement runs."""
 
 
 def _law_code(law):
@@ -94,7 +108,10 @@ class Impact:
         Energy budget [J]: initial kinetic energy = ball_energy + racket_energy (rigid
         body) + vibration_energy + ball_loss + damping_loss + energy_residual; the residual
         is the integration error.
-    x_o : the unhappy ball's self-consistent Xo [m] (NaN for other laws).
+    x_o : the unhappy ball's Xo [m], the smallest that does not snap (NaN for other laws).
+    self_consistent : (bool) the unhappy ball's compression at separation equals Xo (to
+        ``SELF_CONSISTENT_TOL``); always True for other laws.
+    recontacts : (int) times the frame caught the ball again after it had left.
     t : (T,) time since first touch [s] of the histories.
     force, ball_compression, string_deflection, ball_velocity, point_velocity,
     point_velocity_dc : (..., T) histories (NaN after the ball has left); the impact
@@ -123,6 +140,8 @@ class Impact:
     damping_loss: np.ndarray
     energy_residual: np.ndarray
     x_o: np.ndarray
+    self_consistent: np.ndarray
+    recontacts: np.ndarray
     t: np.ndarray
     force: np.ndarray
     ball_compression: np.ndarray
@@ -159,6 +178,7 @@ def impact(
     swing_speed: float = 0.0,
     pivot: float | None = None,
     steps_per_contact: int = DEFAULT_STEPS_PER_CONTACT,
+    watch_after: float = 0.0,
 ) -> Impact:
     """A ball hits the racket head-on at ``position``, normal to the string plane.
 
@@ -180,6 +200,10 @@ def impact(
         point (e.g. near the butt, 0.6 m); None for pure translation.
     steps_per_contact : int
         Time steps per estimated contact time (>= 50).
+    watch_after : float
+        Extra time [s] to keep stepping after the solver has decided that the ball has
+        left for good, watching for another contact; the outcome does not depend on it
+        unless that decision was wrong.
 
     Returns
     -------
@@ -206,96 +230,37 @@ def impact(
     if steps_per_contact < 50:
         raise ValueError(f"steps_per_contact must be >= 50, got {steps_per_contact}")
 
-    k_s = racket.strings.stiffness
-    closing = speed + swing_speed
-    dt = contact_time_scale(ball, k_s, closing) / steps_per_contact
-    max_steps = 12 * steps_per_contact
-    code, p0, p1, p2 = _law_code(ball.law)
-
     if swing_speed and racket.support != "free":
         raise ValueError(
             f"swing_speed must be 0 for a {racket.support} racket (the hand or clamp is at "
             "rest); swing a free racket, as the paper does"
         )
-    modes = racket.beam.modes
-    system = racket_system(modes, racket.support, racket.hand)
-    n = system.count
-    phi = modes.shape(x).T[:, :n].copy()
-    (ball_trans,), (ball_g0,), (ball_g1,) = block_steps([[0.0, 1.0], [0.0, 0.0]], dt)
-    ball_g0, ball_g1 = ball_g0[:, 1] / -ball.mass, ball_g1[:, 1] / -ball.mass
-    trans, g0, g1 = system.step(dt)
-    unit = system.inputs(phi)
-    gin0 = np.einsum("jab,pjb->pja", g0, unit)
-    gin1 = np.einsum("jab,pjb->pja", g1, unit)
-    out_d, out_v, out_dc = system.outputs(phi)
-    reach_w = np.linalg.norm(out_d, axis=2) * ~system.dc
-    damp_blocks, damp_rows = system.damping_rows()
-    swing_qd = _swing_velocities(modes, x, swing_speed, pivot)
-    z0 = np.zeros((x.size, 2 * n))
-    if swing_speed:
-        z0[:, n : n + 2] = swing_qd
-    state0 = system.state(z0)
-    ball_velocity = np.full(x.size, speed)
-    nb = system.blocks.shape[0]
-
-    def run(x_o, record):
-        out_ball = np.zeros((x.size, 2))
-        out_state = np.zeros((x.size, nb, 2))
-        summary = np.zeros((x.size, kernel.N_SUMMARY))
-        hist = np.zeros(
-            (kernel.N_HISTORY, x.size, max_steps + 1) if record else (kernel.N_HISTORY, 1, 1)
-        )
-        kernel.run_impacts(
-            trans,
-            gin0,
-            gin1,
-            out_d,
-            out_v,
-            out_dc,
-            reach_w,
-            system.metric,
-            damp_blocks,
-            damp_rows,
-            ball_trans,
-            ball_g0,
-            ball_g1,
-            1.0 / k_s,
-            code,
-            p0,
-            p1,
-            p2,
-            ball_velocity,
-            state0,
-            x_o,
-            dt,
-            max_steps,
-            FORCE_TOL,
-            record,
-            out_ball,
-            out_state,
-            summary,
-            hist,
-        )
-        return out_ball, out_state, summary, hist
-
+    watch_after = non_negative("watch_after", watch_after, "s")
+    stepper = _Stepper(racket, ball, x, speed, swing_speed, pivot, steps_per_contact)
+    code = stepper.code
     x_o = np.full(x.size, np.nan)
     if code == kernel.SINE:
-        x_o = _self_consistent_x_o(run, ball, closing, x.size)
-    out_ball, out_state, summary, hist = run(x_o, True)
+        x_o = _self_consistent_x_o(stepper, _x_o_guess(racket, ball, x, stepper.closing))
+    out_ball, out_state, summary, hist = stepper.run(
+        x_o, record=True, extra_steps=round(watch_after / stepper.dt)
+    )
     if not np.all(summary[:, kernel.ENDED]):
         bad = x[summary[:, kernel.ENDED] == 0][0]
         raise RuntimeError(
-            f"the impact at {bad:g} m from the tip had not ended after {max_steps * dt:.3g} s"
+            f"the impact at {bad:g} m from the tip had not ended after "
+            f"{stepper.max_steps * stepper.dt:.3g} s"
         )
+    closing, dt, modes, system = stepper.closing, stepper.dt, stepper.modes, stepper.system
+    n = system.count
 
-    # dc part (rigid-body motion) and ac part (the rest) after the ball has left.
+    # dc part (rigid-body motion) and ac part (the rest) when the ball has left.
     ball_after = out_ball[:, 1]
     q, qd = system.modal_state(out_state)
     rigid_qd = qd[:, :2] if n else np.zeros((x.size, 2))
     v_cm = rigid_qd[:, 0] / np.sqrt(modes.mass)
     omega = rigid_qd[:, 1] / np.sqrt(modes.inertia_cm)
     v2_dc = v_cm + (modes.center_of_mass - x) * omega  # V = V_cm + b omega (Fig. 5)
-    v2_total = np.sum(phi * qd, axis=1)
+    v2_total = np.sum(stepper.phi * qd, axis=1)
     mode_energy = 0.5 * (qd[:, 2:] ** 2 + (modes.omega[2 : q.shape[1]] * q[:, 2:]) ** 2)
     racket_energy = 0.5 * np.sum(rigid_qd**2, axis=1)
     mechanical = 0.5 * np.sum(qd**2, axis=1) + 0.5 * np.einsum(
@@ -303,12 +268,22 @@ def impact(
     )
     vibration = mechanical - racket_energy
 
-    energy_initial = 0.5 * ball.mass * speed**2 + 0.5 * np.sum(swing_qd**2, axis=1)
+    energy_initial = 0.5 * ball.mass * speed**2 + 0.5 * np.sum(stepper.swing_qd**2, axis=1)
     ball_energy = 0.5 * ball.mass * ball_after**2
     if code == kernel.SINE:
         ball_loss = summary[:, kernel.SINE_WORK]  # X never decreases: all work on it is lost
+        self_consistent = np.abs(summary[:, kernel.X_END] - x_o) <= SELF_CONSISTENT_TOL * x_o
+        if not np.all(self_consistent):
+            warnings.warn(
+                f"{np.count_nonzero(~self_consistent)} of {x.size} unhappy-ball impacts "
+                f"(first at {x[~self_consistent][0]:g} m from the tip) have no self-consistent "
+                "Xo: the ball leaves before its compression reaches Xo (see Impact."
+                "self_consistent)",
+                stacklevel=2,
+            )
     else:
-        ball_loss = ball.law.dissipated(summary[:, kernel.F_MAX])
+        ball_loss = ball.law.dissipated(summary[:, kernel.F_PEAK])
+        self_consistent = np.ones(x.size, dtype=bool)
     damping_loss = summary[:, kernel.DAMPING_LOSS]
     residual = energy_initial - (ball_energy + racket_energy + vibration + ball_loss + damping_loss)
 
@@ -342,6 +317,8 @@ def impact(
         damping_loss=damping_loss,
         energy_residual=residual,
         x_o=x_o,
+        self_consistent=self_consistent,
+        recontacts=summary[:, kernel.RECONTACTS].astype(int),
         force=hist[kernel.H_FORCE],
         ball_compression=hist[kernel.H_BALL_COMP],
         string_deflection=hist[kernel.H_STRING],
@@ -350,30 +327,171 @@ def impact(
         point_velocity_dc_history=hist[kernel.H_POINT_VEL_DC],
     )
     if scalar:
-        fields = {k: (v[0] if v.ndim > 1 else float(v[0])) for k, v in fields.items()}
+        fields = {k: (v[0] if v.ndim > 1 else v[0].item()) for k, v in fields.items()}
     return Impact(speed=speed, swing_speed=swing_speed, t=np.arange(used) * dt, **fields)
 
 
-def _self_consistent_x_o(run, ball: Ball, closing: float, count: int) -> np.ndarray:
-    """Smallest Xo per impact for which the unhappy ball never snaps through (bisection).
+class _Stepper:
+    """The kernel's inputs for one racket, ball and set of impact points, precomputed once
+    and run for any Xo (see :func:`racket.kernel.run_impacts`)."""
+
+    def __init__(self, racket, ball, x, speed, swing_speed, pivot, steps_per_contact):
+        k_s = racket.strings.stiffness
+        self.closing = speed + swing_speed
+        self.dt = contact_time_scale(ball, k_s, self.closing) / steps_per_contact
+        self.max_steps = 12 * steps_per_contact
+        self.code, p0, p1, p2 = _law_code(ball.law)
+        self.modes = modes = racket.beam.modes
+        self.system = system = racket_system(modes, racket.support, racket.hand)
+        self.n = n = system.count
+        self.phi = phi = modes.shape(x).T[:, :n].copy()
+        (ball_trans,), (ball_g0,), (ball_g1,) = block_steps([[0.0, 1.0], [0.0, 0.0]], self.dt)
+        trans, g0, g1 = system.step(self.dt)
+        unit = system.inputs(phi)
+        out_d, out_v, out_dc = system.outputs(phi)
+        damp_blocks, damp_rows = system.damping_rows()
+        self.swing_qd = _swing_velocities(modes, x, swing_speed, pivot)
+        z0 = np.zeros((x.size, 2 * n))
+        if swing_speed:
+            z0[:, n : n + 2] = self.swing_qd
+        self.size = x.size
+        # Per-point inputs (first axis over the impact points) and shared ones.
+        self.per_point = dict(
+            gin0=np.einsum("jab,pjb->pja", g0, unit),
+            gin1=np.einsum("jab,pjb->pja", g1, unit),
+            out_d=out_d,
+            out_v=out_v,
+            out_dc=out_dc,
+            reach_w=np.linalg.norm(out_d, axis=2) * ~system.dc,
+            ball_velocity=np.full(x.size, speed),
+            state0=system.state(z0),
+        )
+        self.shared = dict(
+            trans=trans,
+            metric=system.metric,
+            damp_blocks=damp_blocks,
+            damp_rows=damp_rows,
+            ball_trans=ball_trans,
+            ball_g0=ball_g0[:, 1] / -ball.mass,
+            ball_g1=ball_g1[:, 1] / -ball.mass,
+            inv_ks=1.0 / k_s,
+            code=self.code,
+            p0=p0,
+            p1=p1,
+            p2=p2,
+        )
+
+    def run(self, x_o, subset=None, record=False, stop_on_snap=False, extra_steps=0):
+        """Run the impacts (all, or those indexed by ``subset``) with Xo ``x_o`` [m] per
+        impact run; returns the kernel's outputs (ball, block states, summary, history)."""
+        pick = slice(None) if subset is None else subset
+        inputs = {k: np.ascontiguousarray(v[pick]) for k, v in self.per_point.items()}
+        count = inputs["ball_velocity"].size
+        nb = self.shared["trans"].shape[0]
+        out_ball = np.zeros((count, 2))
+        out_state = np.zeros((count, nb, 2))
+        summary = np.zeros((count, kernel.N_SUMMARY))
+        max_steps = self.max_steps + extra_steps
+        hist = np.zeros((kernel.N_HISTORY, count, max_steps + 1) if record else (1, 1, 1))
+        kernel.run_impacts(
+            **self.shared,
+            **inputs,
+            x_o=np.ascontiguousarray(x_o, dtype=float),
+            cross_tol=CROSS_TOL,
+            dt=self.dt,
+            max_steps=max_steps,
+            extra_steps=extra_steps,
+            force_tol=FORCE_TOL,
+            stop_on_snap=stop_on_snap,
+            record=record,
+            out_ball=out_ball,
+            out_state=out_state,
+            summary=summary,
+            history=hist,
+        )
+        return out_ball, out_state, summary, hist
+
+
+def _x_o_guess(racket: Racket, ball: Ball, x: np.ndarray, closing: float) -> np.ndarray:
+    """A first guess of the unhappy ball's Xo [m] per impact: the rigid racket's, the ball
+    in series with the strings (Eqs. 12-16 where the strings are softer than pi k0, the
+    rigid wall's energy balance otherwise); only a starting point for the scan."""
+    k0, k_s = ball.law.k0, racket.strings.stiffness
+    m2 = racket.beam.effective_mass(x) if racket.support != "clamped-head" else np.inf
+    mu = ball.mass * m2 / (ball.mass + m2) if racket.support != "clamped-head" else ball.mass
+    if k_s < np.pi * k0:
+        return closing / (np.sqrt(k_s / mu) * (1.0 / np.pi + k0 / k_s)) * np.ones(x.size)
+    return closing * np.sqrt(np.pi * mu / (4.0 * k0)) * np.ones(x.size)
+
+
+def _self_consistent_x_o(stepper: _Stepper, guess: np.ndarray) -> np.ndarray:
+    """Smallest Xo [m] per impact for which the unhappy ball never snaps.
 
     Too small an Xo lets the contact push the ball past the maximum of X + c F_sine(X),
-    where it would snap; any larger Xo runs, but leaves the ball with a jump across its
-    fold.  The boundary is the smooth, self-consistent solution of :mod:`ball.unhappy`.
+    or push it again once spent, where it would snap: Xo was not its largest compression.
+    On a vibrating frame the set of Xo that do not snap can have gaps, so a bisection on
+    "snapped or not" can land on any of its edges.  Instead:
+
+    1. scan Xo upwards from well below ``guess`` in steps of ``SCAN_RATIO`` until an impact
+       first runs without a snap (each run stops at its first snap);
+    2. refine between that Xo and the one before by the Illinois method on the kernel's
+       snap residual (the overshoot past the fold, or minus the smallest gap left to it),
+       which is continuous in Xo and zero at the smallest Xo that does not snap, until the
+       gap is below ``CROSS_TOL`` Xo (the ball then reaches the fold and crosses it) or the
+       bracket has shrunk to round-off (an edge where the residual jumps).
     """
-    x_wall = closing * np.sqrt(np.pi * ball.mass / (4.0 * ball.law.k0))
-    lo = np.full(count, 1e-3 * x_wall)
-    hi = np.full(count, 2.0 * x_wall)
-    for _ in range(60):
-        snapped = run(hi, False)[2][:, kernel.SNAPPED] > 0
-        if not np.any(snapped):
+    count = guess.size
+    every = np.arange(count)
+
+    def snaps(x_o, subset):
+        summary = stepper.run(x_o, subset, stop_on_snap=True)[2]
+        return summary[:, kernel.SNAPPED] > 0, summary[:, kernel.SNAP_RESIDUAL]
+
+    # 1. Scan: a start that snaps everywhere, then up until each impact first runs clean.
+    lo = SCAN_START * guess
+    r_lo = np.empty(count)
+    todo = every
+    for _ in range(SCAN_MAX):
+        snapped, r_lo[todo] = snaps(lo[todo], todo)
+        lo[todo[~snapped]] *= 0.5
+        todo = todo[~snapped]
+        if todo.size == 0:
             break
-        hi = np.where(snapped, 2.0 * hi, hi)
-    else:
-        raise RuntimeError("no Xo keeps the unhappy ball from snapping through")
-    for _ in range(55):
-        mid = np.sqrt(lo * hi)
-        snapped = run(mid, False)[2][:, kernel.SNAPPED] > 0
-        lo = np.where(snapped, mid, lo)
-        hi = np.where(snapped, hi, mid)
+    hi, r_hi = lo * SCAN_RATIO, np.empty(count)
+    todo = every
+    for _ in range(SCAN_MAX):
+        snapped, r_hi[todo] = snaps(hi[todo], todo)
+        up = todo[snapped]
+        lo[up], r_lo[up] = hi[up], r_hi[up]
+        hi[up] *= SCAN_RATIO
+        todo = up
+        if todo.size == 0:
+            break
+    if todo.size:
+        raise RuntimeError(
+            f"no Xo keeps the unhappy ball from snapping through at {todo.size} impacts"
+        )
+    # 2. Illinois refinement of the residual's sign change in [lo, hi]; `gap` is the true
+    # residual at hi (r_lo and r_hi get halved by the Illinois rule).
+    gap = r_hi.copy()
+    side = np.zeros(count, dtype=int)
+    todo = every[-gap > 0.5 * CROSS_TOL]
+    for _ in range(REFINE_MAX):
+        if todo.size == 0:
+            break
+        a, b, ra, rb = lo[todo], hi[todo], r_lo[todo], r_hi[todo]
+        mid = b - rb * (b - a) / (rb - ra)
+        bad = ~((mid > a) & (mid < b))
+        mid[bad] = 0.5 * (a[bad] + b[bad])
+        snapped, res = snaps(mid, todo)
+        up, down = todo[snapped], todo[~snapped]
+        lo[up], r_lo[up] = mid[snapped], res[snapped]
+        hi[down], r_hi[down], gap[down] = mid[~snapped], res[~snapped], res[~snapped]
+        # Illinois: halve the residual at the end that stays put twice running.
+        r_hi[up[side[up] == 1]] *= 0.5
+        r_lo[down[side[down] == -1]] *= 0.5
+        side[up], side[down] = 1, -1
+        done = -gap[todo] <= 0.5 * CROSS_TOL
+        done |= hi[todo] - lo[todo] <= 4 * np.finfo(float).eps * hi[todo]
+        todo = todo[~done]
     return hi
