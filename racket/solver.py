@@ -42,7 +42,7 @@ SELF_CONSISTENT_TOL = 1e-6
 """An unhappy-ball impact is self-consistent when its compression at separation equals
 Xo to this relative tolerance."""
 
-SCAN_START, SCAN_RATIO, SCAN_MAX, REFINE_MAX = 0.5, 1.01, 400, 60
+SCAN_START, SCAN_RATIO, SCAN_MAX, REFINE_MAX = 0.7, 1.01, 400, 60
 """The Xo search: start at this fraction of the rigid racket's Xo, step up by this ratio
 (so a gap in the non-snapping Xo narrower than 1 % can be missed), at most this many scan
 and refinement runs."""
