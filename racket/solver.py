@@ -1,8 +1,9 @@
 """Ball impacts on a flexible racket (paper Sec. VII).
 
 :func:`impact` drives the racket's modes with the ball's force law in series with the
-string bed, for one impact point or many at once, and splits the racket's motion after the
-ball has left into its dc part (the rigid-body modes) and its ac part (the bending modes):
+string bed, for one impact point or many at once, and splits the racket's motion at the
+moment the ball finally leaves (after any re-contact) into its dc part (the rigid-body
+modes) and its ac part (the bending modes):
 
 * e_A = V1 / v1, the apparent COR, from the ball's speeds;
 * e = (V1 + V2) / v1 with V2 = V_cm + b omega the dc speed of the impact point (Eq. 21),
@@ -12,6 +13,21 @@ ball has left into its dc part (the rigid-body modes) and its ac part (the bendi
   included (Van Zandt's error, Sec. VII);
 * the energy budget: ball and racket kinetic energy, vibration energy per mode, the energy
   lost in the ball and to modal damping, and the residual that shows it closes.
+
+Every outcome is the state at that moment.  The stepping goes on after it, to catch a
+re-contact, until the gap exceeds the reach of the remaining vibration; for a hand-held
+racket the hand keeps pushing meanwhile, so a later moment would give another momentum,
+and another e.
+
+The unhappy ball (sine law, Eq. 7) needs its Xo, the compression at which its force returns
+to zero, which the collision itself decides: Xo is the smallest for which the contact never
+pushes the ball past its fold (or a spent ball again), found per impact by a scan and a
+refinement (:func:`_self_consistent_x_o`).  The impact is *self-consistent* when the ball
+then leaves with its compression at Xo; on a vibrating frame near the tip the frame can
+unload the ball before it reaches its fold, for every Xo that does not snap.  There is then
+no self-consistent Xo; the smallest that does not snap is kept (it leaves the ball closest
+to Xo: the compression at separation falls further below Xo as Xo grows), the impact is
+flagged (``Impact.self_consistent``) and a warning says how many are.
 """
 
 from __future__ import annotations
