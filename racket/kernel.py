@@ -55,7 +55,6 @@ LINEAR, POWER, SINE = 0, 1, 2
 # Columns of the per-impact summary array.
 (
     T_END,
-    T_STOP,
     T_CONTACT,
     F_PEAK,
     SINE_WORK,
@@ -65,8 +64,8 @@ LINEAR, POWER, SINE = 0, 1, 2
     SNAP_RESIDUAL,
     X_END,
     RECONTACTS,
-) = range(11)
-N_SUMMARY = 11
+) = range(10)
+N_SUMMARY = 10
 
 # Rows of the history array.
 H_FORCE, H_BALL_COMP, H_STRING, H_BALL_VEL, H_POINT_VEL, H_POINT_VEL_DC = range(6)
@@ -419,7 +418,6 @@ def run_impacts(
             out_state[p, j, 0] = sep_s[j, 0]
             out_state[p, j, 1] = sep_s[j, 1]
         summary[p, T_END] = sep_step * dt
-        summary[p, T_STOP] = step * dt
         summary[p, T_CONTACT] = sep_contact
         summary[p, F_PEAK] = f_peak
         summary[p, SINE_WORK] = sep_work
