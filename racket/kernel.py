@@ -275,7 +275,8 @@ def run_impacts(
         Most steps in all; steps to go on after the ball has left for good.
     force_tol : float
         A sine-law contact approaching a common speed without a fold ends when its force
-        has fallen to this fraction of its peak.
+        has fallen to this fraction of its peak, and the relative speed to this fraction of
+        the closing speed.
     stop_on_snap : bool
         Stop an impact at its first snap (an Xo search needs no more).
     record : bool
@@ -385,7 +386,7 @@ def run_impacts(
             asymptotic = (
                 code == SINE
                 and 0.0 < force < force_tol * f_peak
-                and abs(ud - w_dot) < 1e-5 * closing
+                and abs(ud - w_dot) < force_tol * closing
             )
             if left or asymptotic:
                 sep_step, sep_u, sep_ud, sep_x = step, u, ud, x_ball

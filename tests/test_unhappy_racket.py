@@ -7,12 +7,13 @@ the racket between the points that are not.
 """
 
 import warnings
+from dataclasses import replace
 
 import numpy as np
 import pytest
 
-from ball import Ball, SineLaw
-from racket import impact, kernel, paper_racket
+from ball import Ball, LinearSpring, SineLaw, collide
+from racket import StringBed, impact, kernel, paper_racket
 from racket.solver import SCAN_RATIO, SELF_CONSISTENT_TOL, _Stepper
 
 RACKET = paper_racket()
@@ -101,3 +102,17 @@ def test_where_no_x_o_is_self_consistent_the_rule_is_the_closest_one():
     summary = stepper.run(larger)[2]
     ratio = summary[:, kernel.X_END] / larger
     assert np.all(np.diff(ratio) < 0) and ratio[0] < 1.0
+
+
+@pytest.mark.parametrize("strings", [1e5, 3e5, 1e6])
+def test_without_a_fold_the_clamped_contact_ends_at_a_common_speed(strings):
+    # Strings stiffer than pi k0 (Fig. 4's regime): e = 0 in the limit (ball.collide gives
+    # exactly 0); the stepped contact must stay in [0, 1e-4] and self-consistent.
+    ball = BALLS["10.3 g, k0 2e4"]
+    clamped = paper_racket("clamped-head")
+    clamped = replace(clamped, strings=StringBed(strings, clamped.strings.extent))
+    r = impact(clamped, ball, [0.02, 0.16], 4.0)
+    assert np.all((r.e >= 0.0) & (r.e < 1e-4))
+    assert r.self_consistent.all()
+    reference = collide(ball, Ball(1e6, LinearSpring(strings)), 4.0)
+    assert r.x_o == pytest.approx(reference.x_o, rel=1e-4)
