@@ -280,11 +280,11 @@ def run_impacts(
     stop_on_snap : bool
         Stop an impact at its first snap (an Xo search needs no more).
     record : bool
-        Fill ``history``.
+        Fill ``history`` (as far as it reaches).
     out_ball : (P, 2), out_state : (P, nb, 2), summary : (P, N_SUMMARY),
-    history : (N_HISTORY, P, max_steps + 1)
+    history : (N_HISTORY, P, T)
         Outputs: ball and block states at the final separation, summary numbers,
-        histories (if record).
+        histories of the first T steps (if record).
     """
     n_points, nb = reach_w.shape
     for p in prange(n_points):
@@ -371,7 +371,7 @@ def run_impacts(
             force = f_new
             f_peak = max(f_peak, force)
             step += 1
-            if record:
+            if record and step < history.shape[2]:
                 history[H_FORCE, p, step] = force
                 if code == SINE:
                     history[H_BALL_COMP, p, step] = x_ball

@@ -67,6 +67,17 @@ SCAN_START, SCAN_RATIO, SCAN_MAX, REFINE_MAX = 0.7, 1.01, 400, 60
 and refinement runs."""
 
 
+_HISTORY_ROWS = {
+    "force": kernel.H_FORCE,
+    "ball_compression": kernel.H_BALL_COMP,
+    "string_deflection": kernel.H_STRING,
+    "ball_velocity": kernel.H_BALL_VEL,
+    "point_velocity": kernel.H_POINT_VEL,
+    "point_velocity_dc_history": kernel.H_POINT_VEL_DC,
+}
+"""Impact attribute of each history row of the kernel."""
+
+
 def _law_code(law):
     """Kernel code and parameters of a ball law."""
     if isinstance(law, LinearSpring):
@@ -131,10 +142,11 @@ class Impact:
     self_consistent : (bool) the unhappy ball's compression at separation equals Xo (to
         ``SELF_CONSISTENT_TOL``); always True for other laws.
     recontacts : (int) times the frame caught the ball again after it had left.
-    t : (T,) time since first touch [s] of the histories.
+    t : (T,) time since first touch [s] of the histories (None unless ``histories``).
     force, ball_compression, string_deflection, ball_velocity, point_velocity,
-    point_velocity_dc : (..., T) histories (NaN after the ball has left); the impact
-        point's velocity is split into its dc part and the rest (ac = total - dc).
+    point_velocity_dc_history : (..., T) histories (NaN after the ball has left; None unless
+        ``histories``); the impact point's velocity is split into its dc part and the rest
+        (ac = total - dc).
     """
 
     position: np.ndarray
@@ -171,7 +183,10 @@ class Impact:
 
     @property
     def point_velocity_ac_history(self) -> np.ndarray:
-        """ac (vibration) part of the impact point's velocity against time [m/s]."""
+        """ac (vibration) part of the impact point's velocity against time [m/s] (None
+        without histories)."""
+        if self.point_velocity is None:
+            return None
         return self.point_velocity - self.point_velocity_dc_history
 
 
@@ -198,6 +213,7 @@ def impact(
     pivot: float | None = None,
     steps_per_contact: int = DEFAULT_STEPS_PER_CONTACT,
     watch_after: float = 0.0,
+    histories: bool = False,
 ) -> Impact:
     """A ball hits the racket head-on at ``position``, normal to the string plane.
 
@@ -223,6 +239,9 @@ def impact(
         Extra time [s] to keep stepping after the solver has decided that the ball has
         left for good, watching for another contact; the outcome does not depend on it
         unless that decision was wrong.
+    histories : bool
+        Also return the histories (force, compressions, velocities against time; the
+        impacts then run twice, the second time recording); None otherwise.
 
     Returns
     -------
@@ -260,9 +279,8 @@ def impact(
     x_o = np.full(x.size, np.nan)
     if code == kernel.SINE:
         x_o = _self_consistent_x_o(stepper, _x_o_guess(racket, ball, x, stepper.closing))
-    out_ball, out_state, summary, hist = stepper.run(
-        x_o, record=True, extra_steps=round(watch_after / stepper.dt)
-    )
+    extra_steps = round(watch_after / stepper.dt)
+    out_ball, out_state, summary, _ = stepper.run(x_o, extra_steps=extra_steps)
     if not np.all(summary[:, kernel.ENDED]):
         bad = x[summary[:, kernel.ENDED] == 0][0]
         raise RuntimeError(
@@ -308,9 +326,11 @@ def impact(
 
     steps = np.rint(summary[:, kernel.T_END] / dt).astype(int)
     used = int(steps.max()) + 1
-    hist = hist[:, :, :used].copy()
-    after = np.arange(used)[None, :] > steps[:, None]
-    hist[:, after] = np.nan
+    history = dict.fromkeys(_HISTORY_ROWS)
+    if histories:
+        hist = stepper.run(x_o, extra_steps=extra_steps, history_steps=used)[3]
+        hist[:, np.arange(used)[None, :] > steps[:, None]] = np.nan  # after the ball left
+        history = {name: hist[row] for name, row in _HISTORY_ROWS.items()}
 
     with np.errstate(invalid="ignore", divide="ignore"):
         e_a = np.where(speed > 0, -ball_after / speed, np.nan)
@@ -338,16 +358,14 @@ def impact(
         x_o=x_o,
         self_consistent=self_consistent,
         recontacts=summary[:, kernel.RECONTACTS].astype(int),
-        force=hist[kernel.H_FORCE],
-        ball_compression=hist[kernel.H_BALL_COMP],
-        string_deflection=hist[kernel.H_STRING],
-        ball_velocity=hist[kernel.H_BALL_VEL],
-        point_velocity=hist[kernel.H_POINT_VEL],
-        point_velocity_dc_history=hist[kernel.H_POINT_VEL_DC],
+        **history,
     )
     if scalar:
-        fields = {k: (v[0] if v.ndim > 1 else v[0].item()) for k, v in fields.items()}
-    return Impact(speed=speed, swing_speed=swing_speed, t=np.arange(used) * dt, **fields)
+        fields = {
+            k: (v if v is None else v[0] if v.ndim > 1 else v[0].item()) for k, v in fields.items()
+        }
+    t = np.arange(used) * dt if histories else None
+    return Impact(speed=speed, swing_speed=swing_speed, t=t, **fields)
 
 
 class _Stepper:
@@ -400,9 +418,10 @@ class _Stepper:
             p2=p2,
         )
 
-    def run(self, x_o, subset=None, record=False, stop_on_snap=False, extra_steps=0):
+    def run(self, x_o, subset=None, stop_on_snap=False, extra_steps=0, history_steps=0):
         """Run the impacts (all, or those indexed by ``subset``) with Xo ``x_o`` [m] per
-        impact run; returns the kernel's outputs (ball, block states, summary, history)."""
+        impact run; returns the kernel's outputs (ball, block states, summary, history),
+        the history over the first ``history_steps`` steps (none if 0)."""
         pick = slice(None) if subset is None else subset
         inputs = {k: np.ascontiguousarray(v[pick]) for k, v in self.per_point.items()}
         count = inputs["ball_velocity"].size
@@ -411,7 +430,7 @@ class _Stepper:
         out_state = np.zeros((count, nb, 2))
         summary = np.zeros((count, kernel.N_SUMMARY))
         max_steps = self.max_steps + extra_steps
-        hist = np.zeros((kernel.N_HISTORY, count, max_steps + 1) if record else (1, 1, 1))
+        hist = np.zeros((kernel.N_HISTORY, count, history_steps) if history_steps else (1, 1, 1))
         kernel.run_impacts(
             **self.shared,
             **inputs,
@@ -422,7 +441,7 @@ class _Stepper:
             extra_steps=extra_steps,
             force_tol=FORCE_TOL,
             stop_on_snap=stop_on_snap,
-            record=record,
+            record=history_steps > 0,
             out_ball=out_ball,
             out_state=out_state,
             summary=summary,

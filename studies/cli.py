@@ -124,7 +124,9 @@ def write_paper_figures(out: Path) -> list[Path]:
         "cor_along_racket.png": lambda: plots.plot_cor_along_racket(
             impact(racket, ball, np.linspace(0, 0.32, 161), 10.0), racket
         ),
-        "impact_near_tip.png": lambda: plots.plot_impact(impact(racket, ball, 0.03, 10.0)),
+        "impact_near_tip.png": lambda: plots.plot_impact(
+            impact(racket, ball, 0.03, 10.0, histories=True)
+        ),
         "modes.png": lambda: plots.plot_modes(racket),
         "serve_what_if.png": lambda: plots.plot_serve_what_if(serve_what_if(racket, ball)),
     }

@@ -43,7 +43,7 @@ def test_cor_along_racket_marks_node_cop_and_maxima():
 
 
 def test_impact_history_splits_dc_and_ac():
-    r = impact(paper_racket(), tennis_ball(), 0.03, 10.0)
+    r = impact(paper_racket(), tennis_ball(), 0.03, 10.0, histories=True)
     axes = plots.plot_impact(r)
     assert len(axes) == 3
     names = labels(axes[2])
@@ -86,7 +86,9 @@ def test_serve_what_if_plot():
 
 def test_multi_panel_plots_check_their_axes():
     with pytest.raises(ValueError, match="3 Axes"):
-        plots.plot_impact(impact(paper_racket(), tennis_ball(), 0.1, 10.0), ax=plt.subplots()[1])
+        plots.plot_impact(
+            impact(paper_racket(), tennis_ball(), 0.1, 10.0, histories=True), ax=plt.subplots()[1]
+        )
 
 
 def test_cor_comparison_draws_each_racket_on_one_axes():

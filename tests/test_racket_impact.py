@@ -134,13 +134,23 @@ def test_swung_racket_on_a_ball_at_rest_matches_eq22_in_translation():
 
 
 def test_histories_split_dc_and_ac():
-    r = impact(paper_racket(), BALL, 0.02, 10.0)
+    r = impact(paper_racket(), BALL, 0.02, 10.0, histories=True)
     assert r.force.shape == r.t.shape
     assert np.nanmax(r.force) == pytest.approx(r.peak_force)
     ac = r.point_velocity_ac_history
     assert np.nanmax(np.abs(ac)) > 0.1  # an impact near the tip rings the frame
     assert r.point_velocity_dc_history[-1] == pytest.approx(r.point_velocity_dc)
     assert r.mode_energy.sum() == pytest.approx(r.vibration_energy)
+    assert r.t.size == round(r.contact_time / r.t[1]) + 2  # sized to the steps used
+
+
+def test_histories_only_on_demand_and_the_outcome_is_the_same():
+    x = np.array([0.0, 0.16, 0.3])
+    plain = impact(paper_racket(), BALL, x, 10.0)
+    assert plain.force is None and plain.t is None and plain.point_velocity_ac_history is None
+    recorded = impact(paper_racket(), BALL, x, 10.0, histories=True)
+    assert np.array_equal(plain.e, recorded.e)
+    assert recorded.force.shape == (3, recorded.t.size)
 
 
 @pytest.mark.parametrize(

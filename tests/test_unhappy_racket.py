@@ -28,7 +28,7 @@ ALONG = np.linspace(0.0, 0.32, 161)
 def sweep(request):
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
-        result = impact(RACKET, BALLS[request.param], ALONG, 10.0)
+        result = impact(RACKET, BALLS[request.param], ALONG, 10.0, histories=True)
     return result, [str(w.message) for w in caught]
 
 
