@@ -53,6 +53,11 @@ class MonotoneLaw(ABC):
     def rigid_cor(self) -> float:
         """COR of a bounce on a rigid, immovable surface (the ball's own e)."""
 
+    @abstractmethod
+    def secant_stiffness(self, mass: float, speed: float) -> float:
+        """F_max / X_max [N/m] of a ball of ``mass`` [kg] hitting a rigid surface at
+        ``speed`` [m/s]: the linear spring that the ball is, at that speed."""
+
 
 @dataclass(frozen=True)
 class LinearSpring(MonotoneLaw):
@@ -81,6 +86,9 @@ class LinearSpring(MonotoneLaw):
     @property
     def rigid_cor(self) -> float:
         return 1.0
+
+    def secant_stiffness(self, mass: float, speed: float) -> float:
+        return self.k
 
 
 @dataclass(frozen=True)
@@ -121,6 +129,9 @@ class LinearHysteresis(MonotoneLaw):
     @property
     def rigid_cor(self) -> float:
         return self.e
+
+    def secant_stiffness(self, mass: float, speed: float) -> float:
+        return self.k
 
 
 @dataclass(frozen=True)
@@ -186,6 +197,11 @@ class PowerLawHysteresis(MonotoneLaw):
     def rigid_cor(self) -> float:
         return math.sqrt((self.a + 1.0) / (self.b + 1.0))
 
+    def secant_stiffness(self, mass: float, speed: float) -> float:
+        # The loading stores k X**(a + 1) / (a + 1) = mass speed**2 / 2 at X_max.
+        x_max = ((self.a + 1.0) * mass * speed**2 / (2.0 * self.k)) ** (1.0 / (self.a + 1.0))
+        return self.k * x_max ** (self.a - 1.0)
+
 
 @dataclass(frozen=True)
 class SineLaw:
@@ -222,3 +238,7 @@ class SineLaw:
     @property
     def rigid_cor(self) -> float:
         return 0.0
+
+    def secant_stiffness(self, mass: float, speed: float) -> float:
+        """k0 = Fo / Xo [N/m] at every speed (paper Sec. IV)."""
+        return self.k0

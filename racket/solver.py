@@ -94,14 +94,7 @@ def _law_code(law):
 def contact_time_scale(ball: Ball, string_stiffness: float, closing_speed: float) -> float:
     """Half-period [s] of the ball on immovable strings, treating the ball as linear with
     its secant stiffness at this speed: sets the time step."""
-    law = ball.law
-    if isinstance(law, (LinearSpring, LinearHysteresis)):
-        k = law.k
-    elif isinstance(law, PowerLawHysteresis):
-        x = ((law.a + 1) * ball.mass * closing_speed**2 / (2 * law.k)) ** (1 / (law.a + 1))
-        k = law.k * x ** (law.a - 1)
-    else:
-        k = law.k0
+    k = ball.law.secant_stiffness(ball.mass, closing_speed)
     k_series = 1.0 / (1.0 / k + 1.0 / string_stiffness)
     return np.pi * np.sqrt(ball.mass / k_series)
 
