@@ -6,7 +6,7 @@ Public API: the force laws :class:`LinearSpring`, :class:`LinearHysteresis`,
 :mod:`ball.closed_forms`.
 """
 
-from ball.bodies import WALL, Ball, Wall
+from ball.bodies import WALL, Ball, Wall, warn_if_squashed
 from ball.closed_forms import (
     energy_loss_fraction,
     energy_loss_fraction_lab,
@@ -38,4 +38,5 @@ __all__ = [
     "serve_speed",
     "unhappy_cor",
     "unhappy_solution",
+    "warn_if_squashed",
 ]

@@ -3,7 +3,10 @@
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass
+
+import numpy as np
 
 from ball.laws import MonotoneLaw, SineLaw
 from common.checks import positive
@@ -20,13 +23,20 @@ class Ball:
     law : MonotoneLaw or SineLaw
         Its force law (:class:`~ball.LinearSpring`, :class:`~ball.LinearHysteresis`,
         :class:`~ball.PowerLawHysteresis` or :class:`~ball.SineLaw`).
+    radius : float, optional
+        Ball radius [m], > 0: a result that compresses the ball beyond it is out of the
+        range where any force law of a ball means something, and warns
+        (:func:`warn_if_squashed`).  None: not checked.
     """
 
     mass: float
     law: MonotoneLaw | SineLaw
+    radius: float | None = None
 
     def __post_init__(self):
         object.__setattr__(self, "mass", positive("mass", self.mass, "kg"))
+        if self.radius is not None:
+            object.__setattr__(self, "radius", positive("radius", self.radius, "m"))
         if not isinstance(self.law, (MonotoneLaw, SineLaw)):
             raise ValueError(
                 "law must be LinearSpring, LinearHysteresis, PowerLawHysteresis or SineLaw, "
@@ -45,3 +55,17 @@ class Wall:
 
 WALL = Wall()
 """The rigid, infinitely massive wall (the paper's "massive, rigid surface")."""
+
+
+def warn_if_squashed(ball: Ball, compression, stacklevel: int = 3) -> None:
+    """Warn once (UserWarning) if any ``compression`` [m] of ``ball`` exceeds its radius:
+    its force law is then used far beyond the deformations it describes."""
+    if ball.radius is None:
+        return
+    largest = float(np.max(compression))
+    if largest > ball.radius:
+        warnings.warn(
+            f"the ball is compressed by {1e3 * largest:.3g} mm, more than its radius "
+            f"({1e3 * ball.radius:.3g} mm): its force law is used far outside its range",
+            stacklevel=stacklevel,
+        )

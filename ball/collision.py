@@ -13,12 +13,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ball.bodies import Ball, Wall
+from ball.bodies import Ball, Wall, warn_if_squashed
 from ball.contact import RelativeContact
 from ball.laws import SineLaw
 from ball.monotone import monotone_contact
 from ball.unhappy import unhappy_contact
-from common.checks import finite
+from common.checks import SPEED_RANGE, in_range, shown
 
 
 @dataclass(frozen=True)
@@ -119,8 +119,9 @@ def collide(a: Ball, b: Ball | Wall, v_a: float, v_b: float = 0.0, samples: int 
     b : Ball or Wall
         The ball on the right, or the wall.
     v_a, v_b : float
-        Velocities before the collision [m/s], positive from a towards b; the balls must
-        approach (``v_a > v_b``).  The wall does not move (``v_b = 0``).
+        Velocities before the collision [m/s], positive from a towards b, each within
+        +-300 m/s; the balls must approach (``v_a - v_b >= 0.001`` m/s).  The wall does not
+        move (``v_b = 0``).
     samples : int
         Points per phase in the returned history.
 
@@ -132,13 +133,16 @@ def collide(a: Ball, b: Ball | Wall, v_a: float, v_b: float = 0.0, samples: int 
         raise ValueError(f"a must be a Ball, got {a!r}")
     if not isinstance(b, (Ball, Wall)):
         raise ValueError(f"b must be a Ball or WALL, got {b!r}")
-    v_a = finite("v_a", v_a, "m/s")
-    v_b = finite("v_b", v_b, "m/s")
+    v_a = in_range("v_a", v_a, -SPEED_RANGE[1], SPEED_RANGE[1], "m/s")
+    v_b = in_range("v_b", v_b, -SPEED_RANGE[1], SPEED_RANGE[1], "m/s")
     wall = isinstance(b, Wall)
     if wall and v_b != 0.0:
         raise ValueError(f"v_b must be 0 for the wall (it cannot move), got {v_b!r}")
-    if v_a <= v_b:
-        raise ValueError(f"the balls must approach: v_a must be > v_b = {v_b!r} m/s, got {v_a!r}")
+    if v_a - v_b < SPEED_RANGE[0]:
+        raise ValueError(
+            f"the balls must approach: v_a must exceed v_b = {shown(v_b)} m/s by at least "
+            f"{SPEED_RANGE[0]:g} m/s, got {shown(v_a)}"
+        )
 
     closing = v_a - v_b
     mu = a.mass if wall else a.mass * b.mass / (a.mass + b.mass)
@@ -190,6 +194,9 @@ def collide(a: Ball, b: Ball | Wall, v_a: float, v_b: float = 0.0, samples: int 
     def kinetic(va, vb):
         return 0.5 * a.mass * va**2 + (0.0 if wall else 0.5 * b.mass * vb**2)
 
+    warn_if_squashed(a, rel.compression_a)
+    if not wall:
+        warn_if_squashed(b, rel.compression_b)
     v_a_after, v_b_after = float(vel_a[-1]), float(vel_b[-1])
     return Collision(
         v_a=v_a,

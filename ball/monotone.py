@@ -49,8 +49,8 @@ def monotone_contact(
         History points per phase.
     """
     laws: Sequence[MonotoneLaw] = [law_a] if law_b is None else [law_a, law_b]
-    # Time and length scales for the tolerances: a linear spring of the loading stiffness
-    # at a compression of 1 mm sets the contact period.
+    # Time and length scales for the tolerances: the secant stiffness of the loading curve
+    # at a force of 1 N sets the contact period.
     f_ref = 1.0
     k_ref = f_ref / float(series_compression(laws, f_ref, f_ref))
     t_ref = np.pi * np.sqrt(mu / k_ref)

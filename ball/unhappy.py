@@ -59,6 +59,7 @@ from ball.contact import RelativeContact
 from ball.laws import MonotoneLaw, SineLaw
 
 _NODES = 8001  # grid points per interval of theta
+_BRACKET_STEPS = 60  # halvings or doublings of Xo when bracketing it
 
 
 def _clustered(a: float, b: float, n: int = _NODES) -> np.ndarray:
@@ -131,10 +132,19 @@ def _solve_x_o(sine: SineLaw, partner: MonotoneLaw | None, energy: float) -> flo
     # Start from the rigid-wall value (2 k0 Xo**2 / pi = energy) and bracket outwards.
     x_o = np.sqrt(np.pi * energy / (2.0 * sine.k0))
     lo, hi = x_o, x_o
-    while residual(lo) > 0:
+    for _ in range(_BRACKET_STEPS):
+        if residual(lo) <= 0:
+            break
         lo *= 0.5
-    while residual(hi) < 0:
+    for _ in range(_BRACKET_STEPS):
+        if residual(hi) >= 0:
+            break
         hi *= 2.0
+    if residual(lo) > 0 or residual(hi) < 0:
+        raise RuntimeError(
+            f"no Xo within 2**{_BRACKET_STEPS} of the rigid wall's {x_o:.3g} m balances the "
+            "collision's energy"
+        )
     if lo == hi:
         return lo
     return brentq(residual, lo, hi, xtol=1e-16 * hi, rtol=4 * np.finfo(float).eps)

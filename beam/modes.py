@@ -66,5 +66,9 @@ class Modes:
         x = np.linspace(0.0, self.length, 4001)
         phi = self.bending_shapes(x)[mode - 1]
         f = lambda s: float(self.bending_shapes(np.array([s]))[mode - 1, 0])  # noqa: E731
-        cross = np.nonzero(np.sign(phi[:-1]) * np.sign(phi[1:]) < 0)[0]
-        return np.array([brentq(f, x[i], x[i + 1], xtol=1e-13) for i in cross])
+        sign = np.sign(phi)
+        cross = np.nonzero(sign[:-1] * sign[1:] < 0)[0]
+        roots = [brentq(f, x[i], x[i + 1], xtol=1e-13) for i in cross]
+        # A node exactly on a grid point (antisymmetric modes of a uniform beam at L/2).
+        on_grid = np.nonzero((sign[1:-1] == 0) & (sign[:-2] * sign[2:] < 0))[0] + 1
+        return np.sort(np.concatenate([roots, x[on_grid]]))

@@ -1,30 +1,52 @@
 """Input checks shared by every layer.
 
-Each check raises ``ValueError`` whose message names the argument, the value it got and
-the valid range, so that a user (or the CLI, which prints the message as one line) can
-see at once what to change.  The checks return the value as a float so that callers can
-write ``self_k = positive("k", k, "N/m")``.
+Each check raises ``ValueError`` whose message names the argument, the value it got (as
+the user gave it, a plain number) and the valid range, so that a user (or the CLI, which
+prints the message as one line) can see at once what to change.  The checks return the
+value as a float so that callers can write ``self_k = positive("k", k, "N/m")``.
 """
 
 from __future__ import annotations
 
 import math
+import numbers
 
 import numpy as np
+
+SPEED_RANGE = (1e-3, 300.0)
+"""Impact and swing speeds [m/s] racket-impact accepts: from 1 mm/s to well above the
+fastest recorded serve (73 m/s, 163 mph).  The solvers are scale-free and resolve far more;
+outside this range a number is almost surely a typo (or the wrong unit)."""
 
 
 def _unit(unit: str) -> str:
     return f" {unit}" if unit else ""
 
 
+def shown(value) -> str:
+    """``value`` as a message quotes it: a number plainly (0.325, not np.float64(0.325))."""
+    if isinstance(value, bool | np.bool_):
+        return repr(bool(value))
+    if isinstance(value, numbers.Integral):
+        return str(int(value))
+    if isinstance(value, numbers.Real):
+        x = float(value)
+        return str(int(x)) if x.is_integer() and abs(x) < 1e15 else repr(x)
+    return repr(value)
+
+
 def finite(name: str, value, unit: str = "") -> float:
     """Return ``value`` as a float; raise ``ValueError`` if it is not a finite real number."""
+    if isinstance(value, bool | np.bool_ | str):
+        raise ValueError(f"{name} must be a finite number{_unit(unit)}, got {shown(value)}")
     try:
         x = float(value)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name} must be a finite number{_unit(unit)}, got {value!r}") from None
+    except (TypeError, ValueError, OverflowError):
+        raise ValueError(
+            f"{name} must be a finite number{_unit(unit)}, got {shown(value)}"
+        ) from None
     if not math.isfinite(x):
-        raise ValueError(f"{name} must be a finite number{_unit(unit)}, got {value!r}")
+        raise ValueError(f"{name} must be a finite number{_unit(unit)}, got {shown(value)}")
     return x
 
 
@@ -32,7 +54,7 @@ def positive(name: str, value, unit: str = "") -> float:
     """Return ``value`` as a float; raise ``ValueError`` unless it is finite and > 0."""
     x = finite(name, value, unit)
     if x <= 0.0:
-        raise ValueError(f"{name} must be > 0{_unit(unit)}, got {value!r}")
+        raise ValueError(f"{name} must be > 0{_unit(unit)}, got {shown(value)}")
     return x
 
 
@@ -40,25 +62,39 @@ def non_negative(name: str, value, unit: str = "") -> float:
     """Return ``value`` as a float; raise ``ValueError`` unless it is finite and >= 0."""
     x = finite(name, value, unit)
     if x < 0.0:
-        raise ValueError(f"{name} must be >= 0{_unit(unit)}, got {value!r}")
+        raise ValueError(f"{name} must be >= 0{_unit(unit)}, got {shown(value)}")
     return x
 
 
-def in_range(name: str, value, low: float, high: float, unit: str = "") -> float:
-    """Return ``value`` as a float; raise ``ValueError`` unless ``low <= value <= high``."""
+def in_range(name: str, value, low: float, high: float, unit: str = "", hint: str = "") -> float:
+    """Return ``value`` as a float; raise ``ValueError`` unless ``low <= value <= high``
+    (``hint`` is appended to the message, e.g. a likely cause)."""
     x = finite(name, value, unit)
     if not low <= x <= high:
-        raise ValueError(f"{name} must be in [{low:g}, {high:g}]{_unit(unit)}, got {value!r}")
+        raise ValueError(
+            f"{name} must be in [{low:g}, {high:g}]{_unit(unit)}, got {shown(value)}{hint}"
+        )
     return x
+
+
+def speed(name: str, value, allow_zero: bool = False) -> float:
+    """A speed [m/s] in :data:`SPEED_RANGE` (or 0 if ``allow_zero``), as a float."""
+    x = finite(name, value, "m/s")
+    if allow_zero and x == 0.0:
+        return x
+    return in_range(name, x, *SPEED_RANGE, "m/s" + (" (or 0)" if allow_zero else ""))
 
 
 def finite_array(name: str, values, unit: str = "") -> np.ndarray:
     """Return ``values`` as a float array; raise ``ValueError`` on NaN, inf or non-numbers."""
     try:
         a = np.asarray(values, dtype=float)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name} must be finite numbers{_unit(unit)}, got {values!r}") from None
+    except (TypeError, ValueError, OverflowError):
+        raise ValueError(
+            f"{name} must be finite numbers{_unit(unit)}, got {shown(values)}"
+        ) from None
     if not np.all(np.isfinite(a)):
-        bad = a[~np.isfinite(a)].ravel()[0]
-        raise ValueError(f"{name} must be finite numbers{_unit(unit)}, got {bad!r}")
+        index = np.flatnonzero(~np.isfinite(a))[0]
+        bad = np.asarray(values, dtype=object).ravel()[index]
+        raise ValueError(f"{name} must be finite numbers{_unit(unit)}, got {shown(bad)}")
     return a

@@ -8,7 +8,7 @@ well-known rackets) and the modelled flex test (:func:`flex_test_stiffness`).
 
 from racket.catalog import CATALOG
 from racket.flex import flex_test_stiffness
-from racket.presets import TENNIS_BALL_MASS, paper_racket, tennis_ball
+from racket.presets import TENNIS_BALL_MASS, TENNIS_BALL_RADIUS, paper_racket, tennis_ball
 from racket.racket import SUPPORTS, Hand, Racket, StringBed
 from racket.solver import Impact, impact
 from racket.specs import from_specs, string_bed_stiffness
@@ -17,6 +17,7 @@ __all__ = [
     "CATALOG",
     "SUPPORTS",
     "TENNIS_BALL_MASS",
+    "TENNIS_BALL_RADIUS",
     "Hand",
     "Impact",
     "Racket",

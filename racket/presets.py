@@ -17,6 +17,10 @@ from racket.racket import Racket, StringBed
 TENNIS_BALL_MASS = 0.057
 """Mass of a tennis ball [kg] (ITF rules: 56.0-59.4 g)."""
 
+TENNIS_BALL_RADIUS = 0.0335
+"""Radius of a tennis ball [m] (ITF Rules of Tennis, Appendix I: diameter 6.54-6.86 cm for
+the type 2 ball; the middle of that range)."""
+
 
 def paper_racket(support: str = "free") -> Racket:
     """The paper's racket (see the module docstring)."""
@@ -28,5 +32,5 @@ def paper_racket(support: str = "free") -> Racket:
 
 
 def tennis_ball() -> Ball:
-    """The paper's tennis ball: 57 g, LinearHysteresis(k=4e4 N/m, e=0.75)."""
-    return Ball(TENNIS_BALL_MASS, LinearHysteresis(k=4e4, e=0.75))
+    """The paper's tennis ball: 57 g, LinearHysteresis(k=4e4 N/m, e=0.75), radius 33.5 mm."""
+    return Ball(TENNIS_BALL_MASS, LinearHysteresis(k=4e4, e=0.75), TENNIS_BALL_RADIUS)

@@ -7,7 +7,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from beam import Beam
-from common.checks import finite_array, non_negative, positive
+from common.checks import finite_array, non_negative, positive, shown
 
 SUPPORTS = ("free", "clamped-head", "hand-held")
 
@@ -131,13 +131,22 @@ class Racket:
         return replace(self, beam=self.beam.with_point_masses((position_m, mass_kg)))
 
     def check_positions(self, position) -> np.ndarray:
-        """Impact positions [m from the tip] as an array; ValueError if any is off the strings."""
-        x = np.atleast_1d(finite_array("position", position, "m from the tip")).astype(float)
+        """Impact positions [m from the tip] as a 1-D array; ValueError if there are none,
+        if they are not a number or a flat sequence, or if any is off the strings."""
+        x = finite_array("position", position, "m from the tip")
+        if x.ndim > 1:
+            raise ValueError(
+                f"position must be a number or a flat sequence of numbers [m from the tip], "
+                f"got an array of shape {x.shape}"
+            )
+        x = np.atleast_1d(x)
+        if x.size == 0:
+            raise ValueError("position must give at least one impact point, got none")
         start, end = self.strings.extent
         off = (x < start) | (x > end)
         if np.any(off):
             raise ValueError(
                 f"position must be on the strings, in [{start:g}, {end:g}] m from "
-                f"the tip, got {x[off][0]!r}"
+                f"the tip, got {shown(x[off][0])}"
             )
         return x

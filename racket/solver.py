@@ -37,8 +37,16 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ball import Ball, LinearHysteresis, LinearSpring, PowerLawHysteresis, SineLaw
-from common.checks import finite, non_negative, positive
+from ball import (
+    Ball,
+    LinearHysteresis,
+    LinearSpring,
+    PowerLawHysteresis,
+    SineLaw,
+    warn_if_squashed,
+)
+from common.checks import finite, in_range, shown
+from common.checks import speed as check_speed
 from racket import kernel
 from racket.racket import Racket
 from racket.system import block_steps, racket_system
@@ -50,6 +58,20 @@ FORCE_TOL = 1e-9
 """An unhappy-ball contact that approaches a common speed asymptotically is over when its
 force has fallen to this fraction of its peak and the relative speed to this fraction of the
 closing speed (so e comes out within 1e-9 of its limit, 0, rather than slightly negative)."""
+
+PIVOT_BEYOND_BUTT = 1.0
+"""Farthest swing pivot beyond the butt [m]: a straight arm swung from the shoulder (an
+arm is about 0.7 m long)."""
+
+F1_MIN = 20.0
+"""Lowest first bending frequency [Hz] of a frame that the impact solver accepts (at 10 Hz
+the paper racket's contact no longer ends within its step budget)."""
+
+CONTACT_TIME_MAX = 0.02
+"""Longest contact [s] (ball and strings in series on an immovable frame) the solver
+accepts; a tennis ball's lasts 4-5 ms (paper Sec. III).  Above about 40 ms (a ball softer
+than about 300 N/m) the frame's vibration over such a long contact is no longer resolved
+at the default step and an elastic ball can come out with e = 1.000004."""
 
 CROSS_TOL = 1e-10
 """An unhappy ball crosses its fold when the contact relaxes within this fraction of Xo of
@@ -219,17 +241,19 @@ def impact(
     position : float or array_like
         Impact point(s) [m from the tip], on the strings; an array runs all impacts together.
     speed : float
-        Ball speed towards the strings [m/s], >= 0 (> 0 unless the racket is swung).
+        Ball speed towards the strings [m/s], 0 or in [0.001, 300] (> 0 unless the racket
+        is swung).
     swing_speed : float
         Speed [m/s] of the impact point towards the ball from the racket's rigid-body
-        motion (a swing); 0 for a racket at rest.
+        motion (a swing), 0 or in [0.001, 300]; 0 for a racket at rest.
     pivot : float, optional
         The swing's instantaneous centre of rotation [m from the tip], beyond every impact
-        point (e.g. near the butt, 0.6 m); None for pure translation.
+        point and at most 1 m beyond the butt (e.g. the wrist, 5 cm beyond it); None for
+        pure translation.
     steps_per_contact : int
-        Time steps per estimated contact time (>= 50).
+        Time steps per estimated contact time, in [50, 100000].
     watch_after : float
-        Extra time [s] to keep stepping after the solver has decided that the ball has
+        Extra time [s], in [0, 1], to keep stepping after the solver has decided that the ball has
         left for good, watching for another contact; the outcome does not depend on it
         unless that decision was wrong.
     histories : bool
@@ -239,6 +263,13 @@ def impact(
     Returns
     -------
     Impact
+
+    Raises
+    ------
+    ValueError
+        For an input out of its range, a frame whose first bending mode is below
+        ``F1_MIN`` (20 Hz), or a ball and strings so soft that the contact would last more
+        than ``CONTACT_TIME_MAX`` (20 ms).
     """
     if not isinstance(racket, Racket):
         raise ValueError(f"racket must be a Racket, got {racket!r}")
@@ -246,27 +277,41 @@ def impact(
         raise ValueError(f"ball must be a Ball, got {ball!r}")
     scalar = np.ndim(position) == 0
     x = racket.check_positions(position)
-    speed = non_negative("speed", speed, "m/s")
-    swing_speed = non_negative("swing_speed", swing_speed, "m/s")
+    speed = check_speed("speed", speed, allow_zero=True)
+    swing_speed = check_speed("swing_speed", swing_speed, allow_zero=True)
     if speed == 0.0 and swing_speed == 0.0:
         raise ValueError("speed must be > 0 m/s (or the racket swung, swing_speed > 0), got 0")
     if pivot is not None:
         pivot = finite("pivot", pivot, "m from the tip")
-        if pivot <= x.max():
+        reach = racket.beam.length + PIVOT_BEYOND_BUTT
+        if not x.max() < pivot <= reach:
             raise ValueError(
-                f"pivot must lie beyond the impact points (> {x.max():g} m from "
-                f"the tip), got {pivot!r}"
+                f"pivot must lie beyond the impact points and at most {PIVOT_BEYOND_BUTT:g} m "
+                f"beyond the butt, in ({x.max():g}, {reach:g}] m from the tip, got {shown(pivot)}"
             )
-    steps_per_contact = int(positive("steps_per_contact", steps_per_contact))
-    if steps_per_contact < 50:
-        raise ValueError(f"steps_per_contact must be >= 50, got {steps_per_contact}")
-
+    steps_per_contact = in_range("steps_per_contact", steps_per_contact, 50, 100_000)
+    steps_per_contact = int(steps_per_contact)
+    watch_after = in_range("watch_after", watch_after, 0.0, 1.0, "s")
     if swing_speed and racket.support != "free":
         raise ValueError(
             f"swing_speed must be 0 for a {racket.support} racket (the hand or clamp is at "
             "rest); swing a free racket, as the paper does"
         )
-    watch_after = non_negative("watch_after", watch_after, "s")
+    f1 = racket.beam.modes.frequencies[0] if racket.beam.modes.count > 2 else np.inf
+    if f1 < F1_MIN:
+        raise ValueError(
+            f"the frame's first bending frequency must be >= {F1_MIN:g} Hz for an impact, "
+            f"got {f1:.4g} Hz"
+        )
+    contact = contact_time_scale(ball, racket.strings.stiffness, speed + swing_speed)
+    if contact > CONTACT_TIME_MAX:
+        raise ValueError(
+            f"the ball and strings are too soft: their contact would last about "
+            f"{1e3 * contact:.3g} ms, and racket-impact resolves contacts up to "
+            f"{1e3 * CONTACT_TIME_MAX:g} ms (ball stiffness "
+            f"{ball.law.secant_stiffness(ball.mass, speed + swing_speed):.3g} N/m, strings "
+            f"{racket.strings.stiffness:.3g} N/m)"
+        )
     stepper = _Stepper(racket, ball, x, speed, swing_speed, pivot, steps_per_contact)
     code = stepper.code
     x_o = np.full(x.size, np.nan)
@@ -314,6 +359,8 @@ def impact(
     else:
         ball_loss = ball.law.dissipated(summary[:, kernel.F_PEAK])
         self_consistent = np.ones(x.size, dtype=bool)
+    peak = summary[:, kernel.F_PEAK]
+    warn_if_squashed(ball, x_o if code == kernel.SINE else ball.law.compression(peak, peak))
     damping_loss = summary[:, kernel.DAMPING_LOSS]
     residual = energy_initial - (ball_energy + racket_energy + vibration + ball_loss + damping_loss)
 

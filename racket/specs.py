@@ -42,7 +42,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from beam import SWINGWEIGHT_AXIS, Beam
-from common.checks import finite, positive
+from common.checks import finite, in_range, positive, shown
 from common.units import IN2, LB, POINT
 from racket.flex import RA_UNCALIBRATED
 from racket.racket import Racket, StringBed
@@ -293,11 +293,46 @@ def _one(kind: str, **given):
     return next(iter(named.items()))
 
 
+SPEC_RANGES = {
+    "length_m": (0.45, 0.75, "m"),
+    "mass_kg": (0.15, 0.5, "kg"),
+    "balance_cm": (20.0, 50.0, "cm from the butt"),
+    "balance_pts_hl": (-24.0, 24.0, "pts head-light"),
+    "swingweight_kgcm2": (100.0, 500.0, "kg cm^2"),
+    "f1_hz": (60.0, 400.0, "Hz"),
+    "ra": (40.0, 90.0, ""),
+    "head_size_in2": (60.0, 140.0, "in^2"),
+    "head_size_cm2": (387.0, 903.0, "cm^2"),  # 60-140 in^2
+    "tension_lb": (20.0, 80.0, "lb"),
+    "tension_n": (89.0, 356.0, "N"),  # 20-80 lb
+    "string_stiffness_n_m": (5e3, 2e5, "N/m"),
+}
+"""The range of each spec-sheet input, in its own unit, checked before the fit.  Generous
+around real rackets: the ITF allows at most 73.7 cm (29 in) of length and a strung surface
+of 39.4 x 29.2 cm (an ellipse of 140 in^2) (ITF Rules of Tennis, Appendix II); junior
+rackets start at 19 in (48 cm); strung adult rackets weigh 230-370 g, balance 30-36 cm, and
+swing 280-360 kg cm^2 (retailers' spec sheets, e.g. ../shared/data/racket_specs_sample.csv);
+frames ring at 100-200 Hz (Taraborrelli et al., Appl. Sci. 2019); strings are strung at
+40-65 lb.  The rest (f1 60-400 Hz, string-bed 5e3-2e5 N/m) is this project's assumption."""
+
+
+def _check_spec(name: str, value) -> float:
+    """A spec-sheet value in its range (:data:`SPEC_RANGES`), with a hint at a likely slip
+    of unit (grams typed as kg, cm as m)."""
+    low, high, unit = SPEC_RANGES[name]
+    x = finite(name, value, unit)
+    hint = ""
+    for factor, slip in ((1e-3, "grams typed as kg?"), (1e-2, "cm typed as m?")):
+        if not low <= x <= high and low <= x * factor <= high and name in ("mass_kg", "length_m"):
+            hint = f" ({slip} {shown(value)} would be {x * factor:g} {unit})"
+    return in_range(name, value, low, high, unit, hint)
+
+
 def spec_sheet(
     *,
     length_m: float = 0.6858,
-    mass_kg: float,
-    swingweight_kgcm2: float,
+    mass_kg: float | None = None,
+    swingweight_kgcm2: float | None = None,
     balance_cm: float | None = None,
     balance_pts_hl: float | None = None,
     f1_hz: float | None = None,
@@ -308,7 +343,14 @@ def spec_sheet(
     tension_n: float | None = None,
     string_stiffness_n_m: float | None = None,
 ) -> SpecSheet:
-    """A :class:`SpecSheet` from the units of spec sheets (see :func:`from_specs`)."""
+    """A :class:`SpecSheet` from the units of spec sheets (see :func:`from_specs`); every
+    value is first checked against its range (:data:`SPEC_RANGES`)."""
+    given = {k: v for k, v in locals().items() if v is not None}
+    for required in ("mass_kg", "swingweight_kgcm2"):
+        if required not in given:
+            raise ValueError(f"the spec sheet needs {required}")
+    for name, value in given.items():
+        _check_spec(name, value)
     length = positive("length_m", length_m, "m")
     name, value = _one("balance", balance_cm=balance_cm, balance_pts_hl=balance_pts_hl)
     if name == "balance_cm":

@@ -10,13 +10,17 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import sys
+import warnings
 from pathlib import Path
 
 import numpy as np
 import pandas as pd
 
 from ball import WALL, collide
+from beam.beam import MAX_MODES
+from common.checks import SPEED_RANGE, in_range, shown
 from common.units import MPH
 from racket import SUPPORTS
 from studies.config import BALLS, RACKETS, load_ball, load_racket, racket_specs
@@ -26,9 +30,59 @@ TABLE_FORMATS = (".csv", ".json", ".parquet")
 PLOT_FORMATS = (".png", ".svg", ".pdf")
 
 
+class _Once(argparse.Action):
+    """Store a single-valued option, refusing it twice (the last would silently win)."""
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        if getattr(namespace, f"_seen_{self.dest}", False):
+            parser.error(f"{option_string} given twice; give it once")
+        setattr(namespace, f"_seen_{self.dest}", True)
+        setattr(namespace, self.dest, values)
+
+
 class _Parser(argparse.ArgumentParser):
     def error(self, message):  # one line, status 2, no usage dump
         self.exit(2, f"{self.prog}: error: {message}\n")
+
+    def add_argument(self, *args, **kwargs):
+        if args and args[0].startswith("--") and "action" not in kwargs:
+            kwargs["action"] = _Once
+        return super().add_argument(*args, **kwargs)
+
+
+def check_outputs(tables=(), plots=(), directories=()) -> None:
+    """Check every output path before any work: a known extension, an existing, writable
+    directory, and no file named twice.  ValueError naming the path otherwise."""
+    seen = {}
+    for paths, kinds, what in ((tables, TABLE_FORMATS, "table"), (plots, PLOT_FORMATS, "plot")):
+        for flag, path in paths:
+            if path is None:
+                continue
+            if Path(path).suffix.lower() not in kinds:
+                raise ValueError(
+                    f"{flag} must be a {what} file ending in {', '.join(kinds)}, got {path!r}"
+                )
+            _check_directory(flag, Path(path).parent, path)
+            key = Path(path).resolve()
+            if key in seen:
+                raise ValueError(f"{flag} and {seen[key]} name the same file {path!r}")
+            seen[key] = flag
+    for flag, path in directories:
+        if not str(path).strip():
+            raise ValueError(f"{flag} must name a directory, got {str(path)!r}")
+        target = Path(path)
+        if target.exists() and not target.is_dir():
+            raise ValueError(f"{flag} must be a directory, got the file {str(path)!r}")
+        existing = next((p for p in [target, *target.parents] if p.exists()), Path("."))
+        _check_directory(flag, existing, path)
+
+
+def _check_directory(flag: str, directory: Path, path) -> None:
+    directory = directory if str(directory) else Path(".")
+    if not directory.is_dir():
+        raise ValueError(f"{flag}: directory {str(directory)!r} of {str(path)!r} does not exist")
+    if not os.access(directory, os.W_OK):
+        raise ValueError(f"{flag}: directory {str(directory)!r} of {str(path)!r} is not writable")
 
 
 def write_table(table: pd.DataFrame, path: str) -> None:
@@ -62,9 +116,29 @@ def save_plot(axes, path: str) -> None:
     plt.close(fig)
 
 
-def _speed(args, name: str) -> float:
+def _speed(args, name: str, allow_zero: bool = False, signed: bool = False):
+    """The speed option ``--NAME`` [m/s] or ``--NAME-mph`` [mph] in m/s (a list for a
+    many-valued option), each value checked in the unit it was typed in."""
     mph = getattr(args, f"{name}_mph")
-    return mph * MPH if mph is not None else getattr(args, name)
+    values, unit, scale = (
+        (mph, "mph", MPH) if mph is not None else (getattr(args, name), "m/s", 1.0)
+    )
+    flag = f"--{name.replace('_', '-')}" + ("-mph" if mph is not None else "")
+    low, high = (v / scale for v in SPEED_RANGE)
+    checked = []
+    for value in np.atleast_1d(values):
+        if signed:
+            checked.append(in_range(flag, value, -high, high, unit) * scale)
+        elif allow_zero and value == 0.0:
+            checked.append(0.0)
+        else:
+            checked.append(in_range(flag, value, low, high, unit) * scale)
+    return checked if isinstance(values, list) else checked[0]
+
+
+def _count(flag: str, value: int, low: int, high: int) -> int:
+    """A whole-number option in [low, high]."""
+    return int(in_range(flag, value, low, high))
 
 
 def _print_table(table: pd.DataFrame, floatfmt: str = "{:.4g}") -> None:
@@ -76,6 +150,11 @@ def _print_table(table: pd.DataFrame, floatfmt: str = "{:.4g}") -> None:
 def cmd_paper(args) -> int:
     from studies.paper import paper_table
 
+    check_outputs(directories=[("--out", args.out)])
+    if args.json is not None:
+        if Path(args.json).suffix.lower() != ".json":
+            raise ValueError(f"--json must be a file ending in .json, got {args.json!r}")
+        _check_directory("--json", Path(args.json).parent, args.json)
     table = paper_table()
     _print_table(table[["claim", "paper", "simulated", "tolerance", "ok"]])
     ok = bool(table["ok"].all())
@@ -138,20 +217,26 @@ def write_paper_figures(out: Path) -> list[Path]:
 
 
 def cmd_sweep(args) -> int:
-    from racket import impact
-    from studies.sweeps import sweep
+    from studies.sweeps import COLUMNS, sweep
 
+    check_outputs(
+        tables=[("--out", args.out), ("--csv", args.csv), ("--json", args.json)],
+        plots=[("--plot", args.plot)],
+    )
+    for flag, path, kind in (("--csv", args.csv, ".csv"), ("--json", args.json, ".json")):
+        if path is not None and Path(path).suffix.lower() != kind:
+            raise ValueError(f"{flag} must be a file ending in {kind}, got {path!r}")
+    points = _count("--points", args.points, 2, 100_000)
+    speeds = _speed(args, "speed")
     racket, ball = load_racket(args.racket), load_ball(args.ball)
-    start = racket.strings.extent[0] if args.from_ is None else args.from_
-    end = racket.strings.extent[1] if args.to is None else args.to
-    if args.points < 2:
-        raise ValueError(f"points must be >= 2, got {args.points}")
-    positions = np.linspace(start, end, args.points)
-    speeds = [s * MPH for s in args.speed_mph] if args.speed_mph else args.speed
+    ends = list(racket.strings.extent)
+    for k, (flag, value) in enumerate((("--from", args.from_), ("--to", args.to))):
+        if value is not None:
+            ends[k] = in_range(flag, value, *racket.strings.extent, "m from the tip (the strings)")
     table = sweep(
         racket,
         ball,
-        positions,
+        np.linspace(*ends, points),
         speeds,
         string_stiffness=args.string_stiffness,
         f1=args.f1,
@@ -167,7 +252,7 @@ def cmd_sweep(args) -> int:
                 "ball_rebound_m_s",
                 "vibration_energy_fraction",
             ]
-            + [c for c in table.columns[11:]]
+            + [c for c in table.columns[len(COLUMNS) :]]
         ].iloc[:: max(1, len(table) // 25)]
     )
     best = table.loc[table["e"].idxmax()]
@@ -180,16 +265,20 @@ def cmd_sweep(args) -> int:
     if args.plot:
         from studies.plots import plot_cor_along_racket
 
-        single = impact(racket, ball, positions, speeds[0])
-        save_plot(plot_cor_along_racket(single, racket), args.plot)
+        save_plot(plot_cor_along_racket(table, racket), args.plot)
     return 0
 
 
 def cmd_serve(args) -> int:
     from studies.serve import serve_table, serve_what_if
 
-    racket, ball = load_racket(args.racket), load_ball(args.ball)
+    check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
+    if args.plot and not args.what_if:
+        raise ValueError("--plot needs --what-if for serve")
     speed = _speed(args, "racket_speed")
+    racket, ball = load_racket(args.racket), load_ball(args.ball)
+    if args.position is not None:
+        in_range("--position", args.position, *racket.strings.extent, "m from the tip")
     table = serve_table(racket, ball, args.position, speed, args.pivot)
     print(f"racket (impact point) speed v2 = {speed:.2f} m/s ({speed / MPH:.1f} mph)")
     _print_table(table)
@@ -204,17 +293,30 @@ def cmd_serve(args) -> int:
             from studies.plots import plot_serve_what_if
 
             save_plot(plot_serve_what_if(what_if), args.plot)
-    elif args.plot:
-        raise ValueError("--plot needs --what-if for serve")
     if args.out:
         write_table(table.reset_index(), args.out)
     return 0
 
 
 def cmd_collide(args) -> int:
+    check_outputs(
+        tables=[("--out", args.out), ("--history", args.history)], plots=[("--plot", args.plot)]
+    )
+    v_a, v_b = _speed(args, "va", signed=True), _speed(args, "vb", signed=True)
+    if v_a - v_b < SPEED_RANGE[0]:
+        typed = [
+            f"--{n}-mph {shown(getattr(args, n + '_mph'))} mph"
+            if getattr(args, n + "_mph") is not None
+            else f"--{n} {shown(getattr(args, n))} m/s"
+            for n in ("va", "vb")
+        ]
+        raise ValueError(
+            f"--va must exceed --vb by at least {SPEED_RANGE[0]:g} m/s (the balls must "
+            f"approach), got {typed[0]} and {typed[1]}"
+        )
     a = load_ball(args.a)
     b = WALL if args.b == "wall" else load_ball(args.b)
-    r = collide(a, b, _speed(args, "va"), _speed(args, "vb"))
+    r = collide(a, b, v_a, v_b)
     rows = {
         "v_a_after_m_s": r.v_a_after,
         "v_b_after_m_s": r.v_b_after,
@@ -243,6 +345,8 @@ def cmd_collide(args) -> int:
 def cmd_modes(args) -> int:
     from studies.plots import HAND_FROM_BUTT, center_of_percussion
 
+    check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
+    count = _count("--count", args.count, 1, MAX_MODES)
     racket = load_racket(args.racket)
     beam, modes = racket.beam, racket.beam.modes
     hand = beam.length - HAND_FROM_BUTT
@@ -261,7 +365,7 @@ def cmd_modes(args) -> int:
         f"{beam.effective_mass(centre):.4f} kg"
     )
     rows = []
-    for k in range(1, min(args.count, modes.count - 2) + 1):
+    for k in range(1, min(count, modes.count - 2) + 1):
         nodes = ", ".join(f"{100 * n:.1f}" for n in modes.nodes(k))
         rows.append(
             {"mode": k, "frequency_Hz": modes.frequencies[k - 1], "nodes_cm_from_tip": nodes}
@@ -274,16 +378,18 @@ def cmd_modes(args) -> int:
     if args.plot:
         from studies.plots import plot_modes
 
-        save_plot(plot_modes(racket, count=args.count), args.plot)
+        save_plot(plot_modes(racket, count=count), args.plot)
     return 0
 
 
 def cmd_specs(args) -> int:
     from studies.report import spec_report
 
+    check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
+    count = _count("--count", args.count, 1, MAX_MODES)
     racket = load_racket(args.racket)
     specs, sources = racket_specs(args.racket)
-    report = spec_report(racket, specs, count=args.count)
+    report = spec_report(racket, specs, count=count)
     if specs is not None:
         print("spec sheet and fitted model (f1 given on the spec sheet, not inferred from RA):")
         _print_table(report.fit, "{:.5g}")
@@ -307,22 +413,26 @@ def cmd_specs(args) -> int:
     if args.plot:
         from studies.plots import plot_modes
 
-        save_plot(plot_modes(racket, count=args.count), args.plot)
+        save_plot(plot_modes(racket, count=count), args.plot)
     return 0
 
 
 def cmd_compare(args) -> int:
     from studies.sweeps import compare
 
+    check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
+    points = _count("--points", args.points, 2, 100_000)
+    speed = _speed(args, "speed")
     names = args.racket or ["paper", "pure-drive-2021"]
     if len(names) < 2:
         raise ValueError(f"compare needs two or more --racket, got {len(names)}")
-    rackets = {Path(n).stem if n.endswith(".toml") else n: load_racket(n) for n in names}
+    labelled = _labels(names)
+    rackets = {label: load_racket(spec) for label, spec in labelled}
     if args.support:
         from dataclasses import replace
 
         rackets = {k: replace(r, support=args.support) for k, r in rackets.items()}
-    table = compare(rackets, load_ball(args.ball), _speed(args, "speed"), args.points)
+    table = compare(rackets, load_ball(args.ball), speed, points)
     rows = []
     for label, group in table.groupby("racket", sort=False):
         best = group.loc[group["e"].idxmax()]
@@ -348,6 +458,28 @@ def cmd_compare(args) -> int:
         groups = {k: g for k, g in table.groupby("racket", sort=False)}
         save_plot(plot_cor_comparison(groups), args.plot)
     return 0
+
+
+def _labels(names: list[str]) -> list[tuple[str, str]]:
+    """(label, preset or file) of each ``--racket``: ``LABEL=SPEC`` as given; otherwise the
+    preset, or the file's name without .toml, or its path where two files share a name."""
+    pairs = []
+    for name in names:
+        label, sep, spec = name.partition("=")
+        pairs.append((label, spec) if sep and label else (None, name))
+    stems = [Path(spec).stem if spec.endswith(".toml") else spec for _, spec in pairs]
+    labelled = [
+        (label or (stem if stems.count(stem) == 1 else spec), spec)
+        for (label, spec), stem in zip(pairs, stems, strict=True)
+    ]
+    seen = [label for label, _ in labelled]
+    for label in seen:
+        if seen.count(label) > 1:
+            raise ValueError(
+                f"--racket {label!r} is given twice; name the rackets apart with "
+                "LABEL=PRESET_OR_TOML"
+            )
+    return labelled
 
 
 # ----- parser -----------------------------------------------------------------------------
@@ -377,6 +509,7 @@ def _speed_option(p, name: str, default, what: str, many: bool = False):
     nargs = "+" if many else None
     group.add_argument(
         f"--{name}",
+        action=_Once,
         type=float,
         nargs=nargs,
         default=default,
@@ -384,12 +517,20 @@ def _speed_option(p, name: str, default, what: str, many: bool = False):
         help=f"{what} [m/s] (default {default if not many else default[0]:g})",
     )
     group.add_argument(
-        f"--{name}-mph", type=float, nargs=nargs, metavar="MPH", help=f"{what} [mph]"
+        f"--{name}-mph",
+        action=_Once,
+        type=float,
+        nargs=nargs,
+        metavar="MPH",
+        help=f"{what} [mph]",
     )
 
 
 def build_parser() -> argparse.ArgumentParser:
     parser = _Parser(prog="racket-impact", description=__doc__.split("\n\n")[0])
+    parser.add_argument(
+        "--debug", action="store_true", help="show the traceback of an error (for reports)"
+    )
     sub = parser.add_subparsers(dest="command", required=True, parser_class=_Parser)
 
     p = sub.add_parser("paper", help="reproduce every number of the paper, write its figures")
@@ -516,7 +657,8 @@ def build_parser() -> argparse.ArgumentParser:
         "--racket",
         action="append",
         metavar="PRESET_OR_TOML",
-        help="a racket (repeat; default: paper and pure-drive-2021)",
+        help="a racket, as PRESET_OR_TOML or LABEL=PRESET_OR_TOML (repeat; default: paper "
+        "and pure-drive-2021)",
     )
     _ball_arg(p)
     _speed_option(p, "speed", 10.0, "ball speed towards the strings")
@@ -529,15 +671,37 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def main(argv=None) -> int:
-    """Run the CLI; returns the exit status (2 for bad input, one line on stderr)."""
-    args = build_parser().parse_args(argv)
-    try:
-        return args.func(args)
-    except (ValueError, OSError) as err:
-        message = err.strerror if isinstance(err, OSError) and err.strerror else str(err)
-        where = f" ({err.filename})" if isinstance(err, OSError) and err.filename else ""
-        print(f"racket-impact {args.command}: error: {message}{where}", file=sys.stderr)
-        return 2
+    """Run the CLI; returns the exit status: 0, 1 if ``paper`` finds a claim out of
+    tolerance or on an internal error, 2 for bad input (one line on stderr each)."""
+    argv = sys.argv[1:] if argv is None else list(argv)
+    debug = "--debug" in argv  # before or after the subcommand
+    args = build_parser().parse_args([a for a in argv if a != "--debug"])
+    args.debug = debug
+    prefix = f"racket-impact {args.command}"
+
+    def one_line(message, category, filename, lineno, file=None, line=None):
+        print(f"{prefix}: warning: {message}", file=sys.stderr)
+
+    with warnings.catch_warnings():
+        warnings.showwarning = one_line
+        try:
+            return args.func(args)
+        except (ValueError, OSError) as err:
+            if args.debug:
+                raise
+            message = err.strerror if isinstance(err, OSError) and err.strerror else str(err)
+            where = f" ({err.filename})" if isinstance(err, OSError) and err.filename else ""
+            print(f"{prefix}: error: {message}{where}", file=sys.stderr)
+            return 2
+        except Exception as err:
+            if args.debug:
+                raise
+            print(
+                f"{prefix}: internal error ({type(err).__name__}: {err}); please report it, "
+                "with the command; --debug shows the traceback",
+                file=sys.stderr,
+            )
+            return 1
 
 
 if __name__ == "__main__":

@@ -51,7 +51,18 @@ from pathlib import Path
 
 from ball import Ball, LinearHysteresis, LinearSpring, PowerLawHysteresis, SineLaw
 from beam import Beam
-from racket import CATALOG, Hand, Racket, StringBed, from_specs, paper_racket, tennis_ball
+from common.checks import in_range, shown
+from racket import (
+    CATALOG,
+    TENNIS_BALL_MASS,
+    TENNIS_BALL_RADIUS,
+    Hand,
+    Racket,
+    StringBed,
+    from_specs,
+    paper_racket,
+    tennis_ball,
+)
 
 if sys.version_info >= (3, 11):
     import tomllib
@@ -61,11 +72,15 @@ else:  # pragma: no cover
 RACKETS = {"paper": paper_racket, **{name: entry.racket for name, entry in CATALOG.items()}}
 """Racket presets by name: the paper's uniform racket and the catalogue (racket.catalog)."""
 
+SMALL_BALL_RADIUS = 0.0125
+"""Radius [m] of the 10.3 g happy and unhappy balls: an assumption (a rubber sphere of
+that mass and a density of about 1.25 g/cm^3 is 2.5 cm across)."""
+
 BALLS = {
     "tennis": tennis_ball,
-    "zero-cor-tennis": lambda: Ball(0.057, SineLaw(k0=4e4)),
-    "happy": lambda: Ball(0.0103, LinearSpring(k=2e4)),
-    "unhappy": lambda: Ball(0.0103, SineLaw(k0=2e4)),
+    "zero-cor-tennis": lambda: Ball(TENNIS_BALL_MASS, SineLaw(k0=4e4), TENNIS_BALL_RADIUS),
+    "happy": lambda: Ball(0.0103, LinearSpring(k=2e4), SMALL_BALL_RADIUS),
+    "unhappy": lambda: Ball(0.0103, SineLaw(k0=2e4), SMALL_BALL_RADIUS),
 }
 """Ball presets by name: the paper's tennis ball, its zero-COR twin (Sec. VIII), and the
 happy and unhappy balls of Secs. IV-VI."""
@@ -114,7 +129,11 @@ _HAND_KEYS = {"stiffness", "damping", "grip_length"}
 _BALL_KEYS = {"preset", "mass", "law", "k", "e", "a", "b", "k0"}
 
 
-def _check_keys(table: dict, allowed: set, where: str) -> None:
+def _check_keys(table, allowed: set, where: str) -> None:
+    if not isinstance(table, dict):
+        raise ValueError(
+            f"[{where}] must be a table of keys ({', '.join(sorted(allowed))}), got {shown(table)}"
+        )
     unknown = sorted(set(table) - allowed)
     if unknown:
         raise ValueError(
@@ -123,7 +142,7 @@ def _check_keys(table: dict, allowed: set, where: str) -> None:
 
 
 def _preset(name: str, presets: dict, kind: str):
-    if name not in presets:
+    if not isinstance(name, str) or name not in presets:
         raise ValueError(f"unknown {kind} preset {name!r}; presets: {', '.join(presets)}")
     return presets[name]()
 
@@ -135,8 +154,18 @@ def read_toml(path: str | Path) -> dict:
             return tomllib.load(f)
     except OSError as err:
         raise ValueError(f"cannot read {path}: {err.strerror}") from None
+    except UnicodeDecodeError:
+        raise ValueError(f"{path} is not valid TOML: it is not UTF-8 text") from None
     except tomllib.TOMLDecodeError as err:
         raise ValueError(f"{path} is not valid TOML: {err}") from None
+
+
+def _list(table: dict, key: str, where: str) -> list:
+    """``table[key]`` as a list (empty if absent); ValueError if it is not a TOML array."""
+    value = table.get(key, [])
+    if not isinstance(value, list):
+        raise ValueError(f"{key} in [{where}] must be an array, got {shown(value)}")
+    return value
 
 
 def racket_from_table(table: dict) -> Racket:
@@ -185,14 +214,18 @@ def racket_from_table(table: dict) -> Racket:
         )
     else:
         beam = replace(beam, damping=damping, n_modes=n_modes)
-    beam = beam.with_point_masses(*table.get("point_masses", ()))
-    for tape in table.get("lead_tape", ()):
+    beam = beam.with_point_masses(*_list(table, "point_masses", "racket"))
+    for tape in _list(table, "lead_tape", "racket"):
         _check_keys(tape, _LEAD_KEYS, "racket.lead_tape")
         if set(tape) != _LEAD_KEYS:
             raise ValueError("each lead_tape entry needs mass_g and from_butt_cm")
-        beam = beam.with_point_masses(
-            (beam.length - tape["from_butt_cm"] / 100.0, tape["mass_g"] / 1000.0)
+        mass_g = in_range("lead_tape mass_g", tape["mass_g"], 0.0, 200.0, "g")
+        if mass_g == 0.0:
+            raise ValueError("lead_tape mass_g must be > 0 g, got 0")
+        from_butt = in_range(
+            "lead_tape from_butt_cm", tape["from_butt_cm"], 0.0, 100 * beam.length, "cm"
         )
+        beam = beam.with_point_masses((beam.length - from_butt / 100.0, mass_g / 1000.0))
     strings_table = table.get("strings", {})
     _check_keys(strings_table, _STRING_KEYS, "racket.strings")
     strings = StringBed(
@@ -214,8 +247,8 @@ def ball_from_table(table: dict) -> Ball:
         return _preset(table["preset"], BALLS, "ball")
     if "law" not in table or "mass" not in table:
         raise ValueError("[ball] needs a preset, or mass and law")
-    if table["law"] not in LAWS:
-        raise ValueError(f"unknown law {table['law']!r}; laws: {', '.join(LAWS)}")
+    if not isinstance(table["law"], str) or table["law"] not in LAWS:
+        raise ValueError(f"unknown law {shown(table['law'])}; laws: {', '.join(LAWS)}")
     cls, params = LAWS[table["law"]]
     given = set(table) - {"mass", "law"}
     if cls is PowerLawHysteresis and given == {"k", "a", "e"}:
@@ -241,7 +274,10 @@ def _load(spec: str, presets: dict, kind: str, from_table):
     data = read_toml(spec)
     if kind not in data:
         raise ValueError(f"{spec} has no [{kind}] table")
-    return from_table(data[kind])
+    try:
+        return from_table(data[kind])
+    except TypeError as err:  # a value of the wrong type deep in a constructor
+        raise ValueError(f"{spec}: a value in [{kind}] has the wrong type ({err})") from None
 
 
 def load_racket(spec: str) -> Racket:

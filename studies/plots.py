@@ -12,6 +12,7 @@ from matplotlib.patches import Ellipse, Rectangle
 
 from ball import Ball, LinearSpring, SineLaw, collide, unhappy_cor
 from racket import Racket
+from studies.sweeps import PARAMETERS
 
 HAND_FROM_BUTT = 0.07
 """Where the hand holds the racket, for the centre of percussion [m from the butt]."""
@@ -37,15 +38,36 @@ def center_of_percussion(racket: Racket, pivot: float) -> float:
     return pivot - (beam.inertia_cm + beam.mass * d**2) / (beam.mass * d)
 
 
-def _columns(result):
-    """position, e, e_A arrays from an Impact or a sweep DataFrame."""
+def _curves(result):
+    """(label, position, e, e_A, not self-consistent) per grid point of a sweep table (its
+    parameter columns, :data:`studies.sweeps.PARAMETERS`), or the one of an Impact; each
+    sorted along the racket."""
     if hasattr(result, "columns"):
-        return (
-            result["position_from_tip_m"].to_numpy(),
-            result["e"].to_numpy(),
-            result["e_A"].to_numpy(),
-        )
-    return np.atleast_1d(result.position), np.atleast_1d(result.e), np.atleast_1d(result.e_A)
+        keys = [c for c in PARAMETERS.values() if c in result.columns]
+        groups = result.groupby(keys, sort=False) if keys else [((), result)]
+        for key, g in groups:
+            values = key if isinstance(key, tuple) else (key,)
+            label = ", ".join(
+                f"{k} {v:g}" if isinstance(v, float) else f"{k} {v}"
+                for k, v in zip(keys, values, strict=True)
+            )
+            flagged = ~g["self_consistent"].to_numpy(bool) if "self_consistent" in g else None
+            yield _sorted(label, g["position_from_tip_m"], g["e"], g["e_A"], flagged)
+        return
+    yield _sorted(
+        "",
+        np.atleast_1d(result.position),
+        np.atleast_1d(result.e),
+        np.atleast_1d(result.e_A),
+        ~np.atleast_1d(result.self_consistent),
+    )
+
+
+def _sorted(label, x, e, e_a, flagged):
+    x, e, e_a = (np.asarray(v, dtype=float) for v in (x, e, e_a))
+    flagged = np.zeros(x.size, bool) if flagged is None else np.asarray(flagged, bool)
+    order = np.argsort(x)
+    return label, x[order], e[order], e_a[order], flagged[order]
 
 
 def draw_racket(racket: Racket, ax, y0: float, height: float):
@@ -89,7 +111,9 @@ def plot_cor_along_racket(result, racket: Racket, ax=None, pivot: float | None =
     """e and e_A along the racket, with the racket drawn to scale below the curves.
 
     Marks the mode-1 node, the centre of percussion for a pivot at the hand (default
-    :data:`HAND_FROM_BUTT` from the butt), and the points of largest e and largest e_A.
+    :data:`HAND_FROM_BUTT` from the butt), the points of largest e and largest e_A, and
+    (with a cross) the unhappy-ball impacts that have no self-consistent Xo.  A sweep table
+    over a grid draws one pair of curves per grid point, labelled with its parameters.
 
     Parameters
     ----------
@@ -99,24 +123,57 @@ def plot_cor_along_racket(result, racket: Racket, ax=None, pivot: float | None =
         The racket the result is for.
     """
     ax = _axes(ax, 1)
-    x, e, e_a = _columns(result)
-    order = np.argsort(x)
-    x, e, e_a = x[order], e[order], e_a[order]
-    cm = 100 * x
-    ax.plot(cm, e, color="C0", lw=2, label="e (Eq. 21, rigid-body motion)")
-    ax.plot(cm, e_a, color="C1", lw=2, label="e_A = V1/v1 (apparent)")
-    i, j = int(np.argmax(e)), int(np.argmax(e_a))
-    ax.plot(cm[i], e[i], "o", color="C0", ms=8, label=f"largest e {e[i]:.3f} at {cm[i]:.1f} cm")
-    ax.plot(
-        cm[j], e_a[j], "s", color="C1", ms=8, label=f"largest e_A {e_a[j]:.3f} at {cm[j]:.1f} cm"
-    )
+    curves = list(_curves(result))
+    single = len(curves) == 1
+    lows, tops = [0.0], [1.0]
+    for k, (label, x, e, e_a, flagged) in enumerate(curves):
+        cm = 100 * x
+        tag = f" ({label})" if label else ""
+        ax.plot(
+            cm,
+            e,
+            color=f"C{k}" if not single else "C0",
+            lw=2,
+            label=f"e{tag}" if not single else "e (Eq. 21, rigid-body motion)",
+        )
+        ax.plot(
+            cm,
+            e_a,
+            color=f"C{k}" if not single else "C1",
+            lw=1.5 if not single else 2,
+            ls="--" if not single else "-",
+            label=f"e_A{tag}" if not single else "e_A = V1/v1 (apparent)",
+        )
+        if np.any(flagged):
+            ax.plot(
+                cm[flagged],
+                e[flagged],
+                "x",
+                color="k",
+                ms=7,
+                label="no self-consistent Xo" if k == 0 or single else "_",
+            )
+        lows.append(np.nanmin(e_a))
+        tops.append(np.nanmax(e))
+    if single:
+        _, x, e, e_a, _ = curves[0]
+        cm = 100 * x
+        i, j = int(np.argmax(e)), int(np.argmax(e_a))
+        ax.plot(cm[i], e[i], "o", color="C0", ms=8, label=f"largest e {e[i]:.3f} at {cm[i]:.1f} cm")
+        ax.plot(
+            cm[j],
+            e_a[j],
+            "s",
+            color="C1",
+            ms=8,
+            label=f"largest e_A {e_a[j]:.3f} at {cm[j]:.1f} cm",
+        )
     node = racket.beam.modes.nodes(1)[0]
     ax.axvline(100 * node, color="C2", ls="--", label=f"mode-1 node {100 * node:.1f} cm")
     pivot = racket.beam.length - HAND_FROM_BUTT if pivot is None else pivot
     cop = center_of_percussion(racket, pivot)
     ax.axvline(100 * cop, color="C3", ls=":", label=f"centre of percussion {100 * cop:.1f} cm")
-    low = min(np.nanmin(e_a), 0.0)
-    top = max(np.nanmax(e), 1.0)
+    low, top = min(lows), max(tops)
     band = 0.35 * (top - low)
     draw_racket(racket, ax, low - 1.15 * band, band)
     ax.set_xlim(-2, 100 * racket.beam.length + 2)
@@ -140,19 +197,24 @@ def plot_cor_comparison(results, ax=None, show_apparent: bool = True):
     """
     ax = _axes(ax, 1)
     for k, (label, result) in enumerate(results.items()):
-        x, e, e_a = _columns(result)
-        order = np.argsort(x)
+        curves = list(_curves(result))
+        if len(curves) != 1:
+            raise ValueError(
+                f"results[{label!r}] must hold one curve, got a table over a grid "
+                f"({', '.join(c[0] for c in curves[:3])}, ...)"
+            )
+        _, x, e, e_a, _ = curves[0]
         color = f"C{k}"
         best = int(np.argmax(e))
         ax.plot(
-            100 * x[order],
-            e[order],
+            100 * x,
+            e,
             color=color,
             lw=2,
             label=f"{label}: e, largest {e[best]:.3f} at {100 * x[best]:.1f} cm",
         )
         if show_apparent:
-            ax.plot(100 * x[order], e_a[order], color=color, ls="--", lw=1.2, label="_e_A")
+            ax.plot(100 * x, e_a, color=color, ls="--", lw=1.2, label="_e_A")
     ax.set_xlabel("impact point [cm from the tip]")
     ax.set_ylabel("coefficient of restitution")
     ax.set_title("e (solid) and e_A (dashed) along the strings" if show_apparent else "e")
@@ -163,6 +225,8 @@ def plot_cor_comparison(results, ax=None, show_apparent: bool = True):
 def plot_impact(result, ax=None):
     """Force, compressions and velocities of one impact against time (three panels); the
     impact point's velocity is split into its dc (rigid-body) and ac (vibration) parts."""
+    if result.t is None:
+        raise ValueError("plot_impact needs the histories: impact(..., histories=True)")
     axes = _axes(ax, 3)
     t = 1e3 * result.t
     axes[0].plot(t, result.force, color="C0", label="contact force")

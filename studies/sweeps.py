@@ -16,8 +16,18 @@ import numpy as np
 import pandas as pd
 
 from ball import Ball
+from common.checks import in_range
+from common.checks import speed as check_speed
 from racket import Racket, StringBed, impact
+from racket.solver import F1_MIN
 from studies.tables import impact_table
+
+STRING_STIFFNESS_RANGE = (1e3, 1e7)
+"""String-bed stiffness [N/m] a sweep accepts (a strung racket's is 2e4-5e4; paper Secs. III
+and VIII)."""
+
+F1_MAX = 2000.0
+"""Highest f1 [Hz] a sweep accepts (a racket's is 100-200 Hz; Taraborrelli et al. 2019)."""
 
 COLUMNS = (
     "position_from_tip_m",
@@ -31,8 +41,11 @@ COLUMNS = (
     "contact_time_s",
     "peak_force_N",
     "e_van_zandt",
+    "self_consistent",
+    "recontacts",
 )
-"""The columns every sweep returns, in order; one column per varying parameter follows."""
+"""The columns every sweep returns, in order (:func:`studies.tables.impact_table`); one
+column per varying parameter follows."""
 
 PARAMETERS = {
     "speed": "speed_m_s",
@@ -109,9 +122,10 @@ def sweep(
     speed : float or sequence
         Ball speed towards the strings [m/s].
     string_stiffness : float or sequence, optional
-        String-bed stiffness [N/m].
+        String-bed stiffness [N/m], in [1e3, 1e7].
     f1 : float or sequence, optional
-        First bending frequency of the frame [Hz] (EI scaled, mode shapes kept).
+        First bending frequency of the frame [Hz], in [20, 2000] (EI scaled, mode shapes
+        kept).
     support : str or sequence, optional
         ``"free"``, ``"clamped-head"`` or ``"hand-held"``.
     swing_speed, pivot :
@@ -134,10 +148,22 @@ def sweep(
         "ball": [_ball_label(b) for b in _as_list("ball", ball)],
     }
     varying = [name for name, values in grid.items() if len(values) > 1]
-    combos = list(itertools.product(*grid.values()))
+    # Every value checked before any impact runs.
+    racket.check_positions(positions)
+    for sp in grid["speed"]:
+        check_speed("speed", sp, allow_zero=swing_speed > 0)
+    for freq in grid["f1"]:
+        if freq is not None:
+            in_range("f1", freq, F1_MIN, F1_MAX, "Hz")
+    for k_s in grid["string_stiffness"]:
+        if k_s is not None:
+            in_range("string_stiffness", k_s, *STRING_STIFFNESS_RANGE, "N/m")
+    combos = [
+        (sp, _variant(racket, ks, freq, sup), label, b)
+        for sp, ks, freq, sup, (label, b) in itertools.product(*grid.values())
+    ]
     frames = []
-    for sp, ks, freq, sup, (label, b) in _progress(combos, len(combos), progress):
-        variant = _variant(racket, ks, freq, sup)
+    for sp, variant, label, b in _progress(combos, len(combos), progress):
         frame = impact_table(
             impact(variant, b, positions, sp, swing_speed=swing_speed, pivot=pivot)
         )
@@ -169,12 +195,16 @@ def compare(
     speed : float
         Ball speed towards the strings [m/s].
     points : int
-        Impact points across each racket's string bed.
+        Impact points across each racket's string bed, in [2, 100000].
     """
+    points = in_range("points", points, 2, 100_000)
+    if points != int(points):
+        raise ValueError(f"points must be a whole number, got {points:g}")
+    check_speed("speed", speed)
     frames = []
     for label, racket in rackets.items():
         frame = impact_table(
-            impact(racket, ball, np.linspace(*racket.strings.extent, points), speed)
+            impact(racket, ball, np.linspace(*racket.strings.extent, int(points)), speed)
         )
         frame.insert(0, "racket", label)
         frames.append(frame)

@@ -23,6 +23,8 @@ def impact_table(result: Impact) -> pd.DataFrame:
         "contact_time_s": result.contact_time,
         "peak_force_N": result.peak_force,
         "e_van_zandt": result.e_van_zandt,
+        "self_consistent": result.self_consistent,
+        "recontacts": result.recontacts,
     }
     return pd.DataFrame({name: np.atleast_1d(value) for name, value in columns.items()})
 

@@ -73,12 +73,13 @@ def test_units_are_explicit_and_equivalent():
     [
         (dict(swingweight_kgcm2=400), r"swingweight_kgcm2 must be in \(\d+, \d+\) kg cm\^2"),
         (dict(swingweight_kgcm2=200), r"handle would need negative mass"),
-        (dict(balance_cm=60.0), r"no positive mass distribution"),
-        (dict(balance_cm=80.0), r"balance must lie on the racket"),
-        (dict(head_size_cm2=1300.0), r"too large"),
-        (dict(mass_kg=0.01), r"mass_kg must exceed"),
+        (dict(balance_cm=60.0), r"balance_cm must be in \[20, 50\] cm from the butt, got 60"),
+        (dict(length_m=0.46, balance_cm=47.0), r"balance must lie on the racket"),
+        (dict(head_size_cm2=1300.0), r"head_size_cm2 must be in \[\d+, \d+\] cm\^2"),
+        (dict(length_m=0.5, balance_cm=30.0), r"too large"),
+        (dict(mass_kg=0.01), r"mass_kg must be in \[0.15, 0.5\] kg, got 0.01"),
         (dict(mass_kg=float("nan")), r"mass_kg must be a finite number"),
-        (dict(f1_hz=-3), r"f1_hz must be > 0"),
+        (dict(f1_hz=-3), r"f1_hz must be in \[60, 400\] Hz, got -3"),
     ],
 )
 def test_infeasible_or_bad_specs_raise_with_the_reason(change, match):
