@@ -145,3 +145,11 @@ def test_uniform_rejects_bad_numbers():
         Beam.uniform(0.68, 0.34, -120.0)
     with pytest.raises(ValueError, match="mass"):
         Beam.uniform(0.68, 0.0, 120.0)
+
+
+def test_every_mode_has_one_node_more_than_its_number():
+    # Mode k of a free-free beam has k + 1 nodes; an antisymmetric mode's node at L/2 falls
+    # exactly on the search grid and must not be lost (mode 14 of 20 once listed 14).
+    modes = Beam.uniform(0.68, 0.34, 120.0, n_modes=20).modes
+    assert [modes.nodes(k).size for k in range(1, 21)] == list(range(2, 22))
+    assert 0.34 in np.round(modes.nodes(14), 12)

@@ -107,3 +107,36 @@ def test_cor_comparison_draws_each_racket_on_one_axes():
     _fig, given = plt.subplots()
     assert plots.plot_cor_comparison(groups, ax=given, show_apparent=False) is given
     assert len(given.get_lines()) == 2
+
+
+def test_a_grid_table_draws_one_labelled_curve_per_grid_point():
+    racket = paper_racket()
+    x = np.linspace(0, 0.32, 9)
+    table = sweep(racket, tennis_ball(), x, [10.0, 20.0], f1=[120.0, 180.0], progress=False)
+    ax = plots.plot_cor_along_racket(table, racket)
+    e_lines = [line for line in ax.get_lines() if line.get_label().startswith("e (")]
+    assert len(e_lines) == 4  # 2 speeds x 2 frequencies, no zig-zag through all rows
+    assert {line.get_label() for line in e_lines} == {
+        f"e (speed_m_s {v:g}, f1_Hz {f:g})" for v in (10, 20) for f in (120, 180)
+    }
+    for line in e_lines:
+        assert np.all(np.diff(line.get_xdata()) > 0)
+    with pytest.raises(ValueError, match="must hold one curve"):
+        plots.plot_cor_comparison({"grid": table})
+
+
+def test_unhappy_points_without_self_consistent_xo_are_marked():
+    racket = paper_racket()
+    with pytest.warns(UserWarning, match="no self-consistent"):
+        r = impact(racket, Ball(0.057, SineLaw(4e4)), np.linspace(0, 0.32, 17), 10.0)
+    ax = plots.plot_cor_along_racket(r, racket)
+    marks = next(line for line in ax.get_lines() if line.get_label() == "no self-consistent Xo")
+    assert np.allclose(marks.get_xdata(), 100 * r.position[~r.self_consistent])
+
+
+def test_sweep_command_plots_the_whole_grid(tmp_path):
+    from studies.cli import main
+
+    out = tmp_path / "grid.png"
+    assert main(["sweep", "--points", "5", "--speed", "10", "20", "--plot", str(out)]) == 0
+    assert out.stat().st_size > 0
