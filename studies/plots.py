@@ -64,6 +64,7 @@ def _curves(result):
 
 
 def _sorted(label, x, e, e_a, flagged):
+    """One curve of :func:`_curves`, as float arrays sorted along the racket."""
     x, e, e_a = (np.asarray(v, dtype=float) for v in (x, e, e_a))
     flagged = np.zeros(x.size, bool) if flagged is None else np.asarray(flagged, bool)
     order = np.argsort(x)
@@ -125,49 +126,31 @@ def plot_cor_along_racket(result, racket: Racket, ax=None, pivot: float | None =
     ax = _axes(ax, 1)
     curves = list(_curves(result))
     single = len(curves) == 1
-    lows, tops = [0.0], [1.0]
+    lows, tops, marked = [0.0], [1.0], False
     for k, (label, x, e, e_a, flagged) in enumerate(curves):
         cm = 100 * x
-        tag = f" ({label})" if label else ""
-        ax.plot(
-            cm,
-            e,
-            color=f"C{k}" if not single else "C0",
-            lw=2,
-            label=f"e{tag}" if not single else "e (Eq. 21, rigid-body motion)",
-        )
-        ax.plot(
-            cm,
-            e_a,
-            color=f"C{k}" if not single else "C1",
-            lw=1.5 if not single else 2,
-            ls="--" if not single else "-",
-            label=f"e_A{tag}" if not single else "e_A = V1/v1 (apparent)",
-        )
+        if single:
+            e_style = dict(color="C0", label="e (Eq. 21, rigid-body motion)")
+            a_style = dict(color="C1", lw=2, label="e_A = V1/v1 (apparent)")
+        else:
+            e_style = dict(color=f"C{k}", label=f"e ({label})")
+            a_style = dict(color=f"C{k}", lw=1.5, ls="--", label=f"e_A ({label})")
+        ax.plot(cm, e, lw=2, **e_style)
+        ax.plot(cm, e_a, **a_style)
         if np.any(flagged):
-            ax.plot(
-                cm[flagged],
-                e[flagged],
-                "x",
-                color="k",
-                ms=7,
-                label="no self-consistent Xo" if k == 0 or single else "_",
-            )
+            label = "_" if marked else "no self-consistent Xo"
+            ax.plot(cm[flagged], e[flagged], "x", color="k", ms=7, label=label)
+            marked = True
         lows.append(np.nanmin(e_a))
         tops.append(np.nanmax(e))
     if single:
         _, x, e, e_a, _ = curves[0]
         cm = 100 * x
         i, j = int(np.argmax(e)), int(np.argmax(e_a))
-        ax.plot(cm[i], e[i], "o", color="C0", ms=8, label=f"largest e {e[i]:.3f} at {cm[i]:.1f} cm")
-        ax.plot(
-            cm[j],
-            e_a[j],
-            "s",
-            color="C1",
-            ms=8,
-            label=f"largest e_A {e_a[j]:.3f} at {cm[j]:.1f} cm",
-        )
+        for k, y, mark, name in ((i, e, "o", "e"), (j, e_a, "s", "e_A")):
+            color = "C0" if name == "e" else "C1"
+            label = f"largest {name} {y[k]:.3f} at {cm[k]:.1f} cm"
+            ax.plot(cm[k], y[k], mark, color=color, ms=8, label=label)
     node = racket.beam.modes.nodes(1)[0]
     ax.axvline(100 * node, color="C2", ls="--", label=f"mode-1 node {100 * node:.1f} cm")
     pivot = racket.beam.length - HAND_FROM_BUTT if pivot is None else pivot
