@@ -83,10 +83,11 @@ Xo to this relative tolerance (where the ball crosses its fold it ends within 1e
 without a fold, strings stiffer than pi k0, it approaches Xo only asymptotically and the
 stepped contact ends within 7e-5 of it)."""
 
-SCAN_START, SCAN_RATIO, SCAN_MAX, REFINE_MAX = 0.7, 1.01, 400, 60
-"""The Xo search: start at this fraction of the rigid racket's Xo, step up by this ratio
-(so a gap in the non-snapping Xo narrower than 1 % can be missed), at most this many scan
-and refinement runs."""
+SCAN_START, SCAN_RATIO, SCAN_MAX, SCAN_DOWN_MAX, REFINE_MAX = 0.7, 1.01, 400, 40, 60
+"""The Xo search: start at this fraction of the rigid racket's Xo (halving it, at most
+SCAN_DOWN_MAX times, until every impact snaps), step up by this ratio (so a gap in the
+non-snapping Xo narrower than 1 % can be missed), at most this many scan and refinement
+runs."""
 
 
 _HISTORY_ROWS = {
@@ -253,9 +254,9 @@ def impact(
     steps_per_contact : int
         Time steps per estimated contact time, in [50, 100000].
     watch_after : float
-        Extra time [s], in [0, 1], to keep stepping after the solver has decided that the ball has
-        left for good, watching for another contact; the outcome does not depend on it
-        unless that decision was wrong.
+        Extra time [s], in [0, 1], to keep stepping after the solver has decided that the
+        ball has left for good, watching for another contact; the outcome does not depend
+        on it unless that decision was wrong.
     histories : bool
         Also return the histories (force, compressions, velocities against time; the
         impacts then run twice, the second time recording); None otherwise.
@@ -431,7 +432,7 @@ class _Stepper:
         z0 = np.zeros((x.size, 2 * n))
         if swing_speed:
             z0[:, n : n + 2] = self.swing_qd
-        self.size = x.size
+        self.position = x
         # Per-point inputs (first axis over the impact points) and shared ones.
         self.per_point = dict(
             gin0=np.einsum("jab,pjb->pja", g0, unit),
@@ -529,12 +530,17 @@ def _self_consistent_x_o(stepper: _Stepper, guess: np.ndarray) -> np.ndarray:
     lo = SCAN_START * guess
     r_lo = np.empty(count)
     todo = every
-    for _ in range(SCAN_MAX):
+    for _ in range(SCAN_DOWN_MAX):
         snapped, r_lo[todo] = snaps(lo[todo], todo)
         lo[todo[~snapped]] *= 0.5
         todo = todo[~snapped]
         if todo.size == 0:
             break
+    if todo.size:
+        raise RuntimeError(
+            f"the unhappy ball does not snap even at Xo = {lo[todo[0]]:.3g} m (impact at "
+            f"{stepper.position[todo[0]]:g} m from the tip): no smallest Xo to find"
+        )
     hi, r_hi = lo * SCAN_RATIO, np.empty(count)
     todo = every
     for _ in range(SCAN_MAX):
