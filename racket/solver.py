@@ -32,7 +32,10 @@ flagged (``Impact.self_consistent``) and a warning says how many are.
 
 from __future__ import annotations
 
+import sys
+import threading
 import warnings
+from contextlib import contextmanager
 from dataclasses import dataclass
 
 import numpy as np
@@ -50,6 +53,9 @@ from common.checks import speed as check_speed
 from racket import kernel
 from racket.racket import Racket
 from racket.system import block_steps, racket_system
+
+COMPILE_SECONDS = 20
+"""About how long numba takes to compile the kernel on a 2-core machine (measured 12-18 s)."""
 
 DEFAULT_STEPS_PER_CONTACT = 600
 """Time steps per estimated contact time: e then changes by < 1e-4 when halved."""
@@ -472,23 +478,47 @@ class _Stepper:
         summary = np.zeros((count, kernel.N_SUMMARY))
         max_steps = self.max_steps + extra_steps
         hist = np.zeros((kernel.N_HISTORY, count, history_steps) if history_steps else (1, 1, 1))
-        kernel.run_impacts(
-            **self.shared,
-            **inputs,
-            x_o=np.ascontiguousarray(x_o, dtype=float),
-            cross_tol=CROSS_TOL,
-            dt=self.dt,
-            max_steps=max_steps,
-            extra_steps=extra_steps,
-            force_tol=FORCE_TOL,
-            stop_on_snap=stop_on_snap,
-            record=history_steps > 0,
-            out_ball=out_ball,
-            out_state=out_state,
-            summary=summary,
-            history=hist,
-        )
+        with _compile_notice():
+            kernel.run_impacts(
+                **self.shared,
+                **inputs,
+                x_o=np.ascontiguousarray(x_o, dtype=float),
+                cross_tol=CROSS_TOL,
+                dt=self.dt,
+                max_steps=max_steps,
+                extra_steps=extra_steps,
+                force_tol=FORCE_TOL,
+                stop_on_snap=stop_on_snap,
+                record=history_steps > 0,
+                out_ball=out_ball,
+                out_state=out_state,
+                summary=summary,
+                history=hist,
+            )
         return out_ball, out_state, summary, hist
+
+
+@contextmanager
+def _compile_notice(after: float = 1.0):
+    """Say on stderr that the solver is being compiled (numba, once per install: the
+    compiled kernel is cached on disk) if the first call of this process takes more than
+    ``after`` seconds; loading the cached kernel takes well under a second."""
+    if kernel.run_impacts.signatures:
+        yield
+        return
+    timer = threading.Timer(
+        after,
+        lambda: print(
+            f"racket-impact: compiling the solver (once, about {COMPILE_SECONDS:g} s)...",
+            file=sys.stderr,
+            flush=True,
+        ),
+    )
+    timer.start()
+    try:
+        yield
+    finally:
+        timer.cancel()
 
 
 def _x_o_guess(racket: Racket, ball: Ball, x: np.ndarray, closing: float) -> np.ndarray:
