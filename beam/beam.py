@@ -247,10 +247,7 @@ class Beam:
             beta_l = uniform.free_free_roots(self.n_modes)
             rho, ei, length = self.mass_per_length[0], self.bending_stiffness[0], self.length
             omega_b = beta_l**2 * np.sqrt(ei / (rho * length**4))
-            scale = 1.0 / np.sqrt(self.mass)
-
-            def bending(x):
-                return scale * uniform.shapes(beta_l, np.asarray(x) / length)
+            bending = uniform.UniformShapes(beta_l, length, 1.0 / np.sqrt(self.mass))
         elif method == "fem":
             omega_b, bending = fem.bending_modes(
                 np.asarray(self.stations),

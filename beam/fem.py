@@ -12,6 +12,7 @@ first modes of a racket to better than 1e-6.
 from __future__ import annotations
 
 import itertools
+from dataclasses import dataclass
 
 import numpy as np
 from scipy.linalg import eigh
@@ -127,11 +128,30 @@ def bending_modes(
     v = v * np.sign(v[0])  # deflection at the tip positive
     omega = np.sqrt(np.maximum(w2, 0.0))
 
-    def shapes(x: np.ndarray) -> np.ndarray:
-        e = np.clip(np.searchsorted(nodes, x, side="right") - 1, 0, lengths.size - 1)
-        s = (x - nodes[e]) / lengths[e]
+    return omega, FemShapes(nodes, v)
+
+
+@dataclass(frozen=True, eq=False)
+class FemShapes:
+    """Bending shapes [1/sqrt(kg)] interpolated from the finite-element eigenvectors, as a
+    picklable callable of positions x [m from the tip].
+
+    Parameters
+    ----------
+    nodes : ndarray
+        Mesh nodes [m from the tip].
+    vectors : ndarray
+        (2 nodes, modes) mass-normalised eigenvectors (deflection, slope per node).
+    """
+
+    nodes: np.ndarray
+    vectors: np.ndarray
+
+    def __call__(self, x) -> np.ndarray:
+        x = np.asarray(x, dtype=float)
+        lengths = np.diff(self.nodes)
+        e = np.clip(np.searchsorted(self.nodes, x, side="right") - 1, 0, lengths.size - 1)
+        s = (x - self.nodes[e]) / lengths[e]
         n = hermite(s, lengths[e])  # (4, len(x))
         dof = 2 * e[None, :] + np.arange(4)[:, None]  # (4, len(x))
-        return np.einsum("kx,mkx->mx", n, v[dof].transpose(2, 0, 1))
-
-    return omega, shapes
+        return np.einsum("kx,mkx->mx", n, self.vectors[dof].transpose(2, 0, 1))

@@ -13,6 +13,8 @@ exponential written relative to the far end.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 from scipy.optimize import brentq
 
@@ -47,3 +49,27 @@ def shapes(beta_l: np.ndarray, xi) -> np.ndarray:
         / (0.5 * (1.0 - e_l**2) - np.sin(bl) * e_l)
     )
     return grow + 0.5 * (1.0 + s) * np.exp(-u) + np.cos(u) - s * np.sin(u)
+
+
+@dataclass(frozen=True, eq=False)
+class UniformShapes:
+    """Mass-normalised bending shapes [1/sqrt(kg)] of a uniform free-free beam as a
+    picklable callable of positions x [m from the tip] (a beam's modes can then be sent to
+    other processes).
+
+    Parameters
+    ----------
+    beta_l : ndarray
+        Roots bL of the modes kept.
+    length : float
+        Beam length [m].
+    scale : float
+        1 / sqrt(beam mass) [1/sqrt(kg)].
+    """
+
+    beta_l: np.ndarray
+    length: float
+    scale: float
+
+    def __call__(self, x) -> np.ndarray:
+        return self.scale * shapes(self.beta_l, np.asarray(x) / self.length)

@@ -10,6 +10,7 @@ from __future__ import annotations
 import itertools
 import sys
 from collections.abc import Mapping, Sequence
+from concurrent.futures import Executor
 from dataclasses import replace
 
 import numpy as np
@@ -108,6 +109,7 @@ def sweep(
     swing_speed: float = 0.0,
     pivot: float | None = None,
     progress: bool | None = None,
+    executor: Executor | None = None,
 ) -> pd.DataFrame:
     """Impacts at ``positions`` for every combination of the parameters given as lists.
 
@@ -132,6 +134,11 @@ def sweep(
         A swung racket, as in :func:`racket.impact`.
     progress : bool, optional
         Show a progress bar; default: when standard error is a terminal.
+    executor : concurrent.futures.Executor, optional
+        Run the grid points on it (e.g. a ``ProcessPoolExecutor`` with a "spawn" context,
+        since numba's threads do not survive a fork of a process that has used them; or a
+        Dask cluster's ``client.get_executor()``); rackets, balls and their modes are
+        picklable.  Default: one after the other in this process.
 
     Returns
     -------
@@ -162,11 +169,15 @@ def sweep(
         (sp, _variant(racket, ks, freq, sup), label, b)
         for sp, ks, freq, sup, (label, b) in itertools.product(*grid.values())
     ]
+    runs = [(variant, b, positions, sp, swing_speed, pivot) for sp, variant, _, b in combos]
+    if executor is None:
+        tables = (_impact_table(*run) for run in runs)
+    else:
+        tables = (future.result() for future in [executor.submit(_impact_table, *r) for r in runs])
     frames = []
-    for sp, variant, label, b in _progress(combos, len(combos), progress):
-        frame = impact_table(
-            impact(variant, b, positions, sp, swing_speed=swing_speed, pivot=pivot)
-        )
+    for (sp, variant, label, _), frame in zip(
+        combos, _progress(tables, len(combos), progress), strict=True
+    ):
         values = {
             "speed": sp,
             "string_stiffness": variant.strings.stiffness,
@@ -178,6 +189,13 @@ def sweep(
             frame[PARAMETERS[name]] = values[name]
         frames.append(frame)
     return pd.concat(frames, ignore_index=True)
+
+
+def _impact_table(racket, ball, positions, speed, swing_speed, pivot) -> pd.DataFrame:
+    """The table of one grid point (module level, so that an executor can pickle it)."""
+    return impact_table(
+        impact(racket, ball, positions, speed, swing_speed=swing_speed, pivot=pivot)
+    )
 
 
 def compare(

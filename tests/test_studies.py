@@ -73,3 +73,21 @@ def test_every_paper_claim_within_tolerance():
     assert len(table) >= 20
     failed = table[~table["ok"]]
     assert failed.empty, failed.to_string()
+
+
+def test_sweep_on_a_process_pool_matches_the_serial_sweep():
+    import multiprocessing
+    import pickle
+    from concurrent.futures import ProcessPoolExecutor
+
+    racket = paper_racket()
+    assert racket.beam.modes.count == 10  # computed modes travel with the racket
+    assert pickle.loads(pickle.dumps(racket)).beam.modes.frequencies[0] == pytest.approx(120.0)
+    x = np.linspace(0.0, 0.32, 5)
+    kwargs = dict(f1=[120.0, 150.0], string_stiffness=[3e4, 4e4], progress=False)
+    serial = sweep(racket, tennis_ball(), x, [10.0, 20.0], **kwargs)
+    # "spawn": numba's threads do not survive a fork of a process that has used them.
+    spawn = multiprocessing.get_context("spawn")
+    with ProcessPoolExecutor(max_workers=2, mp_context=spawn) as pool:
+        parallel = sweep(racket, tennis_ball(), x, [10.0, 20.0], executor=pool, **kwargs)
+    assert parallel.equals(serial)
