@@ -17,7 +17,6 @@ from ball.bodies import Ball, Wall, warn_if_squashed
 from ball.contact import RelativeContact
 from ball.laws import SineLaw
 from ball.monotone import monotone_contact
-from ball.unhappy import unhappy_contact
 from common.checks import SPEED_RANGE, in_range, shown
 
 
@@ -147,6 +146,8 @@ def collide(a: Ball, b: Ball | Wall, v_a: float, v_b: float = 0.0, samples: int 
     closing = v_a - v_b
     mu = a.mass if wall else a.mass * b.mass / (a.mass + b.mass)
     law_b = None if wall else b.law
+    from ball.unhappy import unhappy_contact  # scipy loads on first use (import time)
+
     if isinstance(a.law, SineLaw) and isinstance(law_b, SineLaw):
         raise ValueError(
             "a and b cannot both be unhappy (SineLaw) balls: the split of the "

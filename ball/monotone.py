@@ -17,7 +17,6 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 import numpy as np
-from scipy.integrate import solve_ivp
 
 from ball.contact import RelativeContact
 from ball.laws import MonotoneLaw
@@ -48,6 +47,8 @@ def monotone_contact(
     samples : int
         History points per phase.
     """
+    from scipy.integrate import solve_ivp  # scipy loads on first use (import time)
+
     laws: Sequence[MonotoneLaw] = [law_a] if law_b is None else [law_a, law_b]
     # Time and length scales for the tolerances: the secant stiffness of the loading curve
     # at a force of 1 N sets the contact period.

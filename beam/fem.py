@@ -15,7 +15,6 @@ import itertools
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.linalg import eigh
 
 
 def hermite(s: np.ndarray, length: np.ndarray) -> np.ndarray:
@@ -108,6 +107,8 @@ def bending_modes(
 ):
     """Angular frequencies [rad/s] and a shape evaluator of the first ``n_modes`` bending modes
     (arguments as in :func:`assemble`)."""
+    from scipy.linalg import eigh  # scipy loads on first use (import time)
+
     nodes, k, m = assemble(stations, mass_per_length, bending_stiffness, point_masses, elements)
     n_dof = k.shape[0]
     lengths = np.diff(nodes)

@@ -6,7 +6,6 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import brentq
 
 
 @dataclass(frozen=True)
@@ -61,6 +60,8 @@ class Modes:
 
     def nodes(self, mode: int = 1) -> np.ndarray:
         """Zeros [m from the tip] of bending mode ``mode`` (1 = fundamental) on the beam."""
+        from scipy.optimize import brentq  # scipy loads on first use (import time)
+
         if not 1 <= mode <= self.count - 2:
             raise ValueError(f"mode must be in [1, {self.count - 2}], got {mode!r}")
         x = np.linspace(0.0, self.length, 4001)

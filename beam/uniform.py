@@ -16,11 +16,12 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import brentq
 
 
 def free_free_roots(n: int) -> np.ndarray:
     """The first ``n`` roots bL of cos(bL) cosh(bL) = 1, bL > 0."""
+    from scipy.optimize import brentq  # scipy loads on first use (import time)
+
     # cos(x) - 1/cosh(x) has one root in each interval around (k + 1/2) pi, k = 1, 2, ...
     f = lambda x: np.cos(x) - 1.0 / np.cosh(x)  # noqa: E731
     return np.array(
