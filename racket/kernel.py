@@ -50,26 +50,26 @@ import math
 import numpy as np
 from numba import njit, prange
 
-LINEAR, POWER, SINE = 0, 1, 2
-
-# Columns of the per-impact summary array.
-(
-    T_END,
-    T_CONTACT,
-    F_PEAK,
-    SINE_WORK,
+from racket.layout import (
     DAMPING_LOSS,
-    SNAPPED,
     ENDED,
-    SNAP_RESIDUAL,
-    X_END,
+    F_PEAK,
+    H_BALL_COMP,
+    H_BALL_VEL,
+    H_FORCE,
+    H_POINT_VEL,
+    H_POINT_VEL_DC,
+    H_STRING,
+    LINEAR,
     RECONTACTS,
-) = range(10)
-N_SUMMARY = 10
-
-# Rows of the history array.
-H_FORCE, H_BALL_COMP, H_STRING, H_BALL_VEL, H_POINT_VEL, H_POINT_VEL_DC = range(6)
-N_HISTORY = 6
+    SINE,
+    SINE_WORK,
+    SNAP_RESIDUAL,
+    SNAPPED,
+    T_CONTACT,
+    T_END,
+    X_END,
+)
 
 
 @njit(cache=True)
@@ -450,3 +450,99 @@ def _power(damp_blocks, damp_rows, s):
             v += damp_rows[r, k, 0] * s[j, 0] + damp_rows[r, k, 1] * s[j, 1]
         total += v * v
     return total
+
+
+@njit(cache=True)
+def _expm(m):
+    """exp(m) of a small square matrix: balancing, then scaling and squaring of a Taylor
+    series.
+
+    The matrix is first balanced by a diagonal similarity of powers of two (exact in
+    floating point; as LAPACK's gebal, Parlett and Reinsch), since a block's state (q, q')
+    mixes units; then it is scaled by 2**-s until its norm is below 1/4, where 18 terms of
+    the series leave a truncation error below 1e-27 of the result, and squared s times back.
+    """
+    n = m.shape[0]
+    d = np.ones(n)
+    a = m.copy()
+    for _ in range(20):
+        changed = False
+        for i in range(n):
+            col, row = 0.0, 0.0
+            for j in range(n):
+                if j != i:
+                    col += abs(a[j, i])
+                    row += abs(a[i, j])
+            if col == 0.0 or row == 0.0:
+                continue
+            f = 1.0
+            while col < row / 2.0:
+                col *= 2.0
+                row /= 2.0
+                f *= 2.0
+            while col >= row * 2.0:
+                col /= 2.0
+                row *= 2.0
+                f /= 2.0
+            if f != 1.0:
+                changed = True
+                d[i] *= f
+                for j in range(n):
+                    a[i, j] /= f
+                    a[j, i] *= f
+        if not changed:
+            break
+    norm = 0.0
+    for i in range(n):
+        row = 0.0
+        for j in range(n):
+            row += abs(a[i, j])
+        norm = max(norm, row)
+    s = 0
+    while norm > 0.25:
+        norm *= 0.5
+        s += 1
+    a *= 0.5**s
+    result = np.eye(n)
+    term = np.eye(n)
+    for k in range(1, 19):
+        term = _matmul(term, a) / k
+        result += term
+    for _ in range(s):
+        result = _matmul(result, result)
+    for i in range(n):  # undo the balancing: exp(m) = D exp(D^-1 m D) D^-1
+        for j in range(n):
+            result[i, j] *= d[i] / d[j]
+    return result
+
+
+@njit(cache=True)
+def _matmul(a, b):
+    """a @ b by loops (numba's @ calls BLAS)."""
+    n, m, p = a.shape[0], a.shape[1], b.shape[1]
+    out = np.zeros((n, p))
+    for i in range(n):
+        for k in range(m):
+            aik = a[i, k]
+            for j in range(p):
+                out[i, j] += aik * b[k, j]
+    return out
+
+
+@njit(cache=True)
+def augmented_steps(blocks, dt, trans, g0, g1):
+    """Fill T, G0, G1 of each block from exp of [[A, I, 0], [0, 0, I], [0, 0, 0]] dt."""
+    aug = np.zeros((6, 6))
+    for i in range(blocks.shape[0]):
+        aug[:] = 0.0
+        for r in range(2):
+            for c in range(2):
+                aug[r, c] = blocks[i, r, c] * dt
+            aug[r, 2 + r] = dt
+            aug[2 + r, 4 + r] = dt
+        e = _expm(aug)
+        for r in range(2):
+            for c in range(2):
+                g1[i, r, c] = e[r, 4 + c] / dt
+                g0[i, r, c] = e[r, 2 + c] - g1[i, r, c]
+                trans[i, r, c] = e[r, c]

@@ -50,7 +50,7 @@ from ball import (
 )
 from common.checks import finite, in_range, shown
 from common.checks import speed as check_speed
-from racket import kernel
+from racket import layout
 from racket.racket import Racket
 from racket.system import block_steps, racket_system
 
@@ -97,12 +97,12 @@ runs."""
 
 
 _HISTORY_ROWS = {
-    "force": kernel.H_FORCE,
-    "ball_compression": kernel.H_BALL_COMP,
-    "string_deflection": kernel.H_STRING,
-    "ball_velocity": kernel.H_BALL_VEL,
-    "point_velocity": kernel.H_POINT_VEL,
-    "point_velocity_dc_history": kernel.H_POINT_VEL_DC,
+    "force": layout.H_FORCE,
+    "ball_compression": layout.H_BALL_COMP,
+    "string_deflection": layout.H_STRING,
+    "ball_velocity": layout.H_BALL_VEL,
+    "point_velocity": layout.H_POINT_VEL,
+    "point_velocity_dc_history": layout.H_POINT_VEL_DC,
 }
 """Impact attribute of each history row of the kernel."""
 
@@ -110,13 +110,13 @@ _HISTORY_ROWS = {
 def _law_code(law):
     """Kernel code and parameters of a ball law."""
     if isinstance(law, LinearSpring):
-        return kernel.LINEAR, law.k, 1.0, 0.0
+        return layout.LINEAR, law.k, 1.0, 0.0
     if isinstance(law, LinearHysteresis):
-        return kernel.LINEAR, law.k, law.e, 0.0
+        return layout.LINEAR, law.k, law.e, 0.0
     if isinstance(law, PowerLawHysteresis):
-        return kernel.POWER, law.k, law.a, law.b
+        return layout.POWER, law.k, law.a, law.b
     if isinstance(law, SineLaw):
-        return kernel.SINE, law.k0, 0.0, 0.0
+        return layout.SINE, law.k0, 0.0, 0.0
     raise ValueError(f"ball law {law!r} is not supported on a racket")
 
 
@@ -322,12 +322,12 @@ def impact(
     stepper = _Stepper(racket, ball, x, speed, swing_speed, pivot, steps_per_contact)
     code = stepper.code
     x_o = np.full(x.size, np.nan)
-    if code == kernel.SINE:
+    if code == layout.SINE:
         x_o = _self_consistent_x_o(stepper, _x_o_guess(racket, ball, x, stepper.closing))
     extra_steps = round(watch_after / stepper.dt)
     out_ball, out_state, summary, _ = stepper.run(x_o, extra_steps=extra_steps)
-    if not np.all(summary[:, kernel.ENDED]):
-        bad = x[summary[:, kernel.ENDED] == 0][0]
+    if not np.all(summary[:, layout.ENDED]):
+        bad = x[summary[:, layout.ENDED] == 0][0]
         raise RuntimeError(
             f"the impact at {bad:g} m from the tip had not ended after "
             f"{stepper.max_steps * stepper.dt:.3g} s"
@@ -352,9 +352,9 @@ def impact(
 
     energy_initial = 0.5 * ball.mass * speed**2 + 0.5 * np.sum(stepper.swing_qd**2, axis=1)
     ball_energy = 0.5 * ball.mass * ball_after**2
-    if code == kernel.SINE:
-        ball_loss = summary[:, kernel.SINE_WORK]  # X never decreases: all work on it is lost
-        self_consistent = np.abs(summary[:, kernel.X_END] - x_o) <= SELF_CONSISTENT_TOL * x_o
+    if code == layout.SINE:
+        ball_loss = summary[:, layout.SINE_WORK]  # X never decreases: all work on it is lost
+        self_consistent = np.abs(summary[:, layout.X_END] - x_o) <= SELF_CONSISTENT_TOL * x_o
         if not np.all(self_consistent):
             warnings.warn(
                 f"{np.count_nonzero(~self_consistent)} of {x.size} unhappy-ball impacts "
@@ -364,14 +364,14 @@ def impact(
                 stacklevel=2,
             )
     else:
-        ball_loss = ball.law.dissipated(summary[:, kernel.F_PEAK])
+        ball_loss = ball.law.dissipated(summary[:, layout.F_PEAK])
         self_consistent = np.ones(x.size, dtype=bool)
-    peak = summary[:, kernel.F_PEAK]
-    warn_if_squashed(ball, x_o if code == kernel.SINE else ball.law.compression(peak, peak))
-    damping_loss = summary[:, kernel.DAMPING_LOSS]
+    peak = summary[:, layout.F_PEAK]
+    warn_if_squashed(ball, x_o if code == layout.SINE else ball.law.compression(peak, peak))
+    damping_loss = summary[:, layout.DAMPING_LOSS]
     residual = energy_initial - (ball_energy + racket_energy + vibration + ball_loss + damping_loss)
 
-    steps = np.rint(summary[:, kernel.T_END] / dt).astype(int)
+    steps = np.rint(summary[:, layout.T_END] / dt).astype(int)
     used = int(steps.max()) + 1
     history = dict.fromkeys(_HISTORY_ROWS)
     if histories:
@@ -392,8 +392,8 @@ def impact(
         v_cm=v_cm,
         omega=omega,
         point_velocity_dc=v2_dc,
-        contact_time=summary[:, kernel.T_CONTACT],
-        peak_force=summary[:, kernel.F_PEAK],
+        contact_time=summary[:, layout.T_CONTACT],
+        peak_force=summary[:, layout.F_PEAK],
         vibration_energy=vibration,
         mode_energy=mode_energy,
         energy_initial=energy_initial,
@@ -404,7 +404,7 @@ def impact(
         energy_residual=residual,
         x_o=x_o,
         self_consistent=self_consistent,
-        recontacts=summary[:, kernel.RECONTACTS].astype(int),
+        recontacts=summary[:, layout.RECONTACTS].astype(int),
         **history,
     )
     if scalar:
@@ -475,10 +475,12 @@ class _Stepper:
         nb = self.shared["trans"].shape[0]
         out_ball = np.zeros((count, 2))
         out_state = np.zeros((count, nb, 2))
-        summary = np.zeros((count, kernel.N_SUMMARY))
+        summary = np.zeros((count, layout.N_SUMMARY))
         max_steps = self.max_steps + extra_steps
-        hist = np.zeros((kernel.N_HISTORY, count, history_steps) if history_steps else (1, 1, 1))
-        with _compile_notice():
+        hist = np.zeros((layout.N_HISTORY, count, history_steps) if history_steps else (1, 1, 1))
+        from racket import kernel  # numba loads on first use (import time)
+
+        with _compile_notice(kernel.run_impacts):
             kernel.run_impacts(
                 **self.shared,
                 **inputs,
@@ -499,11 +501,11 @@ class _Stepper:
 
 
 @contextmanager
-def _compile_notice(after: float = 1.0):
-    """Say on stderr that the solver is being compiled (numba, once per install: the
-    compiled kernel is cached on disk) if the first call of this process takes more than
-    ``after`` seconds; loading the cached kernel takes well under a second."""
-    if kernel.run_impacts.signatures:
+def _compile_notice(function, after: float = 1.0):
+    """Say on stderr that ``function`` (a numba dispatcher) is being compiled (once per
+    install: the compiled kernel is cached on disk) if its first call of this process takes
+    more than ``after`` seconds; loading the cached kernel takes well under a second."""
+    if function.signatures:
         yield
         return
     timer = threading.Timer(
@@ -554,7 +556,7 @@ def _self_consistent_x_o(stepper: _Stepper, guess: np.ndarray) -> np.ndarray:
 
     def snaps(x_o, subset):
         summary = stepper.run(x_o, subset, stop_on_snap=True)[2]
-        return summary[:, kernel.SNAPPED] > 0, summary[:, kernel.SNAP_RESIDUAL]
+        return summary[:, layout.SNAPPED] > 0, summary[:, layout.SNAP_RESIDUAL]
 
     # 1. Scan: a start that snaps everywhere, then up until each impact first runs clean.
     lo = SCAN_START * guess

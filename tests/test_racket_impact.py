@@ -218,17 +218,15 @@ def test_clamped_head_equals_the_two_body_collision(law):
     assert r.peak_force == pytest.approx(two_body.peak_force, rel=1e-4)
 
 
-def test_first_compilation_is_announced_on_stderr(monkeypatch, capsys):
+def test_first_compilation_is_announced_on_stderr(capsys):
     import time
     from types import SimpleNamespace
 
     from racket import solver
 
-    monkeypatch.setattr(solver.kernel, "run_impacts", SimpleNamespace(signatures=[]))
-    with solver._compile_notice(after=0.05):
+    with solver._compile_notice(SimpleNamespace(signatures=[]), after=0.05):
         time.sleep(0.3)  # a compilation in progress
     assert "compiling the solver (once, about" in capsys.readouterr().err
-    monkeypatch.setattr(solver.kernel, "run_impacts", SimpleNamespace(signatures=["compiled"]))
-    with solver._compile_notice(after=0.05):
+    with solver._compile_notice(SimpleNamespace(signatures=["compiled"]), after=0.05):
         time.sleep(0.2)
     assert capsys.readouterr().err == ""

@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 from ball import Ball, LinearSpring, SineLaw, collide
-from racket import StringBed, impact, kernel, paper_racket
+from racket import StringBed, impact, layout, paper_racket
 from racket.solver import SCAN_RATIO, SELF_CONSISTENT_TOL, _Stepper
 
 RACKET = paper_racket()
@@ -36,7 +36,7 @@ def _snapped(ball, position, x_o):
     stepper = _Stepper(RACKET, ball, np.array([position]), 10.0, 0.0, None, 600)
     x_o = np.atleast_1d(x_o)
     summary = stepper.run(x_o, np.zeros(x_o.size, dtype=int), stop_on_snap=True)[2]
-    return summary[:, kernel.SNAPPED] > 0
+    return summary[:, layout.SNAPPED] > 0
 
 
 @pytest.mark.filterwarnings("ignore:.*no self-consistent")
@@ -100,7 +100,7 @@ def test_where_no_x_o_is_self_consistent_the_rule_is_the_closest_one():
     stepper = _Stepper(RACKET, ball, np.zeros(4), 10.0, 0.0, None, 600)
     larger = r.x_o * np.array([1.0, 1.05, 1.2, 1.5])
     summary = stepper.run(larger)[2]
-    ratio = summary[:, kernel.X_END] / larger
+    ratio = summary[:, layout.X_END] / larger
     assert np.all(np.diff(ratio) < 0) and ratio[0] < 1.0
 
 
