@@ -132,15 +132,18 @@ def _solve_x_o(sine: SineLaw, partner: MonotoneLaw | None, energy: float) -> flo
     # Start from the rigid-wall value (2 k0 Xo**2 / pi = energy) and bracket outwards.
     x_o = np.sqrt(np.pi * energy / (2.0 * sine.k0))
     lo, hi = x_o, x_o
+    r_lo = r_hi = residual(x_o)
     for _ in range(_BRACKET_STEPS):
-        if residual(lo) <= 0:
+        if r_lo <= 0:
             break
         lo *= 0.5
+        r_lo = residual(lo)
     for _ in range(_BRACKET_STEPS):
-        if residual(hi) >= 0:
+        if r_hi >= 0:
             break
         hi *= 2.0
-    if residual(lo) > 0 or residual(hi) < 0:
+        r_hi = residual(hi)
+    if r_lo > 0 or r_hi < 0:
         raise RuntimeError(
             f"no Xo within 2**{_BRACKET_STEPS} of the rigid wall's {x_o:.3g} m balances the "
             "collision's energy"

@@ -11,6 +11,7 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import re
 import sys
 import warnings
 from pathlib import Path
@@ -679,8 +680,13 @@ def main(argv=None) -> int:
     args.debug = debug
     prefix = f"racket-impact {args.command}"
 
+    kinds = set()
+
     def one_line(message, category, filename, lineno, file=None, line=None):
-        print(f"{prefix}: warning: {message}", file=sys.stderr)
+        kind = re.sub(r"\d[\d.eE+-]*", "#", str(message))
+        if kind not in kinds:  # the first of each kind (a grid repeats them with new numbers)
+            kinds.add(kind)
+            print(f"{prefix}: warning: {message}", file=sys.stderr)
 
     with warnings.catch_warnings():
         warnings.showwarning = one_line
