@@ -505,7 +505,7 @@ def _compile_notice(function, after: float = 1.0):
     """Say on stderr that ``function`` (a numba dispatcher) is being compiled (once per
     install: the compiled kernel is cached on disk) if its first call of this process takes
     more than ``after`` seconds; loading the cached kernel takes well under a second."""
-    if function.signatures:
+    if getattr(function, "signatures", True):  # compiled (or not compiled at all: no JIT)
         yield
         return
     timer = threading.Timer(
