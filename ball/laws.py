@@ -32,6 +32,10 @@ import numpy as np
 
 from common.checks import finite, in_range, positive, shown
 
+LINEAR, POWER, SINE = 0, 1, 2
+"""Codes of the law families in the racket solver's compiled kernel
+(:mod:`racket.kernel`), each law's ``kernel_law`` giving its code and numbers."""
+
 MAX_UNLOADING_EXPONENT = 1000.0
 """Largest unloading exponent b of :class:`PowerLawHysteresis` (see there)."""
 
@@ -60,6 +64,11 @@ class MonotoneLaw(ABC):
     def secant_stiffness(self, mass: float, speed: float) -> float:
         """F_max / X_max [N/m] of a ball of ``mass`` [kg] hitting a rigid surface at
         ``speed`` [m/s]: the linear spring that the ball is, at that speed."""
+
+    @property
+    @abstractmethod
+    def kernel_law(self) -> tuple:
+        """(code, (p0, p1, p2)): the law in the racket solver's compiled kernel."""
 
 
 @dataclass(frozen=True)
@@ -92,6 +101,10 @@ class LinearSpring(MonotoneLaw):
 
     def secant_stiffness(self, mass: float, speed: float) -> float:
         return self.k
+
+    @property
+    def kernel_law(self) -> tuple:
+        return LINEAR, (self.k, 1.0, 0.0)
 
 
 @dataclass(frozen=True)
@@ -135,6 +148,10 @@ class LinearHysteresis(MonotoneLaw):
 
     def secant_stiffness(self, mass: float, speed: float) -> float:
         return self.k
+
+    @property
+    def kernel_law(self) -> tuple:
+        return LINEAR, (self.k, self.e, 0.0)
 
 
 @dataclass(frozen=True)
@@ -209,6 +226,10 @@ class PowerLawHysteresis(MonotoneLaw):
         x_max = ((self.a + 1.0) * mass * speed**2 / (2.0 * self.k)) ** (1.0 / (self.a + 1.0))
         return self.k * x_max ** (self.a - 1.0)
 
+    @property
+    def kernel_law(self) -> tuple:
+        return POWER, (self.k, self.a, self.b)
+
 
 @dataclass(frozen=True)
 class SineLaw:
@@ -249,3 +270,8 @@ class SineLaw:
     def secant_stiffness(self, mass: float, speed: float) -> float:
         """k0 = Fo / Xo [N/m] at every speed (paper Sec. IV)."""
         return self.k0
+
+    @property
+    def kernel_law(self) -> tuple:
+        """(code, (k0, 0, 0)): the law in the racket solver's compiled kernel."""
+        return SINE, (self.k0, 0.0, 0.0)

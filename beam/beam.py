@@ -239,6 +239,28 @@ class Beam:
         """Rigid-body and bending modes (analytic when uniform, else finite elements)."""
         return self.compute_modes("analytic" if self.is_uniform else "fem")
 
+    @cached_property
+    def _flexibility(self) -> fem.FemFlexibility:
+        return fem.static_flexibility(
+            np.asarray(self.stations),
+            self.mass_per_length,
+            self.bending_stiffness,
+            self.point_masses,
+            self.elements,
+        )
+
+    def static_flexibility(self, x) -> np.ndarray:
+        """Deflection per unit force [m/N] of the free beam's bending at x [m from the tip]
+        for a force at x, all bending modes included: sum_k phi_k(x)**2 / omega_k**2."""
+        return self._flexibility(np.atleast_1d(np.asarray(x, dtype=float)))
+
+    def residual_flexibility(self, x) -> np.ndarray:
+        """The part [m/N] of :meth:`static_flexibility` from the bending modes not kept
+        (beyond ``n_modes``): sum_{k > n_modes} phi_k(x)**2 / omega_k**2, >= 0."""
+        modes = self.modes
+        kept = np.sum(modes.shape(x)[2:] ** 2 / modes.omega[2:, None] ** 2, axis=0)
+        return np.maximum(self.static_flexibility(x) - kept, 0.0)
+
     def compute_modes(self, method: str = "fem") -> Modes:
         """The modes by ``method`` = "analytic" (uniform beams only) or "fem"."""
         if method == "analytic":

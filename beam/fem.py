@@ -156,3 +156,52 @@ class FemShapes:
         n = hermite(s, lengths[e])  # (4, len(x))
         dof = 2 * e[None, :] + np.arange(4)[:, None]  # (4, len(x))
         return np.einsum("kx,mkx->mx", n, self.vectors[dof].transpose(2, 0, 1))
+
+
+def static_flexibility(stations, mass_per_length, bending_stiffness, point_masses, elements: int):
+    """The beam's elastic flexibility under inertia relief, as a callable of positions.
+
+    A free beam pushed at a point b by a force F accelerates as a rigid body and bends; the
+    bending part, F times ``sum over every bending mode of phi_k(b)**2 / omega_k**2``, is
+    what a static load balanced by the beam's own inertia (d'Alembert) deflects.  It is
+    computed from the finite-element model without its eigenvectors: the load minus its
+    rigid-body part (M R R^T f, R the mass-normalised rigid-body modes) is applied to the
+    beam propped at both ends, and the rigid-body part of that deflection is removed again:
+
+        A = (I - R R^T M) K_c^-1 (I - M R R^T),
+
+    K_c^-1 the propped beam's flexibility (A is the same for any statically determinate
+    props).  Arguments as in :func:`assemble`.
+    """
+    nodes, k, m = assemble(stations, mass_per_length, bending_stiffness, point_masses, elements)
+    n_dof = k.shape[0]
+    rigid = np.zeros((n_dof, 2))
+    rigid[0::2, 0] = 1.0  # translation: deflection 1, slope 0
+    rigid[0::2, 1] = nodes - nodes.mean()  # rotation: deflection x, slope 1
+    rigid[1::2, 1] = 1.0
+    rigid[:, 1] -= rigid[:, 0] * (rigid[:, 0] @ m @ rigid[:, 1]) / (rigid[:, 0] @ m @ rigid[:, 0])
+    rigid /= np.sqrt(np.einsum("im,ij,jm->m", rigid, m, rigid))  # mass-normalised, orthogonal
+    free = np.ones(n_dof, dtype=bool)
+    free[[0, n_dof - 2]] = False  # deflection propped at both ends
+    propped = np.zeros((n_dof, n_dof))
+    propped[np.ix_(free, free)] = np.linalg.inv(k[np.ix_(free, free)])
+    relief = np.eye(n_dof) - rigid @ (rigid.T @ m)
+    return FemFlexibility(nodes, relief @ propped @ relief.T)
+
+
+@dataclass(frozen=True, eq=False)
+class FemFlexibility:
+    """The flexibility [m/N] of the beam at x [m from the tip] to a force at x, from the
+    finite-element flexibility ``matrix`` (see :func:`static_flexibility`), picklable."""
+
+    nodes: np.ndarray
+    matrix: np.ndarray
+
+    def __call__(self, x) -> np.ndarray:
+        x = np.asarray(x, dtype=float)
+        lengths = np.diff(self.nodes)
+        e = np.clip(np.searchsorted(self.nodes, x, side="right") - 1, 0, lengths.size - 1)
+        n = hermite((x - self.nodes[e]) / lengths[e], lengths[e])  # (4, len(x))
+        dof = 2 * e[None, :] + np.arange(4)[:, None]  # (4, len(x))
+        block = self.matrix[dof[:, None, :], dof[None, :, :]]  # (4, 4, len(x))
+        return np.einsum("ix,ijx,jx->x", n, block, n)

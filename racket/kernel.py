@@ -83,13 +83,15 @@ def _power_compression(f, f_max, k, a, b):
 
 
 @njit(cache=True)
-def ball_compression(code, p0, p1, p2, f, f_max):
-    """Compression of a monotone ball law at force f after largest force f_max."""
-    if code == LINEAR:
+def ball_compression(law, params, f, f_max):
+    """Compression of a monotone ball law (code ``law``, numbers ``params``) at force f
+    after largest force f_max."""
+    if law == LINEAR:
+        k, e = params[0], params[1]
         if f >= f_max:
-            return f / p0
-        return (f_max * (1.0 - p1 * p1) + p1 * p1 * f) / p0
-    return _power_compression(f, f_max, p0, p1, p2)
+            return f / k
+        return (f_max * (1.0 - e * e) + e * e * f) / k
+    return _power_compression(f, f_max, params[0], params[1], params[2])
 
 
 @njit(cache=True)
@@ -116,21 +118,22 @@ def _power_force(target, c, f_lo, f_hi, f_max, k, a, b):
 
 
 @njit(cache=True)
-def monotone_force(code, p0, p1, p2, a, z_pred, f_max):
+def monotone_force(law, params, a, z_pred, f_max):
     """Force solving g_ball(F) + a F = z_pred (a = 1/k_s + c), 0 if the contact is open."""
-    if code == LINEAR:
-        f = z_pred / (1.0 / p0 + a)  # loading line
+    if law == LINEAR:
+        k, e2 = params[0], params[1] * params[1]
+        f = z_pred / (1.0 / k + a)  # loading line
         if f >= f_max:
             return f
-        e2 = p1 * p1
-        f = (z_pred - f_max * (1.0 - e2) / p0) / (e2 / p0 + a)  # unloading line
+        f = (z_pred - f_max * (1.0 - e2) / k) / (e2 / k + a)  # unloading line
         return max(f, 0.0)
-    switch = _power_compression(f_max, f_max, p0, p1, p2) + a * f_max
+    k, p, q = params[0], params[1], params[2]
+    switch = _power_compression(f_max, f_max, k, p, q) + a * f_max
     if z_pred >= switch:
-        return _power_force(z_pred, a, f_max, z_pred / a, f_max, p0, p1, p2)
+        return _power_force(z_pred, a, f_max, z_pred / a, f_max, k, p, q)
     if z_pred <= 0.0:
         return 0.0
-    return _power_force(z_pred, a, 0.0, f_max, f_max, p0, p1, p2)
+    return _power_force(z_pred, a, 0.0, f_max, f_max, k, p, q)
 
 
 @njit(cache=True)
@@ -199,40 +202,7 @@ def sine_step(k0, x_o, a, z_pred, x_n, cross_tol):
 
 
 @njit(cache=True, parallel=True)
-def run_impacts(
-    trans,
-    gin0,
-    gin1,
-    out_d,
-    out_v,
-    out_dc,
-    reach_w,
-    metric,
-    damp_blocks,
-    damp_rows,
-    ball_trans,
-    ball_g0,
-    ball_g1,
-    inv_ks,
-    code,
-    p0,
-    p1,
-    p2,
-    ball_velocity,
-    state0,
-    x_o,
-    cross_tol,
-    dt,
-    max_steps,
-    extra_steps,
-    force_tol,
-    stop_on_snap,
-    record,
-    out_ball,
-    out_state,
-    summary,
-    history,
-):
+def run_impacts(frame, points, ball, controls, out):
     """Advance P impacts from first touch until the ball has left for good.
 
     The racket is a linear system in real 2x2 blocks (:mod:`racket.system`).  The outputs
@@ -240,202 +210,256 @@ def run_impacts(
 
     Parameters
     ----------
-    trans : (nb, 2, 2)
-        Exact step of each block: s_next = trans s + gin0 F_start + gin1 F_end.
-    gin0, gin1 : (P, nb, 2)
-        Each block's response to a unit contact force at each impact point, varying
-        linearly over the step (force at the step's start and end).
-    out_d, out_v, out_dc : (P, nb, 2)
-        Rows giving the impact point's displacement, velocity and dc (rigid-body) velocity
-        from the block states.
-    reach_w : (P, nb)
-        Size of each block's contribution to the point's displacement (0 for dc blocks).
-    metric : (nb, 2)
-        sqrt(metric . s**2) bounds a block's future amplitude.
-    damp_blocks, damp_rows : (R, K) int, (R, K, 2)
-        Dissipated power = sum_r (sum_k damp_rows[r, k] . s[damp_blocks[r, k]])**2 (the K
-        blocks of each row that can be non-zero: one for a free racket's diagonal damping).
-    ball_trans, ball_g0, ball_g1 : (2, 2), (2,), (2,)
-        The same for the ball (force -F on it).
-    inv_ks : float
-        1 / string-bed stiffness [m/N].
-    code, p0, p1, p2 :
-        Ball law (see the module docstring).
-    ball_velocity : (P,)
-        Ball velocity at first touch [m/s] (towards the racket positive).
-    state0 : (P, nb, 2)
-        Block states at first touch (a swung racket's rigid-body motion).
-    x_o : (P,)
-        Sine law's Xo per impact [m] (ignored by other laws).
-    cross_tol : float
-        A sine-law ball closer than this times Xo to its fold's maximum may cross the fold.
-    dt : float
-        Time step [s].
-    max_steps, extra_steps : int
-        Most steps in all; steps to go on after the ball has left for good.
-    force_tol : float
-        A sine-law contact approaching a common speed without a fold ends when its force
-        has fallen to this fraction of its peak, and the relative speed to this fraction of
-        the closing speed.
-    stop_on_snap : bool
-        Stop an impact at its first snap (an Xo search needs no more).
-    record : bool
-        Fill ``history`` (as far as it reaches).
-    out_ball : (P, 2), out_state : (P, nb, 2), summary : (P, N_SUMMARY),
-    history : (N_HISTORY, P, T)
-        Outputs: ball and block states at the final separation, summary numbers,
-        histories of the first T steps (if record).
+    frame : racket.layout.Frame
+        The racket's blocks, the same for every impact.
+    points : racket.layout.Points
+        What differs between the P impacts (the impact point, the ball's speed, Xo).
+    ball : racket.layout.BallModel
+        The ball: its free step and its law.
+    controls : racket.layout.Controls
+        Time step, step budget, tolerances, whether to stop at a snap or record.
+    out : racket.layout.Outputs
+        Filled: ball and block states at the final separation, summary numbers and
+        histories of the first T steps (if recorded).
     """
-    n_points, nb = reach_w.shape
-    for p in prange(n_points):
-        s = state0[p].copy()
-        u, ud = 0.0, ball_velocity[p]
-        c = -ball_g1[0]  # ball displacement per unit force at the step end, sign flipped
-        for j in range(nb):
-            c += out_d[p, j, 0] * gin1[p, j, 0] + out_d[p, j, 1] * gin1[p, j, 1]
-        a = inv_ks + c
-        # The point's displacement after a force-free step: dT . s + c0 F (F the force at
-        # the step's start).
-        d_t = np.empty((nb, 2))
-        c0 = 0.0
-        for j in range(nb):
-            d_t[j, 0] = out_d[p, j, 0] * trans[j, 0, 0] + out_d[p, j, 1] * trans[j, 1, 0]
-            d_t[j, 1] = out_d[p, j, 0] * trans[j, 0, 1] + out_d[p, j, 1] * trans[j, 1, 1]
-            c0 += out_d[p, j, 0] * gin0[p, j, 0] + out_d[p, j, 1] * gin0[p, j, 1]
-        force, f_peak, x_ball, snapped = 0.0, 0.0, 0.0, False
-        residual = -math.inf
-        damping_loss = 0.0
-        sine_work = 0.0
-        power_prev = _power(damp_blocks, damp_rows, s)
-        stop_at = -1  # step at which to stop, once the ball has left for good
-        recontacts = -1  # contacts after the first
-        # The state when the ball last left (force back to zero).
-        sep_step, sep_u, sep_ud, sep_x = 0, u, ud, 0.0
-        sep_damping, sep_work, sep_contact = 0.0, 0.0, 0.0
-        sep_s = s.copy()
-        step = 0
-        closing = ud - _dot(out_v, p, s, nb)
-        if record:
-            history[H_BALL_VEL, p, 0] = ud
-            history[H_POINT_VEL, p, 0] = _dot(out_v, p, s, nb)
-            history[H_POINT_VEL_DC, p, 0] = _dot(out_dc, p, s, nb)
-        while step < max_steps and step != stop_at:
-            # Free prediction (no force at the step end).
-            u_p = ball_trans[0, 0] * u + ball_trans[0, 1] * ud + ball_g0[0] * force
-            ud_p = ball_trans[1, 0] * u + ball_trans[1, 1] * ud + ball_g0[1] * force
-            z_pred = u_p - c0 * force
-            for j in range(nb):
-                z_pred -= d_t[j, 0] * s[j, 0] + d_t[j, 1] * s[j, 1]
-            if code == SINE:
-                x_before = x_ball
-                f_new, x_ball, step_residual = sine_step(p0, x_o[p], a, z_pred, x_ball, cross_tol)
-                sine_work += 0.5 * (force + f_new) * (x_ball - x_before)
-                if step_residual > 0.0 and not snapped:
-                    snapped = True
-                    residual = step_residual
-                    if stop_on_snap:
-                        break
-                elif not snapped:
-                    residual = max(residual, step_residual)
-            else:
-                f_new = monotone_force(code, p0, p1, p2, a, z_pred, f_peak)
-            # Advance everything with the force varying from `force` to `f_new`.
-            u_new = u_p + ball_g1[0] * f_new
-            ud_new = ud_p + ball_g1[1] * f_new
-            for j in range(nb):
-                s0 = (
-                    trans[j, 0, 0] * s[j, 0]
-                    + trans[j, 0, 1] * s[j, 1]
-                    + gin0[p, j, 0] * force
-                    + gin1[p, j, 0] * f_new
-                )
-                s1 = (
-                    trans[j, 1, 0] * s[j, 0]
-                    + trans[j, 1, 1] * s[j, 1]
-                    + gin0[p, j, 1] * force
-                    + gin1[p, j, 1] * f_new
-                )
-                s[j, 0] = s0
-                s[j, 1] = s1
-            power = _power(damp_blocks, damp_rows, s)
-            damping_loss += 0.5 * (power + power_prev) * dt
-            power_prev = power
-            w_dot = _dot(out_v, p, s, nb)
-            w_dot_dc = _dot(out_dc, p, s, nb)
-            z_now = u_new - _dot(out_d, p, s, nb)
-            u, ud = u_new, ud_new
-            if f_new > 0.0 and force == 0.0:
-                recontacts += 1
-                stop_at = -1  # caught again: not over yet
-            left = f_new == 0.0 and force > 0.0
-            force = f_new
-            f_peak = max(f_peak, force)
-            step += 1
-            if record and step < history.shape[2]:
-                history[H_FORCE, p, step] = force
-                if code == SINE:
-                    history[H_BALL_COMP, p, step] = x_ball
-                else:
-                    history[H_BALL_COMP, p, step] = ball_compression(
-                        code, p0, p1, p2, force, f_peak
-                    )
-                history[H_STRING, p, step] = force * inv_ks
-                history[H_BALL_VEL, p, step] = ud
-                history[H_POINT_VEL, p, step] = w_dot
-                history[H_POINT_VEL_DC, p, step] = w_dot_dc
-            asymptotic = (
-                code == SINE
-                and 0.0 < force < force_tol * f_peak
-                and abs(ud - w_dot) < force_tol * closing
-            )
-            if left or asymptotic:
-                sep_step, sep_u, sep_ud, sep_x = step, u, ud, x_ball
-                sep_damping, sep_work = damping_loss, sine_work
-                sep_contact = (step - 1) * dt if left else step * dt
-                for j in range(nb):
-                    sep_s[j, 0] = s[j, 0]
-                    sep_s[j, 1] = s[j, 1]
-            if asymptotic:
-                stop_at = step  # common speed approached asymptotically (no fold)
-                break
-            if stop_at < 0 and force == 0.0 and w_dot_dc > ud:
-                # Open and separating in the dc motion: over for good once the gap exceeds
-                # the largest deflection the remaining vibration can bring to the point.
-                if code == SINE:
-                    z_open = x_ball
-                else:
-                    z_open = ball_compression(code, p0, p1, p2, 0.0, f_peak)
-                reach = 0.0
-                for j in range(nb):
-                    if reach_w[p, j] > 0.0:
-                        reach += reach_w[p, j] * math.sqrt(
-                            metric[j, 0] * s[j, 0] ** 2 + metric[j, 1] * s[j, 1] ** 2
-                        )
-                if z_open - z_now >= reach:
-                    stop_at = step + extra_steps
-        out_ball[p, 0] = sep_u
-        out_ball[p, 1] = sep_ud
-        for j in range(nb):
-            out_state[p, j, 0] = sep_s[j, 0]
-            out_state[p, j, 1] = sep_s[j, 1]
-        summary[p, T_END] = sep_step * dt
-        summary[p, T_CONTACT] = sep_contact
-        summary[p, F_PEAK] = f_peak
-        summary[p, SINE_WORK] = sep_work
-        summary[p, DAMPING_LOSS] = sep_damping
-        summary[p, SNAPPED] = 1.0 if snapped else 0.0
-        summary[p, ENDED] = 1.0 if step == stop_at else 0.0
-        summary[p, SNAP_RESIDUAL] = residual
-        summary[p, X_END] = sep_x
-        summary[p, RECONTACTS] = max(recontacts, 0)
+    for p in prange(points.ball_velocity.size):
+        _one_impact(frame, points, ball, controls, out, p)
 
 
 @njit(cache=True)
-def _dot(rows, p, s, nb):
-    """rows[p] . s over all blocks."""
-    total = 0.0
+def _one_impact(frame, points, ball, controls, out, p):
+    """Impact ``p`` of :func:`run_impacts`."""
+    trans, gin0, gin1, out_d = frame.trans, points.gin0[p], points.gin1[p], points.out_d[p]
+    nb = trans.shape[0]
+    dt, law, params, sine = controls.dt, ball.law, ball.params, ball.law == SINE
+    record = controls.record and out.history.shape[2] > 1
+    s = points.state0[p].copy()
+    u, ud = 0.0, points.ball_velocity[p]
+    x_o = points.x_o[p]
+    # Compression change per unit force at the step's end (ball and point), and the
+    # compliance the force solve sees: the series compliance plus that.
+    c = -ball.g1[0]
     for j in range(nb):
-        total += rows[p, j, 0] * s[j, 0] + rows[p, j, 1] * s[j, 1]
+        c += out_d[j, 0] * gin1[j, 0] + out_d[j, 1] * gin1[j, 1]
+    a = points.series[p] + c
+    force, f_peak, x_ball, snapped = 0.0, 0.0, 0.0, False
+    residual = -math.inf
+    damping_loss, sine_work = 0.0, 0.0
+    power_prev = _power(frame.damp_blocks, frame.damp_rows, s)
+    stop_at = -1  # step at which to stop, once the ball has left for good
+    recontacts = -1  # contacts after the first
+    # The state when the ball last left (force back to zero).
+    sep_step, sep_u, sep_ud, sep_x = 0, u, ud, 0.0
+    sep_damping, sep_work, sep_contact = 0.0, 0.0, 0.0
+    sep_s = s.copy()
+    closing = ud - _dot(points.out_v[p], s)
+    if record:
+        _record(
+            out.history,
+            p,
+            0,
+            0.0,
+            0.0,
+            0.0,
+            ud,
+            _dot(points.out_v[p], s),
+            _dot(points.out_dc[p], s),
+        )
+    step = 0
+    while step < controls.max_steps and step != stop_at:
+        # Free step (force going from `force` to 0), then the force at the step's end.
+        u_p = ball.trans[0, 0] * u + ball.trans[0, 1] * ud + ball.g0[0] * force
+        ud_p = ball.trans[1, 0] * u + ball.trans[1, 1] * ud + ball.g0[1] * force
+        z_pred = u_p - _free_step(trans, gin0, out_d, s, force)
+        if sine:
+            x_before = x_ball
+            f_new, x_ball, step_residual = sine_step(
+                params[0], x_o, a, z_pred, x_ball, controls.cross_tol
+            )
+            sine_work += 0.5 * (force + f_new) * (x_ball - x_before)
+            if step_residual > 0.0 and not snapped:
+                snapped = True
+                residual = step_residual
+                if controls.stop_on_snap:
+                    break
+            elif not snapped:
+                residual = max(residual, step_residual)
+        else:
+            f_new = monotone_force(law, params, a, z_pred, f_peak)
+        # Add the response to the force at the step's end.
+        u = u_p + ball.g1[0] * f_new
+        ud = ud_p + ball.g1[1] * f_new
+        for j in range(nb):
+            s[j, 0] += gin1[j, 0] * f_new
+            s[j, 1] += gin1[j, 1] * f_new
+        tau = 1.0  # fraction of the step at which the contact opened
+        if f_new == 0.0 and force > 0.0 and not sine:
+            tau = _opening_fraction(law, params, points.series[p], force, f_peak, z_pred)
+            # The force reached zero at tau dt, not at the step's end: replace the hold
+            # (force -> 0 over the step) by the one with the same impulse and first moment
+            # as force -> 0 over tau dt then nothing, by superposition.
+            d0 = force * tau * (2.0 - tau) - force
+            d1 = -force * tau * (1.0 - tau)
+            u += ball.g0[0] * d0 + ball.g1[0] * d1
+            ud += ball.g0[1] * d0 + ball.g1[1] * d1
+            for j in range(nb):
+                s[j, 0] += gin0[j, 0] * d0 + gin1[j, 0] * d1
+                s[j, 1] += gin0[j, 1] * d0 + gin1[j, 1] * d1
+        power = _power(frame.damp_blocks, frame.damp_rows, s)
+        damping_loss += 0.5 * (power + power_prev) * dt
+        power_prev = power
+        if f_new > 0.0 and force == 0.0:
+            recontacts += 1
+            stop_at = -1  # caught again: not over yet
+        left = f_new == 0.0 and force > 0.0
+        force = f_new
+        f_peak = max(f_peak, force)
+        step += 1
+        if record and step < out.history.shape[2]:
+            x_now = x_ball if sine else ball_compression(law, params, force, f_peak)
+            _record(
+                out.history,
+                p,
+                step,
+                force,
+                x_now,
+                force * ball.inv_ks,
+                ud,
+                _dot(points.out_v[p], s),
+                _dot(points.out_dc[p], s),
+            )
+        asymptotic = (
+            sine
+            and 0.0 < force < controls.force_tol * f_peak
+            and abs(ud - _dot(points.out_v[p], s)) < controls.force_tol * closing
+        )
+        if left or asymptotic:
+            # The state when the ball left, tau dt into the step (force-free since then).
+            back = (1.0 - tau) * dt
+            sep_step, sep_u, sep_ud, sep_x = step, u - back * ud, ud, x_ball
+            sep_damping, sep_work = damping_loss - back * power, sine_work
+            sep_contact = (step - 1 + tau) * dt if left and not sine else (step - 1) * dt
+            if asymptotic:
+                sep_contact = step * dt
+            _step_back(frame.blocks, s, back, sep_s)
+        if asymptotic:
+            stop_at = step  # common speed approached asymptotically (no fold)
+            break
+        if stop_at < 0 and force == 0.0 and _dot(points.out_dc[p], s) > ud:
+            # Open and separating in the dc motion: over for good once the gap exceeds
+            # the largest deflection the remaining vibration can bring to the point.
+            z_open = x_ball if sine else ball_compression(law, params, 0.0, f_peak)
+            gap = z_open - (u - _dot(out_d, s))
+            if gap >= _reach(points.reach_w[p], frame.metric, s):
+                stop_at = step + controls.extra_steps
+    out.ball[p, 0] = sep_u
+    out.ball[p, 1] = sep_ud
+    out.state[p] = sep_s
+    summary = out.summary[p]
+    summary[T_END] = sep_step * dt
+    summary[T_CONTACT] = sep_contact
+    summary[F_PEAK] = f_peak
+    summary[SINE_WORK] = sep_work
+    summary[DAMPING_LOSS] = sep_damping
+    summary[SNAPPED] = 1.0 if snapped else 0.0
+    summary[ENDED] = 1.0 if step == stop_at else 0.0
+    summary[SNAP_RESIDUAL] = residual
+    summary[X_END] = sep_x
+    summary[RECONTACTS] = max(recontacts, 0)
+
+
+@njit(cache=True)
+def _opening_fraction(law, params, series, force, f_peak, z_pred):
+    """Fraction of the step at which a monotone-law contact opened: where the approach
+    beyond the ball's residual compression, d = z - g(0), went through zero, from ``force``
+    at the step's start (d = g(force) - g(0) + series force) to the force-free prediction
+    ``z_pred`` at its end, linearly."""
+    rest = ball_compression(law, params, 0.0, f_peak)
+    d_start = ball_compression(law, params, force, f_peak) - rest + series * force
+    d_end = z_pred - rest
+    if d_start - d_end <= 0.0:
+        return 1.0
+    return min(max(d_start / (d_start - d_end), 0.0), 1.0)
+
+
+@njit(cache=True)
+def _step_back(blocks, s, back, out):
+    """Block states ``back`` seconds before ``s`` with no force acting, exp(-A back) s,
+    into ``out``."""
+    for j in range(s.shape[0]):
+        m00, m01, m10, m11 = _expm2(
+            -back * blocks[j, 0, 0],
+            -back * blocks[j, 0, 1],
+            -back * blocks[j, 1, 0],
+            -back * blocks[j, 1, 1],
+        )
+        out[j, 0] = m00 * s[j, 0] + m01 * s[j, 1]
+        out[j, 1] = m10 * s[j, 0] + m11 * s[j, 1]
+
+
+@njit(cache=True)
+def _expm2(a, b, c, d):
+    """exp of the 2x2 matrix [[a, b], [c, d]] in closed form: with t the half trace and
+    N = M - t I, N**2 = delta I, so exp(M) = e**t (C I + S N), C = cosh(sqrt(delta)) and
+    S = sinh(sqrt(delta)) / sqrt(delta) (cos and sin for delta < 0)."""
+    t = 0.5 * (a + d)
+    h = 0.5 * (a - d)
+    delta = h * h + b * c
+    if delta > 0.0:
+        q = math.sqrt(delta)
+        cc, ss = math.cosh(q), math.sinh(q) / q
+    elif delta < 0.0:
+        q = math.sqrt(-delta)
+        cc, ss = math.cos(q), math.sin(q) / q
+    else:
+        cc, ss = 1.0, 1.0
+    g = math.exp(t)
+    return g * (cc + ss * h), g * ss * b, g * ss * c, g * (cc - ss * h)
+
+
+@njit(cache=True)
+def _free_step(trans, gin0, out_d, s, force):
+    """Advance the block states ``s`` in place over a step with the force going from
+    ``force`` to zero; returns the impact point's displacement then."""
+    z = 0.0
+    for j in range(trans.shape[0]):
+        s0 = trans[j, 0, 0] * s[j, 0] + trans[j, 0, 1] * s[j, 1] + gin0[j, 0] * force
+        s1 = trans[j, 1, 0] * s[j, 0] + trans[j, 1, 1] * s[j, 1] + gin0[j, 1] * force
+        s[j, 0] = s0
+        s[j, 1] = s1
+        z += out_d[j, 0] * s0 + out_d[j, 1] * s1
+    return z
+
+
+@njit(cache=True)
+def _reach(reach_w, metric, s):
+    """The largest displacement the blocks' remaining vibration can bring to the point."""
+    reach = 0.0
+    for j in range(reach_w.size):
+        if reach_w[j] > 0.0:
+            reach += reach_w[j] * math.sqrt(
+                metric[j, 0] * s[j, 0] ** 2 + metric[j, 1] * s[j, 1] ** 2
+            )
+    return reach
+
+
+@njit(cache=True)
+def _record(history, p, step, force, compression, string, ball_velocity, velocity, velocity_dc):
+    """Write one step of impact ``p``'s histories."""
+    history[H_FORCE, p, step] = force
+    history[H_BALL_COMP, p, step] = compression
+    history[H_STRING, p, step] = string
+    history[H_BALL_VEL, p, step] = ball_velocity
+    history[H_POINT_VEL, p, step] = velocity
+    history[H_POINT_VEL_DC, p, step] = velocity_dc
+
+
+@njit(cache=True)
+def _dot(rows, s):
+    """rows . s over all blocks."""
+    total = 0.0
+    for j in range(s.shape[0]):
+        total += rows[j, 0] * s[j, 0] + rows[j, 1] * s[j, 1]
     return total
 
 

@@ -1,10 +1,115 @@
-"""The layout of the time-stepper's inputs and outputs: ball-law codes, the columns of its
-per-impact summary and the rows of its histories (:func:`racket.kernel.run_impacts`).
+"""The time-stepper's inputs and outputs (:func:`racket.kernel.run_impacts`): four named
+tuples of arrays and numbers in, one out, the columns of the per-impact summary and the
+rows of the histories.
 
-Kept apart from the compiled kernel so that reading results needs no numba.
+Kept apart from the compiled kernel so that preparing its inputs and reading its results
+needs no numba.
 """
 
-LINEAR, POWER, SINE = 0, 1, 2
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+
+from ball.laws import LINEAR, POWER, SINE  # noqa: F401  (the ball-law codes, re-exported)
+
+
+class Frame(NamedTuple):
+    """The racket's linear dynamics in real 2x2 blocks (:mod:`racket.system`), the same for
+    every impact point.
+
+    blocks : (nb, 2, 2) the blocks: s' = blocks s (+ the force's input).
+    trans : (nb, 2, 2) exact step of each block (s_next = trans s + inputs).
+    metric : (nb, 2) sqrt(metric . s**2) bounds a block's future amplitude.
+    damp_blocks, damp_rows : (R, K) int, (R, K, 2) dissipated power = sum_r (sum_k
+        damp_rows[r, k] . s[damp_blocks[r, k]])**2, the K blocks of each row that can be
+        non-zero (one for a free racket's diagonal damping).
+    """
+
+    blocks: np.ndarray
+    trans: np.ndarray
+    metric: np.ndarray
+    damp_blocks: np.ndarray
+    damp_rows: np.ndarray
+
+
+class Points(NamedTuple):
+    """What differs between impacts: arrays whose first axis runs over them (P).
+
+    gin0, gin1 : (P, nb, 2) each block's response over a step to a unit contact force at
+        the impact point, varying linearly from the step's start (gin0) or to its end (gin1).
+    out_d, out_v, out_dc : (P, nb, 2) rows giving the impact point's displacement, velocity
+        and dc (rigid-body) velocity from the block states.
+    reach_w : (P, nb) size of each block's share of the point's displacement (0 for dc).
+    series : (P,) compliance in series with the ball [m/N]: the string bed's, plus the
+        residual flexibility of the bending modes left out (static correction).
+    ball_velocity : (P,) ball velocity at first touch [m/s], towards the racket positive.
+    state0 : (P, nb, 2) block states at first touch (a swung racket's rigid-body motion).
+    x_o : (P,) the sine law's Xo [m] (ignored by the other laws).
+    """
+
+    gin0: np.ndarray
+    gin1: np.ndarray
+    out_d: np.ndarray
+    out_v: np.ndarray
+    out_dc: np.ndarray
+    reach_w: np.ndarray
+    series: np.ndarray
+    ball_velocity: np.ndarray
+    state0: np.ndarray
+    x_o: np.ndarray
+
+
+class BallModel(NamedTuple):
+    """The ball: its exact step as a free mass under a force varying linearly over the
+    step (force -F on it), and its law (``law``, ``params`` from
+    :attr:`ball.laws.MonotoneLaw.kernel_law`).
+
+    trans : (2, 2); g0, g1 : (2,) as for a block.
+    law : int (LINEAR, POWER or SINE); params : (3,) the law's numbers.
+    inv_ks : 1 / string-bed stiffness [m/N] (for the string deflection history).
+    """
+
+    trans: np.ndarray
+    g0: np.ndarray
+    g1: np.ndarray
+    law: int
+    params: np.ndarray
+    inv_ks: float
+
+
+class Controls(NamedTuple):
+    """How to step.
+
+    dt : time step [s].  max_steps, extra_steps : most steps in all; steps to go on after
+    the ball has left for good.  force_tol : a sine-law contact approaching a common speed
+    without a fold ends when its force has fallen to this fraction of its peak and the
+    relative speed to this fraction of the closing speed.  cross_tol : a sine-law ball
+    closer than this times Xo to its fold's maximum may cross the fold.  stop_on_snap :
+    stop an impact at its first snap (an Xo search needs no more).  record : fill the
+    histories (as far as they reach).
+    """
+
+    dt: float
+    max_steps: int
+    extra_steps: int
+    force_tol: float
+    cross_tol: float
+    stop_on_snap: bool
+    record: bool
+
+
+class Outputs(NamedTuple):
+    """Filled by the kernel: ball (P, 2) and block (P, nb, 2) states when the ball finally
+    left, the summary (P, N_SUMMARY) and the histories (N_HISTORY, P, T) of the first T
+    steps (if recorded)."""
+
+    ball: np.ndarray
+    state: np.ndarray
+    summary: np.ndarray
+    history: np.ndarray
+
 
 # Columns of the per-impact summary array.
 (

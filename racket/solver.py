@@ -40,14 +40,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ball import (
-    Ball,
-    LinearHysteresis,
-    LinearSpring,
-    PowerLawHysteresis,
-    SineLaw,
-    warn_if_squashed,
-)
+from ball import Ball, SineLaw, warn_if_squashed
 from common.checks import finite, in_range, shown
 from common.checks import speed as check_speed
 from racket import layout
@@ -57,8 +50,17 @@ from racket.system import block_steps, racket_system
 COMPILE_SECONDS = 20
 """About how long numba takes to compile the kernel on a 2-core machine (measured 12-18 s)."""
 
-DEFAULT_STEPS_PER_CONTACT = 600
-"""Time steps per estimated contact time: e then changes by < 1e-4 when halved."""
+DEFAULT_STEPS_PER_CONTACT = 300
+"""Time steps per estimated contact time for the monotone ball laws.  With the static
+correction for the modes left out and the contact's opening placed within its step, e is
+within 1.2e-5 of a 64-mode, 9600-step solution at every point of the paper racket (free and
+hand-held; linear, elastic and power-law balls at 20 m/s), and the error falls as dt**2
+(``benchmarks/accuracy.py`` measures the frontier of steps and modes)."""
+
+SINE_STEPS_PER_CONTACT = 600
+"""Time steps per estimated contact time for the unhappy ball (sine law), whose fold and
+opening are not placed within their step: e within 1.6e-5 of a 2400-step solution on the
+paper racket (10.3 g and 57 g balls at 10 m/s)."""
 
 FORCE_TOL = 1e-9
 """An unhappy-ball contact that approaches a common speed asymptotically is over when its
@@ -105,19 +107,6 @@ _HISTORY_ROWS = {
     "point_velocity_dc_history": layout.H_POINT_VEL_DC,
 }
 """Impact attribute of each history row of the kernel."""
-
-
-def _law_code(law):
-    """Kernel code and parameters of a ball law."""
-    if isinstance(law, LinearSpring):
-        return layout.LINEAR, law.k, 1.0, 0.0
-    if isinstance(law, LinearHysteresis):
-        return layout.LINEAR, law.k, law.e, 0.0
-    if isinstance(law, PowerLawHysteresis):
-        return layout.POWER, law.k, law.a, law.b
-    if isinstance(law, SineLaw):
-        return layout.SINE, law.k0, 0.0, 0.0
-    raise ValueError(f"ball law {law!r} is not supported on a racket")
 
 
 def contact_time_scale(ball: Ball, string_stiffness: float, closing_speed: float) -> float:
@@ -233,7 +222,7 @@ def impact(
     *,
     swing_speed: float = 0.0,
     pivot: float | None = None,
-    steps_per_contact: int = DEFAULT_STEPS_PER_CONTACT,
+    steps_per_contact: int | None = None,
     watch_after: float = 0.0,
     histories: bool = False,
 ) -> Impact:
@@ -257,8 +246,10 @@ def impact(
         The swing's instantaneous centre of rotation [m from the tip], beyond every impact
         point and at most 1 m beyond the butt (e.g. the wrist, 5 cm beyond it); None for
         pure translation.
-    steps_per_contact : int
-        Time steps per estimated contact time, in [50, 100000].
+    steps_per_contact : int, optional
+        Time steps per estimated contact time, in [50, 100000]; default
+        ``DEFAULT_STEPS_PER_CONTACT`` (300), ``SINE_STEPS_PER_CONTACT`` (600) for the
+        unhappy ball.
     watch_after : float
         Extra time [s], in [0, 1], to keep stepping after the solver has decided that the
         ball has left for good, watching for another contact; the outcome does not depend
@@ -296,8 +287,10 @@ def impact(
                 f"pivot must lie beyond the impact points and at most {PIVOT_BEYOND_BUTT:g} m "
                 f"beyond the butt, in ({x.max():g}, {reach:g}] m from the tip, got {shown(pivot)}"
             )
-    steps_per_contact = in_range("steps_per_contact", steps_per_contact, 50, 100_000)
-    steps_per_contact = int(steps_per_contact)
+    if steps_per_contact is None:
+        sine = isinstance(ball.law, SineLaw)
+        steps_per_contact = SINE_STEPS_PER_CONTACT if sine else DEFAULT_STEPS_PER_CONTACT
+    steps_per_contact = int(in_range("steps_per_contact", steps_per_contact, 50, 100_000))
     watch_after = in_range("watch_after", watch_after, 0.0, 1.0, "s")
     if swing_speed and racket.support != "free":
         raise ValueError(
@@ -416,15 +409,18 @@ def impact(
 
 
 class _Stepper:
-    """The kernel's inputs for one racket, ball and set of impact points, precomputed once
-    and run for any Xo (see :func:`racket.kernel.run_impacts`)."""
+    """The kernel's inputs for one racket, ball and set of impact points, prepared once and
+    run for any Xo (see :func:`racket.kernel.run_impacts`)."""
 
     def __init__(self, racket, ball, x, speed, swing_speed, pivot, steps_per_contact):
         k_s = racket.strings.stiffness
         self.closing = speed + swing_speed
         self.dt = contact_time_scale(ball, k_s, self.closing) / steps_per_contact
         self.max_steps = 12 * steps_per_contact
-        self.code, p0, p1, p2 = _law_code(ball.law)
+        law = getattr(ball.law, "kernel_law", None)
+        if law is None:
+            raise ValueError(f"ball law {ball.law!r} is not supported on a racket")
+        self.code = law[0]
         self.modes = modes = racket.beam.modes
         self.system = system = racket_system(modes, racket.support, racket.hand)
         self.n = n = system.count
@@ -433,71 +429,74 @@ class _Stepper:
         trans, g0, g1 = system.step(self.dt)
         unit = system.inputs(phi)
         out_d, out_v, out_dc = system.outputs(phi)
-        damp_blocks, damp_rows = system.damping_rows()
         self.swing_qd = _swing_velocities(modes, x, swing_speed, pivot)
         z0 = np.zeros((x.size, 2 * n))
         if swing_speed:
             z0[:, n : n + 2] = self.swing_qd
         self.position = x
-        # Per-point inputs (first axis over the impact points) and shared ones.
-        self.per_point = dict(
+        series = np.full(x.size, 1.0 / k_s)
+        if n:  # static correction: the bending modes left out respond quasi-statically
+            series += racket.beam.residual_flexibility(x)
+        self.points = layout.Points(
             gin0=np.einsum("jab,pjb->pja", g0, unit),
             gin1=np.einsum("jab,pjb->pja", g1, unit),
             out_d=out_d,
             out_v=out_v,
             out_dc=out_dc,
             reach_w=np.linalg.norm(out_d, axis=2) * ~system.dc,
+            series=series,
             ball_velocity=np.full(x.size, speed),
             state0=system.state(z0),
+            x_o=np.full(x.size, np.nan),
         )
-        self.shared = dict(
-            trans=trans,
-            metric=system.metric,
-            damp_blocks=damp_blocks,
-            damp_rows=damp_rows,
-            ball_trans=ball_trans,
-            ball_g0=ball_g0[:, 1] / -ball.mass,
-            ball_g1=ball_g1[:, 1] / -ball.mass,
+        self.frame = layout.Frame(
+            np.ascontiguousarray(system.blocks, dtype=float),
+            trans,
+            system.metric,
+            *system.damping_rows(),
+        )
+        self.ball = layout.BallModel(
+            trans=ball_trans,
+            g0=ball_g0[:, 1] / -ball.mass,
+            g1=ball_g1[:, 1] / -ball.mass,
+            law=law[0],
+            params=np.array(law[1], dtype=float),
             inv_ks=1.0 / k_s,
-            code=self.code,
-            p0=p0,
-            p1=p1,
-            p2=p2,
         )
 
     def run(self, x_o, subset=None, stop_on_snap=False, extra_steps=0, history_steps=0):
         """Run the impacts (all, or those indexed by ``subset``) with Xo ``x_o`` [m] per
-        impact run; returns the kernel's outputs (ball, block states, summary, history),
-        the history over the first ``history_steps`` steps (none if 0)."""
-        pick = slice(None) if subset is None else subset
-        inputs = {k: np.ascontiguousarray(v[pick]) for k, v in self.per_point.items()}
-        count = inputs["ball_velocity"].size
-        nb = self.shared["trans"].shape[0]
-        out_ball = np.zeros((count, 2))
-        out_state = np.zeros((count, nb, 2))
-        summary = np.zeros((count, layout.N_SUMMARY))
-        max_steps = self.max_steps + extra_steps
-        hist = np.zeros((layout.N_HISTORY, count, history_steps) if history_steps else (1, 1, 1))
+        impact run; returns the kernel's :class:`~racket.layout.Outputs` (ball, block
+        states, summary, history), the history over the first ``history_steps`` steps
+        (none if 0)."""
+        points = self.points
+        if subset is not None:
+            points = layout.Points(*(np.ascontiguousarray(v[subset]) for v in points))
+        points = points._replace(x_o=np.ascontiguousarray(x_o, dtype=float))
+        count = points.ball_velocity.size
+        nb = self.frame.trans.shape[0]
+        controls = layout.Controls(
+            dt=self.dt,
+            max_steps=self.max_steps + extra_steps,
+            extra_steps=extra_steps,
+            force_tol=FORCE_TOL,
+            cross_tol=CROSS_TOL,
+            stop_on_snap=stop_on_snap,
+            record=history_steps > 0,
+        )
+        out = layout.Outputs(
+            ball=np.zeros((count, 2)),
+            state=np.zeros((count, nb, 2)),
+            summary=np.zeros((count, layout.N_SUMMARY)),
+            history=np.zeros(
+                (layout.N_HISTORY, count, history_steps) if history_steps else (1, 1, 1)
+            ),
+        )
         from racket import kernel  # numba loads on first use (import time)
 
         with _compile_notice(kernel.run_impacts):
-            kernel.run_impacts(
-                **self.shared,
-                **inputs,
-                x_o=np.ascontiguousarray(x_o, dtype=float),
-                cross_tol=CROSS_TOL,
-                dt=self.dt,
-                max_steps=max_steps,
-                extra_steps=extra_steps,
-                force_tol=FORCE_TOL,
-                stop_on_snap=stop_on_snap,
-                record=history_steps > 0,
-                out_ball=out_ball,
-                out_state=out_state,
-                summary=summary,
-                history=hist,
-            )
-        return out_ball, out_state, summary, hist
+            kernel.run_impacts(self.frame, points, self.ball, controls, out)
+        return out
 
 
 @contextmanager

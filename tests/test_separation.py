@@ -59,21 +59,23 @@ def test_hand_hardly_matters_during_the_contact():
 
 def _runge_kutta_e(racket, position, speed, dt=4e-7):
     """e at separation from classical RK4 on q'' + C q' + K q = phi F, the ball a point
-    mass on a LinearHysteresis spring in series with the strings."""
+    mass on a LinearHysteresis spring in series with the strings and the residual
+    flexibility of the bending modes left out (the model's static correction)."""
     modes = racket.beam.modes
     system = held_system(modes, racket.hand)
     k_mat, c_mat, n = system.stiffness, system.damping, system.count
     phi = modes.shape(np.array([position]))[:, 0]
-    k_b, e_b, k_s, m = BALL.law.k, BALL.law.e, racket.strings.stiffness, BALL.mass
+    k_b, e_b, m = BALL.law.k, BALL.law.e, BALL.mass
+    series = 1.0 / racket.strings.stiffness + racket.beam.residual_flexibility(position)[0]
 
     def force(z, f_max):
         if z <= 0.0:
             return 0.0
-        f = z / (1.0 / k_b + 1.0 / k_s)  # loading line
+        f = z / (1.0 / k_b + series)  # loading line
         if f >= f_max:
             return f
         e2 = e_b**2  # unloading line of slope k/e^2 from the peak
-        return max((z - f_max * (1.0 - e2) / k_b) / (e2 / k_b + 1.0 / k_s), 0.0)
+        return max((z - f_max * (1.0 - e2) / k_b) / (e2 / k_b + series), 0.0)
 
     def rhs(y, f_max):
         q, qd, u, ud = y[:n], y[n : 2 * n], y[2 * n], y[2 * n + 1]
