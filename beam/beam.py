@@ -254,11 +254,17 @@ class Beam:
         for a force at x, all bending modes included: sum_k phi_k(x)**2 / omega_k**2."""
         return self._flexibility(np.atleast_1d(np.asarray(x, dtype=float)))
 
-    def residual_flexibility(self, x) -> np.ndarray:
+    def residual_flexibility(self, x, shapes=None) -> np.ndarray:
         """The part [m/N] of :meth:`static_flexibility` from the bending modes not kept
-        (beyond ``n_modes``): sum_{k > n_modes} phi_k(x)**2 / omega_k**2, >= 0."""
+        (beyond ``n_modes``): sum_{k > n_modes} phi_k(x)**2 / omega_k**2, >= 0.
+
+        ``shapes``, if given, are ``self.modes.shape(x)`` (to spare computing them again).
+        The impact solver adds it in series with the strings: the modes left out, far
+        above what an impact excites, respond to the force quasi-statically (the static
+        correction, or mode acceleration method)."""
         modes = self.modes
-        kept = np.sum(modes.shape(x)[2:] ** 2 / modes.omega[2:, None] ** 2, axis=0)
+        phi = modes.shape(x) if shapes is None else shapes
+        kept = np.sum(phi[2:] ** 2 / modes.omega[2:, None] ** 2, axis=0)
         return np.maximum(self.static_flexibility(x) - kept, 0.0)
 
     def compute_modes(self, method: str = "fem") -> Modes:

@@ -197,11 +197,13 @@ class FemFlexibility:
     nodes: np.ndarray
     matrix: np.ndarray
 
+    def __post_init__(self):
+        dof = 2 * np.arange(self.nodes.size - 1)[:, None] + np.arange(4)  # (E, 4)
+        object.__setattr__(self, "_blocks", self.matrix[dof[:, :, None], dof[:, None, :]])
+
     def __call__(self, x) -> np.ndarray:
         x = np.asarray(x, dtype=float)
         lengths = np.diff(self.nodes)
         e = np.clip(np.searchsorted(self.nodes, x, side="right") - 1, 0, lengths.size - 1)
         n = hermite((x - self.nodes[e]) / lengths[e], lengths[e])  # (4, len(x))
-        dof = 2 * e[None, :] + np.arange(4)[:, None]  # (4, len(x))
-        block = self.matrix[dof[:, None, :], dof[None, :, :]]  # (4, 4, len(x))
-        return np.einsum("ix,ijx,jx->x", n, block, n)
+        return np.einsum("ix,xij,jx->x", n, self._blocks[e], n)

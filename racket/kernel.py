@@ -118,15 +118,26 @@ def _power_force(target, c, f_lo, f_hi, f_max, k, a, b):
 
 
 @njit(cache=True)
-def monotone_force(law, params, a, z_pred, f_max):
-    """Force solving g_ball(F) + a F = z_pred (a = 1/k_s + c), 0 if the contact is open."""
+def force_coefficients(law, params, a):
+    """Numbers of the force solve that stay the same over an impact (``a`` = the series
+    compliance plus the step's): for a linear law, 1 / (1/k + a) and 1 / (e**2/k + a),
+    the slopes of force against z_pred on loading and unloading, and (1 - e**2) / k, the
+    residual compression per unit of the largest force."""
     if law == LINEAR:
         k, e2 = params[0], params[1] * params[1]
-        f = z_pred / (1.0 / k + a)  # loading line
+        return 1.0 / (1.0 / k + a), 1.0 / (e2 / k + a), (1.0 - e2) / k
+    return 0.0, 0.0, 0.0
+
+
+@njit(cache=True)
+def monotone_force(law, params, coef, a, z_pred, f_max):
+    """Force solving g_ball(F) + a F = z_pred (a = 1/k_s + c), 0 if the contact is open;
+    ``coef`` from :func:`force_coefficients`."""
+    if law == LINEAR:
+        f = z_pred * coef[0]  # loading line
         if f >= f_max:
             return f
-        f = (z_pred - f_max * (1.0 - e2) / k) / (e2 / k + a)  # unloading line
-        return max(f, 0.0)
+        return max((z_pred - f_max * coef[2]) * coef[1], 0.0)  # unloading line
     k, p, q = params[0], params[1], params[2]
     switch = _power_compression(f_max, f_max, k, p, q) + a * f_max
     if z_pred >= switch:
@@ -229,8 +240,19 @@ def run_impacts(frame, points, ball, controls, out):
 @njit(cache=True)
 def _one_impact(frame, points, ball, controls, out, p):
     """Impact ``p`` of :func:`run_impacts`."""
-    trans, gin0, gin1, out_d = frame.trans, points.gin0[p], points.gin1[p], points.out_d[p]
+    trans, out_d = frame.trans, points.out_d[p]
     nb = trans.shape[0]
+    # Each block's response over a step to a unit force at the point, varying linearly
+    # from the step's start (gin0) or to its end (gin1).
+    gin0, gin1 = np.empty((nb, 2)), np.empty((nb, 2))
+    for j in range(nb):
+        for r in range(2):
+            gin0[j, r] = (
+                frame.g0[j, r, 0] * points.unit[p, j, 0] + frame.g0[j, r, 1] * points.unit[p, j, 1]
+            )
+            gin1[j, r] = (
+                frame.g1[j, r, 0] * points.unit[p, j, 0] + frame.g1[j, r, 1] * points.unit[p, j, 1]
+            )
     dt, law, params, sine = controls.dt, ball.law, ball.params, ball.law == SINE
     record = controls.record and out.history.shape[2] > 1
     s = points.state0[p].copy()
@@ -242,6 +264,7 @@ def _one_impact(frame, points, ball, controls, out, p):
     for j in range(nb):
         c += out_d[j, 0] * gin1[j, 0] + out_d[j, 1] * gin1[j, 1]
     a = points.series[p] + c
+    coef = force_coefficients(law, params, a)
     force, f_peak, x_ball, snapped = 0.0, 0.0, 0.0, False
     residual = -math.inf
     damping_loss, sine_work = 0.0, 0.0
@@ -285,7 +308,7 @@ def _one_impact(frame, points, ball, controls, out, p):
             elif not snapped:
                 residual = max(residual, step_residual)
         else:
-            f_new = monotone_force(law, params, a, z_pred, f_peak)
+            f_new = monotone_force(law, params, coef, a, z_pred, f_peak)
         # Add the response to the force at the step's end.
         u = u_p + ball.g1[0] * f_new
         ud = ud_p + ball.g1[1] * f_new

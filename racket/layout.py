@@ -20,7 +20,8 @@ class Frame(NamedTuple):
     every impact point.
 
     blocks : (nb, 2, 2) the blocks: s' = blocks s (+ the force's input).
-    trans : (nb, 2, 2) exact step of each block (s_next = trans s + inputs).
+    trans, g0, g1 : (nb, 2, 2) exact step of each block, s_next = trans s + g0 u_start +
+        g1 u_end, for a block input u varying linearly over the step.
     metric : (nb, 2) sqrt(metric . s**2) bounds a block's future amplitude.
     damp_blocks, damp_rows : (R, K) int, (R, K, 2) dissipated power = sum_r (sum_k
         damp_rows[r, k] . s[damp_blocks[r, k]])**2, the K blocks of each row that can be
@@ -29,6 +30,8 @@ class Frame(NamedTuple):
 
     blocks: np.ndarray
     trans: np.ndarray
+    g0: np.ndarray
+    g1: np.ndarray
     metric: np.ndarray
     damp_blocks: np.ndarray
     damp_rows: np.ndarray
@@ -37,8 +40,7 @@ class Frame(NamedTuple):
 class Points(NamedTuple):
     """What differs between impacts: arrays whose first axis runs over them (P).
 
-    gin0, gin1 : (P, nb, 2) each block's response over a step to a unit contact force at
-        the impact point, varying linearly from the step's start (gin0) or to its end (gin1).
+    unit : (P, nb, 2) each block's input from a unit contact force at the impact point.
     out_d, out_v, out_dc : (P, nb, 2) rows giving the impact point's displacement, velocity
         and dc (rigid-body) velocity from the block states.
     reach_w : (P, nb) size of each block's share of the point's displacement (0 for dc).
@@ -49,8 +51,7 @@ class Points(NamedTuple):
     x_o : (P,) the sine law's Xo [m] (ignored by the other laws).
     """
 
-    gin0: np.ndarray
-    gin1: np.ndarray
+    unit: np.ndarray
     out_d: np.ndarray
     out_v: np.ndarray
     out_dc: np.ndarray

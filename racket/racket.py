@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
+from functools import cached_property
 
 import numpy as np
 
@@ -124,6 +125,14 @@ class Racket:
                 f"grip_length must end below the strings, < "
                 f"{self.beam.length - self.strings.extent[1]:g} m, got {self.hand.grip_length!r}"
             )
+
+    @cached_property
+    def system(self):
+        """The racket's linear dynamics in real 2x2 blocks (:mod:`racket.system`), for its
+        support; computed once."""
+        from racket.system import racket_system
+
+        return racket_system(self.beam.modes, self.support, self.hand)
 
     def with_mass(self, mass_kg: float, position_m: float) -> Racket:
         """This racket with a point mass (lead tape) of ``mass_kg`` [kg] at ``position_m``

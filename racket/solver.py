@@ -45,7 +45,7 @@ from common.checks import finite, in_range, shown
 from common.checks import speed as check_speed
 from racket import layout
 from racket.racket import Racket
-from racket.system import block_steps, racket_system
+from racket.system import block_steps
 
 COMPILE_SECONDS = 20
 """About how long numba takes to compile the kernel on a 2-core machine (measured 12-18 s)."""
@@ -96,6 +96,11 @@ SCAN_START, SCAN_RATIO, SCAN_MAX, SCAN_DOWN_MAX, REFINE_MAX = 0.7, 1.01, 400, 40
 SCAN_DOWN_MAX times, until every impact snaps), step up by this ratio (so a gap in the
 non-snapping Xo narrower than 1 % can be missed), at most this many scan and refinement
 runs."""
+
+
+IMPACTS_PER_THREAD = 8
+"""Smallest share of a batch's impacts worth a thread of its own (one impact takes about
+20 us; starting a thread about as long)."""
 
 
 _HISTORY_ROWS = {
@@ -312,6 +317,25 @@ def impact(
             f"{ball.law.secant_stiffness(ball.mass, speed + swing_speed):.3g} N/m, strings "
             f"{racket.strings.stiffness:.3g} N/m)"
         )
+    with _one_blas_thread():
+        return _solve(
+            racket,
+            ball,
+            x,
+            scalar,
+            speed,
+            swing_speed,
+            pivot,
+            steps_per_contact,
+            watch_after,
+            histories,
+        )
+
+
+def _solve(
+    racket, ball, x, scalar, speed, swing_speed, pivot, steps_per_contact, watch_after, histories
+):
+    """:func:`impact` once its inputs are checked."""
     stepper = _Stepper(racket, ball, x, speed, swing_speed, pivot, steps_per_contact)
     code = stepper.code
     x_o = np.full(x.size, np.nan)
@@ -338,9 +362,7 @@ def impact(
     v2_total = np.sum(stepper.phi * qd, axis=1)
     mode_energy = 0.5 * (qd[:, 2:] ** 2 + (modes.omega[2 : q.shape[1]] * q[:, 2:]) ** 2)
     racket_energy = 0.5 * np.sum(rigid_qd**2, axis=1)
-    mechanical = 0.5 * np.sum(qd**2, axis=1) + 0.5 * np.einsum(
-        "pi,ij,pj->p", q, system.stiffness, q
-    )
+    mechanical = 0.5 * np.sum(qd**2 + (q @ system.stiffness) * q, axis=1)
     vibration = mechanical - racket_energy
 
     energy_initial = 0.5 * ball.mass * speed**2 + 0.5 * np.sum(stepper.swing_qd**2, axis=1)
@@ -422,12 +444,12 @@ class _Stepper:
             raise ValueError(f"ball law {ball.law!r} is not supported on a racket")
         self.code = law[0]
         self.modes = modes = racket.beam.modes
-        self.system = system = racket_system(modes, racket.support, racket.hand)
+        self.system = system = racket.system
         self.n = n = system.count
-        self.phi = phi = modes.shape(x).T[:, :n].copy()
+        shapes = modes.shape(x)
+        self.phi = phi = shapes.T[:, :n].copy()
         (ball_trans,), (ball_g0,), (ball_g1,) = block_steps([[0.0, 1.0], [0.0, 0.0]], self.dt)
         trans, g0, g1 = system.step(self.dt)
-        unit = system.inputs(phi)
         out_d, out_v, out_dc = system.outputs(phi)
         self.swing_qd = _swing_velocities(modes, x, swing_speed, pivot)
         z0 = np.zeros((x.size, 2 * n))
@@ -436,10 +458,9 @@ class _Stepper:
         self.position = x
         series = np.full(x.size, 1.0 / k_s)
         if n:  # static correction: the bending modes left out respond quasi-statically
-            series += racket.beam.residual_flexibility(x)
+            series += racket.beam.residual_flexibility(x, shapes)
         self.points = layout.Points(
-            gin0=np.einsum("jab,pjb->pja", g0, unit),
-            gin1=np.einsum("jab,pjb->pja", g1, unit),
+            unit=system.inputs(phi),
             out_d=out_d,
             out_v=out_v,
             out_dc=out_dc,
@@ -452,8 +473,10 @@ class _Stepper:
         self.frame = layout.Frame(
             np.ascontiguousarray(system.blocks, dtype=float),
             trans,
+            g0,
+            g1,
             system.metric,
-            *system.damping_rows(),
+            *system.damping_rows,
         )
         self.ball = layout.BallModel(
             trans=ball_trans,
@@ -494,9 +517,39 @@ class _Stepper:
         )
         from racket import kernel  # numba loads on first use (import time)
 
-        with _compile_notice(kernel.run_impacts):
+        with _compile_notice(kernel.run_impacts), _kernel_threads(count):
             kernel.run_impacts(self.frame, points, self.ball, controls, out)
         return out
+
+
+_BLAS = []  # the threadpoolctl controller, made on first use
+
+
+@contextmanager
+def _one_blas_thread():
+    """Keep BLAS (numpy's small matrix products while preparing and reading the kernel's
+    arrays) to one thread: its worker threads would compete with the kernel's for the
+    cores."""
+    if not _BLAS:
+        from threadpoolctl import ThreadpoolController
+
+        _BLAS.append(ThreadpoolController())
+    with _BLAS[0].limit(limits=1, user_api="blas"):
+        yield
+
+
+@contextmanager
+def _kernel_threads(count: int):
+    """Run a batch of ``count`` impacts on one thread per ``IMPACTS_PER_THREAD`` of them
+    (a thread costs more to start than a few impacts take), at most numba's thread count."""
+    import numba
+
+    before = numba.get_num_threads()
+    numba.set_num_threads(max(1, min(before, count // IMPACTS_PER_THREAD)))
+    try:
+        yield
+    finally:
+        numba.set_num_threads(before)
 
 
 @contextmanager

@@ -18,7 +18,8 @@ In both cases the state s (blocks, 2 values each) maps to z by ``basis``: z = ba
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+from functools import cached_property
 
 import numpy as np
 
@@ -53,6 +54,7 @@ class BlockSystem:
     metric: np.ndarray
     stiffness: np.ndarray
     damping: np.ndarray
+    _steps: dict = field(default_factory=dict, compare=False, repr=False)
 
     @property
     def count(self) -> int:
@@ -63,9 +65,14 @@ class BlockSystem:
         """Exact step of every block for an input varying linearly over ``dt``.
 
         Returns T, G0, G1, each (nb, 2, 2): s1 = T s0 + G0 u0 + G1 u1 for the block input
-        u (a 2-vector) going linearly from u0 to u1.
+        u (a 2-vector) going linearly from u0 to u1.  The last few are kept (a linear ball
+        has the same step at every speed).
         """
-        return block_steps(self.blocks, dt)
+        if dt not in self._steps:
+            if len(self._steps) >= 8:
+                self._steps.pop(next(iter(self._steps)))
+            self._steps[dt] = block_steps(self.blocks, dt)
+        return self._steps[dt]
 
     def _blocks_of(self, rows: np.ndarray) -> np.ndarray:
         """(P, 2N) rows over the state s as (P, nb, 2), contiguous for the kernel."""
@@ -88,6 +95,7 @@ class BlockSystem:
         dc = self._blocks_of(phi[:, :2] @ self.basis[n : n + 2])
         return disp, vel, dc
 
+    @cached_property
     def damping_rows(self):
         """The dissipated power q'^T D q' as sum_r (L_r . s)**2, sparsely.
 
