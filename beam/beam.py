@@ -217,7 +217,14 @@ class Beam:
         [Hz].  Frequencies scale as sqrt(EI), so scaling EI by (f1 / f1_now)**2 keeps the
         mode shapes."""
         scale = (positive("f1", f1, "Hz") / self.modes.frequencies[0]) ** 2
-        return replace(self, bending_stiffness=tuple(scale * np.asarray(self.bending_stiffness)))
+        beam = replace(self, bending_stiffness=tuple(scale * np.asarray(self.bending_stiffness)))
+        # Same shapes, frequencies times sqrt(scale), flexibility over scale: no recomputing.
+        modes = self.modes
+        beam.__dict__["modes"] = replace(modes, omega=modes.omega * np.sqrt(scale))
+        if "_flexibility" in self.__dict__:
+            flex = self._flexibility
+            beam.__dict__["_flexibility"] = fem.FemFlexibility(flex.nodes, flex.blocks / scale)
+        return beam
 
     def with_point_masses(self, *masses) -> Beam:
         """This beam with more point masses (lead tape): pairs (position [m from the tip],

@@ -186,24 +186,31 @@ def static_flexibility(stations, mass_per_length, bending_stiffness, point_masse
     propped = np.zeros((n_dof, n_dof))
     propped[np.ix_(free, free)] = np.linalg.inv(k[np.ix_(free, free)])
     relief = np.eye(n_dof) - rigid @ (rigid.T @ m)
-    return FemFlexibility(nodes, relief @ propped @ relief.T)
+    flexibility = relief @ propped @ relief.T
+    dof = 2 * np.arange(nodes.size - 1)[:, None] + np.arange(4)  # (E, 4) per element
+    return FemFlexibility(nodes, flexibility[dof[:, :, None], dof[:, None, :]])
 
 
 @dataclass(frozen=True, eq=False)
 class FemFlexibility:
-    """The flexibility [m/N] of the beam at x [m from the tip] to a force at x, from the
-    finite-element flexibility ``matrix`` (see :func:`static_flexibility`), picklable."""
+    """The flexibility [m/N] of the beam at x [m from the tip] to a force at x (see
+    :func:`static_flexibility`), picklable.
+
+    Parameters
+    ----------
+    nodes : ndarray
+        Mesh nodes [m from the tip].
+    blocks : ndarray
+        (elements, 4, 4) the flexibility matrix's block between each element's degrees of
+        freedom (deflection and slope at both ends), all that a point inside it needs.
+    """
 
     nodes: np.ndarray
-    matrix: np.ndarray
-
-    def __post_init__(self):
-        dof = 2 * np.arange(self.nodes.size - 1)[:, None] + np.arange(4)  # (E, 4)
-        object.__setattr__(self, "_blocks", self.matrix[dof[:, :, None], dof[:, None, :]])
+    blocks: np.ndarray
 
     def __call__(self, x) -> np.ndarray:
         x = np.asarray(x, dtype=float)
         lengths = np.diff(self.nodes)
         e = np.clip(np.searchsorted(self.nodes, x, side="right") - 1, 0, lengths.size - 1)
         n = hermite((x - self.nodes[e]) / lengths[e], lengths[e])  # (4, len(x))
-        return np.einsum("ix,xij,jx->x", n, self._blocks[e], n)
+        return np.einsum("ix,xij,jx->x", n, self.blocks[e], n)

@@ -98,6 +98,10 @@ non-snapping Xo narrower than 1 % can be missed), at most this many scan and ref
 runs."""
 
 
+CHUNK_POINTS = 4096
+"""Impacts run together at most (without histories): bounds the memory of a call to about
+10 MB however many positions it is given."""
+
 IMPACTS_PER_THREAD = 8
 """Smallest share of a batch's impacts worth a thread of its own (one impact takes about
 20 us; starting a thread about as long)."""
@@ -317,25 +321,37 @@ def impact(
             f"{ball.law.secant_stiffness(ball.mass, speed + swing_speed):.3g} N/m, strings "
             f"{racket.strings.stiffness:.3g} N/m)"
         )
+    run = (racket, ball, speed, swing_speed, pivot, steps_per_contact, watch_after, histories)
     with _one_blas_thread():
-        return _solve(
-            racket,
-            ball,
-            x,
-            scalar,
-            speed,
-            swing_speed,
-            pivot,
-            steps_per_contact,
-            watch_after,
-            histories,
+        if histories:
+            parts = [_solve(x, *run)]
+        else:  # in chunks: the kernel's inputs take about 1.6 kB per impact
+            parts = [_solve(x[i : i + CHUNK_POINTS], *run) for i in range(0, x.size, CHUNK_POINTS)]
+    fields = {
+        k: None if parts[0][0][k] is None else np.concatenate([p[0][k] for p in parts])
+        for k in parts[0][0]
+    }
+    squashed = fields.pop("compression")
+    self_consistent = fields["self_consistent"]
+    if not np.all(self_consistent):
+        warnings.warn(
+            f"{np.count_nonzero(~self_consistent)} of {x.size} unhappy-ball impacts "
+            f"(first at {x[~self_consistent][0]:g} m from the tip) have no self-consistent "
+            "Xo: the ball leaves before its compression reaches Xo (see Impact."
+            "self_consistent)",
+            stacklevel=2,
         )
+    warn_if_squashed(ball, squashed)
+    if scalar:
+        fields = {
+            k: (v if v is None else v[0] if v.ndim > 1 else v[0].item()) for k, v in fields.items()
+        }
+    return Impact(speed=speed, swing_speed=swing_speed, t=parts[0][1], **fields)
 
 
-def _solve(
-    racket, ball, x, scalar, speed, swing_speed, pivot, steps_per_contact, watch_after, histories
-):
-    """:func:`impact` once its inputs are checked."""
+def _solve(x, racket, ball, speed, swing_speed, pivot, steps_per_contact, watch_after, histories):
+    """:func:`impact` at the points ``x`` once its inputs are checked: the Impact's fields
+    (and the ball's largest compression, ``compression``) and the histories' times."""
     stepper = _Stepper(racket, ball, x, speed, swing_speed, pivot, steps_per_contact)
     code = stepper.code
     x_o = np.full(x.size, np.nan)
@@ -370,19 +386,10 @@ def _solve(
     if code == layout.SINE:
         ball_loss = summary[:, layout.SINE_WORK]  # X never decreases: all work on it is lost
         self_consistent = np.abs(summary[:, layout.X_END] - x_o) <= SELF_CONSISTENT_TOL * x_o
-        if not np.all(self_consistent):
-            warnings.warn(
-                f"{np.count_nonzero(~self_consistent)} of {x.size} unhappy-ball impacts "
-                f"(first at {x[~self_consistent][0]:g} m from the tip) have no self-consistent "
-                "Xo: the ball leaves before its compression reaches Xo (see Impact."
-                "self_consistent)",
-                stacklevel=2,
-            )
     else:
         ball_loss = ball.law.dissipated(summary[:, layout.F_PEAK])
         self_consistent = np.ones(x.size, dtype=bool)
     peak = summary[:, layout.F_PEAK]
-    warn_if_squashed(ball, x_o if code == layout.SINE else ball.law.compression(peak, peak))
     damping_loss = summary[:, layout.DAMPING_LOSS]
     residual = energy_initial - (ball_energy + racket_energy + vibration + ball_loss + damping_loss)
 
@@ -420,14 +427,10 @@ def _solve(
         x_o=x_o,
         self_consistent=self_consistent,
         recontacts=summary[:, layout.RECONTACTS].astype(int),
+        compression=x_o if code == layout.SINE else ball.law.compression(peak, peak),
         **history,
     )
-    if scalar:
-        fields = {
-            k: (v if v is None else v[0] if v.ndim > 1 else v[0].item()) for k, v in fields.items()
-        }
-    t = np.arange(used) * dt if histories else None
-    return Impact(speed=speed, swing_speed=swing_speed, t=t, **fields)
+    return fields, np.arange(used) * dt if histories else None
 
 
 class _Stepper:

@@ -8,7 +8,9 @@ impact, SI columns.
 from __future__ import annotations
 
 import itertools
+import re
 import sys
+import warnings
 from collections.abc import Mapping, Sequence
 from concurrent.futures import Executor
 from dataclasses import replace
@@ -21,7 +23,7 @@ from common.checks import in_range
 from common.checks import speed as check_speed
 from racket import Racket, StringBed, impact
 from racket.solver import F1_MIN
-from studies.tables import impact_table
+from studies.tables import impact_columns, impact_table
 
 STRING_STIFFNESS_RANGE = (1e3, 1e7)
 """String-bed stiffness [N/m] a sweep accepts (a strung racket's is 2e4-5e4; paper Secs. III
@@ -165,35 +167,68 @@ def sweep(
     for k_s in grid["string_stiffness"]:
         if k_s is not None:
             in_range("string_stiffness", k_s, *STRING_STIFFNESS_RANGE, "N/m")
-    combos = [
-        (sp, _variant(racket, ks, freq, sup), label, b)
-        for sp, ks, freq, sup, (label, b) in itertools.product(*grid.values())
-    ]
+    variants = {}  # each racket built once (its modes and flexibility computed once)
+    combos = []
+    for sp, ks, freq, sup, (label, b) in itertools.product(*grid.values()):
+        if (ks, freq, sup) not in variants:
+            variants[ks, freq, sup] = _variant(racket, ks, freq, sup)
+        combos.append((sp, variants[ks, freq, sup], label, b))
     runs = [(variant, b, positions, sp, swing_speed, pivot) for sp, variant, _, b in combos]
-    if executor is None:
-        tables = (_impact_table(*run) for run in runs)
-    else:
-        tables = (future.result() for future in [executor.submit(_impact_table, *r) for r in runs])
-    frames = []
-    for (sp, variant, label, _), frame in zip(
-        combos, _progress(tables, len(combos), progress), strict=True
-    ):
-        values = {
-            "speed": sp,
-            "string_stiffness": variant.strings.stiffness,
-            "f1": variant.beam.modes.frequencies[0],
-            "support": variant.support,
-            "ball": label,
-        }
-        for name in varying:
-            frame[PARAMETERS[name]] = values[name]
-        frames.append(frame)
-    return pd.concat(frames, ignore_index=True)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        if executor is None:
+            parts = (_impact_columns(*run) for run in runs)
+        else:
+            parts = (f.result() for f in [executor.submit(_impact_columns, *r) for r in runs])
+        columns = {name: [] for name in COLUMNS}
+        labels = {name: [] for name in varying}
+        for (sp, variant, label, _), part in zip(
+            combos, _progress(parts, len(combos), progress), strict=True
+        ):
+            for name in COLUMNS:
+                columns[name].append(part[name])
+            values = {
+                "speed": sp,
+                "string_stiffness": variant.strings.stiffness,
+                "f1": variant.beam.modes.frequencies[0],
+                "support": variant.support,
+                "ball": label,
+            }
+            for name in varying:
+                labels[name].append(values[name])
+    _first_of_each_kind(caught)
+    # One column at a time, each joined and its parts let go: the peak memory is the table
+    # and one column more (a study of 1e6 impacts stays near 150 MB).
+    count = np.array([part.size for part in columns[COLUMNS[0]]])
+    table = {}
+    for name in COLUMNS:
+        table[name] = np.concatenate(columns.pop(name))
+    for name in varying:
+        values = labels[name]
+        if isinstance(values[0], str):
+            categories = list(dict.fromkeys(values))
+            codes = np.repeat([categories.index(v) for v in values], count)
+            table[PARAMETERS[name]] = pd.Categorical.from_codes(codes, categories)
+        else:
+            table[PARAMETERS[name]] = np.repeat(np.asarray(values, dtype=float), count)
+    return pd.DataFrame(table, copy=False)
 
 
-def _impact_table(racket, ball, positions, speed, swing_speed, pivot) -> pd.DataFrame:
-    """The table of one grid point (module level, so that an executor can pickle it)."""
-    return impact_table(
+def _first_of_each_kind(caught) -> None:
+    """Emit again the first of the warnings ``caught`` of each kind (the same text but for
+    its numbers): a grid would repeat a warning once per grid point."""
+    seen = set()
+    for w in caught:
+        kind = (w.category, re.sub(r"[-+0-9.e]+", "#", str(w.message)))
+        if kind not in seen:
+            seen.add(kind)
+            warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
+
+
+def _impact_columns(racket, ball, positions, speed, swing_speed, pivot) -> dict:
+    """The table columns of one grid point (module level, so that an executor can pickle
+    it)."""
+    return impact_columns(
         impact(racket, ball, positions, speed, swing_speed=swing_speed, pivot=pivot)
     )
 

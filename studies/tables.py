@@ -11,6 +11,11 @@ from racket import Impact
 
 def impact_table(result: Impact) -> pd.DataFrame:
     """One row per impact of an :func:`racket.impact` result, with the summary numbers."""
+    return pd.DataFrame(impact_columns(result))
+
+
+def impact_columns(result: Impact) -> dict:
+    """The columns of :func:`impact_table` as a dict of 1-D arrays."""
     columns = {
         "position_from_tip_m": result.position,
         "e": result.e,
@@ -26,7 +31,7 @@ def impact_table(result: Impact) -> pd.DataFrame:
         "self_consistent": result.self_consistent,
         "recontacts": result.recontacts,
     }
-    return pd.DataFrame({name: np.atleast_1d(value) for name, value in columns.items()})
+    return {name: np.atleast_1d(value) for name, value in columns.items()}
 
 
 def history_table(history: CollisionHistory) -> pd.DataFrame:

@@ -169,3 +169,31 @@ def test_every_mode_has_one_node_more_than_its_number():
     modes = Beam.uniform(0.68, 0.34, 120.0, n_modes=20).modes
     assert [modes.nodes(k).size for k in range(1, 21)] == list(range(2, 22))
     assert 0.34 in np.round(modes.nodes(14), 12)
+
+
+def test_static_flexibility_is_the_sum_over_every_mode():
+    # The finite-element flexibility under inertia relief equals sum phi**2 / omega**2 over
+    # the bending modes (200 analytic ones: the rest add < 1e-7 of it).
+    beam = Beam.uniform(0.68, 0.34, 120.0, n_modes=200)
+    x = np.linspace(0.0, 0.68, 13)
+    phi = beam.modes.shape(x)[2:]
+    modal = np.sum(phi**2 / beam.modes.omega[2:, None] ** 2, axis=0)
+    assert beam.static_flexibility(x) == pytest.approx(modal, rel=1e-6)
+    # ... and the residual is what the modes kept leave out: zero at 200 modes, not at 8.
+    few = Beam.uniform(0.68, 0.34, 120.0)
+    assert np.all(few.residual_flexibility(x) > 1e-4 * few.static_flexibility(x))
+    assert np.all(beam.residual_flexibility(x) < 1e-6 * beam.static_flexibility(x))
+
+
+def test_with_f1_scales_modes_and_flexibility_without_recomputing():
+    beam = Beam((0.0, 0.3, 0.68), (0.6, 0.4), (150.0, 90.0), point_masses=((0.05, 0.004),))
+    x = np.linspace(0.0, 0.68, 9)
+    beam.residual_flexibility(x)
+    scaled = beam.with_f1(160.0)
+    fresh = Beam(
+        scaled.stations, scaled.mass_per_length, scaled.bending_stiffness, scaled.point_masses
+    )
+    assert scaled.modes.frequencies[0] == pytest.approx(160.0, rel=1e-12)
+    assert scaled.modes.omega == pytest.approx(fresh.modes.omega, rel=1e-9)
+    assert scaled.modes.shape(x) == pytest.approx(fresh.modes.shape(x), rel=1e-7, abs=1e-9)
+    assert scaled.static_flexibility(x) == pytest.approx(fresh.static_flexibility(x), rel=1e-7)

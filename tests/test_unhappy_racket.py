@@ -14,7 +14,7 @@ import pytest
 
 from ball import Ball, LinearSpring, SineLaw, collide
 from racket import StringBed, impact, layout, paper_racket
-from racket.solver import SINE_STEPS_PER_CONTACT, SCAN_RATIO, SELF_CONSISTENT_TOL, _Stepper
+from racket.solver import SCAN_RATIO, SELF_CONSISTENT_TOL, SINE_STEPS_PER_CONTACT, _Stepper
 
 RACKET = paper_racket()
 BALLS = {
