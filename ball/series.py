@@ -10,6 +10,7 @@ solves all its contacts at once.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 
 import numpy as np
@@ -40,6 +41,8 @@ def series_force(laws: Sequence[MonotoneLaw], z, f_max, rtol: float = 1e-14):
     Returns 0 where ``z`` is at or below the compression left at zero force (the contact
     is open).  ``z`` and ``f_max`` broadcast.
     """
+    if np.ndim(z) == 0 and np.ndim(f_max) == 0:
+        return _scalar_force(laws, float(z), float(f_max), rtol)
     z, f_max = np.broadcast_arrays(np.asarray(z, dtype=float), np.asarray(f_max, dtype=float))
     z = z.astype(float, copy=True)
     force = np.zeros(z.shape)
@@ -65,11 +68,38 @@ def series_force(laws: Sequence[MonotoneLaw], z, f_max, rtol: float = 1e-14):
         hi = np.where(resid >= 0, f, hi)
         with np.errstate(divide="ignore", invalid="ignore"):
             newton = f - resid / series_compliance(laws, f, fm_a)
+        converged = (resid == 0) | (np.abs(newton - f) <= rtol * np.abs(newton))
         inside = np.isfinite(newton) & (newton > lo) & (newton < hi)
-        f_new = np.where(inside, newton, 0.5 * (lo + hi))
-        done = np.abs(f_new - f) <= rtol * np.abs(f_new)
-        f = f_new
-        if np.all(done):
+        f = np.where(inside | converged, newton, 0.5 * (lo + hi))
+        if np.all(converged):
             break
     force[active] = f
     return force[()] if force.ndim == 0 else force
+
+
+def _scalar_force(laws, z: float, f_max: float, rtol: float) -> float:
+    """:func:`series_force` for one ``z`` and ``f_max`` in Python floats (an ODE's
+    right-hand side calls it once per evaluation, where array overhead would dominate):
+    Newton's method from the loading line's force, bisection whenever it leaves the
+    bracket."""
+
+    def resid(f):
+        return float(series_compression(laws, f, f_max)) - z
+
+    if resid(0.0) >= 0.0:
+        return 0.0
+    lo, hi = 0.0, max(f_max, z / float(series_compression(laws, 1.0, 1.0)))
+    for _ in range(2100):  # grow the bracket until it holds the root
+        if resid(hi) >= 0.0:
+            break
+        lo, hi = hi, 2.0 * hi
+    f = hi
+    for _ in range(200):
+        r = resid(f)
+        lo, hi = (f, hi) if r < 0.0 else (lo, f)
+        slope = float(series_compliance(laws, f, f_max))
+        f_new = f - r / slope if slope > 0.0 and math.isfinite(slope) else lo
+        if r == 0.0 or abs(f_new - f) <= rtol * abs(f_new):
+            return f_new
+        f = f_new if lo < f_new < hi else 0.5 * (lo + hi)
+    return f
