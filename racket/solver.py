@@ -32,6 +32,7 @@ flagged (``Impact.self_consistent``) and a warning says how many are.
 
 from __future__ import annotations
 
+import contextlib
 import sys
 import threading
 import warnings
@@ -45,7 +46,6 @@ from common.checks import finite, in_range, shown
 from common.checks import speed as check_speed
 from racket import layout
 from racket.racket import Racket
-from racket.system import block_steps
 
 COMPILE_SECONDS = 20
 """About how long numba takes to compile the kernel on a 2-core machine (measured 12-18 s)."""
@@ -322,15 +322,17 @@ def impact(
             f"{racket.strings.stiffness:.3g} N/m)"
         )
     run = (racket, ball, speed, swing_speed, pivot, steps_per_contact, watch_after, histories)
-    with _one_blas_thread():
+    with _one_blas_thread() if x.size > IMPACTS_PER_THREAD else contextlib.nullcontext():
         if histories:
             parts = [_solve(x, *run)]
         else:  # in chunks: the kernel's inputs take about 1.6 kB per impact
             parts = [_solve(x[i : i + CHUNK_POINTS], *run) for i in range(0, x.size, CHUNK_POINTS)]
-    fields = {
-        k: None if parts[0][0][k] is None else np.concatenate([p[0][k] for p in parts])
-        for k in parts[0][0]
-    }
+    fields = parts[0][0]
+    if len(parts) > 1:
+        fields = {
+            k: None if v is None else np.concatenate([p[0][k] for p in parts])
+            for k, v in fields.items()
+        }
     squashed = fields.pop("compression")
     self_consistent = fields["self_consistent"]
     if not np.all(self_consistent):
@@ -451,7 +453,6 @@ class _Stepper:
         self.n = n = system.count
         shapes = modes.shape(x)
         self.phi = phi = shapes.T[:, :n].copy()
-        (ball_trans,), (ball_g0,), (ball_g1,) = block_steps([[0.0, 1.0], [0.0, 0.0]], self.dt)
         trans, g0, g1 = system.step(self.dt)
         out_d, out_v, out_dc = system.outputs(phi)
         self.swing_qd = _swing_velocities(modes, x, swing_speed, pivot)
@@ -481,10 +482,13 @@ class _Stepper:
             system.metric,
             *system.damping_rows,
         )
+        # The ball, a free mass: exact for a force going linearly from F0 to F1 over dt,
+        # u += ud dt - (F0 / 3 + F1 / 6) dt**2 / m and ud -= (F0 + F1) dt / (2 m).
+        dt = self.dt
         self.ball = layout.BallModel(
-            trans=ball_trans,
-            g0=ball_g0[:, 1] / -ball.mass,
-            g1=ball_g1[:, 1] / -ball.mass,
+            trans=np.array([[1.0, dt], [0.0, 1.0]]),
+            g0=np.array([dt * dt / 3.0, dt / 2.0]) / -ball.mass,
+            g1=np.array([dt * dt / 6.0, dt / 2.0]) / -ball.mass,
             law=law[0],
             params=np.array(law[1], dtype=float),
             inv_ks=1.0 / k_s,
@@ -548,7 +552,11 @@ def _kernel_threads(count: int):
     import numba
 
     before = numba.get_num_threads()
-    numba.set_num_threads(max(1, min(before, count // IMPACTS_PER_THREAD)))
+    wanted = max(1, min(before, count // IMPACTS_PER_THREAD))
+    if wanted == before:
+        yield
+        return
+    numba.set_num_threads(wanted)
     try:
         yield
     finally:
@@ -560,7 +568,8 @@ def _compile_notice(function, after: float = 1.0):
     """Say on stderr that ``function`` (a numba dispatcher) is being compiled (once per
     install: the compiled kernel is cached on disk) if its first call of this process takes
     more than ``after`` seconds; loading the cached kernel takes well under a second."""
-    if getattr(function, "signatures", True):  # compiled (or not compiled at all: no JIT)
+    if id(function) in _READY or getattr(function, "signatures", True):  # compiled / no JIT
+        _READY.add(id(function))
         yield
         return
     timer = threading.Timer(
@@ -576,6 +585,9 @@ def _compile_notice(function, after: float = 1.0):
         yield
     finally:
         timer.cancel()
+
+
+_READY = set()  # ids of the kernels known to be compiled in this process
 
 
 def _x_o_guess(racket: Racket, ball: Ball, x: np.ndarray, closing: float) -> np.ndarray:

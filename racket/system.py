@@ -78,9 +78,14 @@ class BlockSystem:
         """(P, 2N) rows over the state s as (P, nb, 2), contiguous for the kernel."""
         return np.ascontiguousarray(rows).reshape(rows.shape[0], self.blocks.shape[0], 2)
 
+    @cached_property
+    def _to_blocks(self) -> np.ndarray:
+        """basis^-1 (transposed): s = z @ this."""
+        return np.ascontiguousarray(np.linalg.inv(self.basis).T)
+
     def state(self, z: np.ndarray) -> np.ndarray:
         """Block states (P, nb, 2) of modal states z = (q, q') (P, 2N)."""
-        return self._blocks_of(np.linalg.solve(self.basis, z.T).T if self.count else z)
+        return self._blocks_of(z @ self._to_blocks if self.count else z)
 
     def inputs(self, phi: np.ndarray) -> np.ndarray:
         """Block inputs (P, nb, 2) of a unit force at points with mode shapes phi (P, N)."""
