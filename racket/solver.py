@@ -97,6 +97,11 @@ SCAN_DOWN_MAX times, until every impact snaps), step up by this ratio (so a gap 
 non-snapping Xo narrower than 1 % can be missed), at most this many scan and refinement
 runs."""
 
+ROUGH_STEPS_DIVISOR, ROUGH_MARGIN = 4, 0.97
+"""The Xo search first scans with a quarter of the steps (Xo then differs by about 1e-4
+from the full steps'), then scans and refines with the full steps from 3 % below where
+that scan stopped: about 25 full runs instead of 55, the same Xo."""
+
 
 CHUNK_POINTS = 4096
 """Impacts run together at most (without histories): bounds the memory of a call to about
@@ -358,7 +363,13 @@ def _solve(x, racket, ball, speed, swing_speed, pivot, steps_per_contact, watch_
     code = stepper.code
     x_o = np.full(x.size, np.nan)
     if code == layout.SINE:
-        x_o = _self_consistent_x_o(stepper, _x_o_guess(racket, ball, x, stepper.closing))
+        # A rough search with a quarter of the steps, then the search itself from just
+        # below where that one ended (a scan from the rigid racket's guess takes ~35 runs).
+        rough_steps = max(50, steps_per_contact // ROUGH_STEPS_DIVISOR)
+        rough = _Stepper(racket, ball, x, speed, swing_speed, pivot, rough_steps)
+        guess = _x_o_guess(racket, ball, x, stepper.closing)
+        start = _self_consistent_x_o(rough, SCAN_START * guess, refine=False)
+        x_o = _self_consistent_x_o(stepper, ROUGH_MARGIN * start)
     extra_steps = round(watch_after / stepper.dt)
     out_ball, out_state, summary, _ = stepper.run(x_o, extra_steps=extra_steps)
     if not np.all(summary[:, layout.ENDED]):
@@ -602,7 +613,7 @@ def _x_o_guess(racket: Racket, ball: Ball, x: np.ndarray, closing: float) -> np.
     return closing * np.sqrt(np.pi * mu / (4.0 * k0)) * np.ones(x.size)
 
 
-def _self_consistent_x_o(stepper: _Stepper, guess: np.ndarray) -> np.ndarray:
+def _self_consistent_x_o(stepper: _Stepper, start: np.ndarray, refine: bool = True):
     """Smallest Xo [m] per impact for which the unhappy ball never snaps.
 
     Too small an Xo lets the contact push the ball past the maximum of X + c F_sine(X),
@@ -610,15 +621,16 @@ def _self_consistent_x_o(stepper: _Stepper, guess: np.ndarray) -> np.ndarray:
     On a vibrating frame the set of Xo that do not snap can have gaps, so a bisection on
     "snapped or not" can land on any of its edges.  Instead:
 
-    1. scan Xo upwards from well below ``guess`` in steps of ``SCAN_RATIO`` until an impact
-       first runs without a snap (each run stops at its first snap);
+    1. scan Xo upwards from ``start`` (halved until every impact snaps there) in steps of
+       ``SCAN_RATIO`` until an impact first runs without a snap (each run stops at its
+       first snap); without ``refine``, that Xo is returned;
     2. refine between that Xo and the one before by the Illinois method on the kernel's
        snap residual (the overshoot past the fold, or minus the smallest gap left to it),
        which is continuous in Xo and zero at the smallest Xo that does not snap, until the
        gap is below ``CROSS_TOL`` Xo (the ball then reaches the fold and crosses it) or the
        bracket has shrunk to round-off (an edge where the residual jumps).
     """
-    count = guess.size
+    count = start.size
     every = np.arange(count)
 
     def snaps(x_o, subset):
@@ -626,7 +638,7 @@ def _self_consistent_x_o(stepper: _Stepper, guess: np.ndarray) -> np.ndarray:
         return summary[:, layout.SNAPPED] > 0, summary[:, layout.SNAP_RESIDUAL]
 
     # 1. Scan: a start that snaps everywhere, then up until each impact first runs clean.
-    lo = SCAN_START * guess
+    lo = np.array(start, dtype=float)
     r_lo = np.empty(count)
     todo = every
     for _ in range(SCAN_DOWN_MAX):
@@ -654,6 +666,8 @@ def _self_consistent_x_o(stepper: _Stepper, guess: np.ndarray) -> np.ndarray:
         raise RuntimeError(
             f"no Xo keeps the unhappy ball from snapping through at {todo.size} impacts"
         )
+    if not refine:
+        return hi
     # 2. Illinois refinement of the residual's sign change in [lo, hi]; `gap` is the true
     # residual at hi (r_lo and r_hi get halved by the Illinois rule).
     gap = r_hi.copy()
