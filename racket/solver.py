@@ -672,13 +672,16 @@ def _self_consistent_x_o(stepper: _Stepper, start: np.ndarray, refine: bool = Tr
     # residual at hi (r_lo and r_hi get halved by the Illinois rule).
     gap = r_hi.copy()
     side = np.zeros(count, dtype=int)
+    repeats = np.zeros(count, dtype=int)  # steps in a row that moved the same end
     todo = every[-gap > 0.5 * CROSS_TOL]
     for _ in range(REFINE_MAX):
         if todo.size == 0:
             break
         a, b, ra, rb = lo[todo], hi[todo], r_lo[todo], r_hi[todo]
         mid = b - rb * (b - a) / (rb - ra)
-        bad = ~((mid > a) & (mid < b))
+        # Bisect where the secant would leave the bracket or has moved the same end three
+        # times running (the residual jumps at an edge: the secant then crawls).
+        bad = ~((mid > a) & (mid < b)) | (repeats[todo] >= 3)
         mid[bad] = 0.5 * (a[bad] + b[bad])
         snapped, res = snaps(mid, todo)
         up, down = todo[snapped], todo[~snapped]
@@ -687,6 +690,9 @@ def _self_consistent_x_o(stepper: _Stepper, start: np.ndarray, refine: bool = Tr
         # Illinois: halve the residual at the end that stays put twice running.
         r_hi[up[side[up] == 1]] *= 0.5
         r_lo[down[side[down] == -1]] *= 0.5
+        repeats[up] = np.where(side[up] == 1, repeats[up] + 1, 1)
+        repeats[down] = np.where(side[down] == -1, repeats[down] + 1, 1)
+        repeats[todo[bad]] = 0
         side[up], side[down] = 1, -1
         done = -gap[todo] <= 0.5 * CROSS_TOL
         done |= hi[todo] - lo[todo] <= 4 * np.finfo(float).eps * hi[todo]
