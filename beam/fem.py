@@ -29,6 +29,15 @@ def hermite(s: np.ndarray, length: np.ndarray) -> np.ndarray:
     )
 
 
+def element_shapes(nodes: np.ndarray, x):
+    """The element holding each x [m from the tip] and its Hermite shape functions there:
+    (element index (len(x),), values (4, len(x)))."""
+    x = np.asarray(x, dtype=float)
+    lengths = np.diff(nodes)
+    e = np.clip(np.searchsorted(nodes, x, side="right") - 1, 0, lengths.size - 1)
+    return e, hermite((x - nodes[e]) / lengths[e], lengths[e])
+
+
 def mesh(stations: np.ndarray, extra_points: np.ndarray, elements: int) -> np.ndarray:
     """Node positions: every station and extra point, elements of about L / ``elements``."""
     knots = np.unique(np.concatenate([stations, extra_points]))
@@ -149,11 +158,7 @@ class FemShapes:
     vectors: np.ndarray
 
     def __call__(self, x) -> np.ndarray:
-        x = np.asarray(x, dtype=float)
-        lengths = np.diff(self.nodes)
-        e = np.clip(np.searchsorted(self.nodes, x, side="right") - 1, 0, lengths.size - 1)
-        s = (x - self.nodes[e]) / lengths[e]
-        n = hermite(s, lengths[e])  # (4, len(x))
+        e, n = element_shapes(self.nodes, x)
         dof = 2 * e[None, :] + np.arange(4)[:, None]  # (4, len(x))
         return np.einsum("kx,mkx->mx", n, self.vectors[dof].transpose(2, 0, 1))
 
@@ -209,8 +214,5 @@ class FemFlexibility:
     blocks: np.ndarray
 
     def __call__(self, x) -> np.ndarray:
-        x = np.asarray(x, dtype=float)
-        lengths = np.diff(self.nodes)
-        e = np.clip(np.searchsorted(self.nodes, x, side="right") - 1, 0, lengths.size - 1)
-        n = hermite((x - self.nodes[e]) / lengths[e], lengths[e])  # (4, len(x))
+        e, n = element_shapes(self.nodes, x)
         return np.einsum("ix,xij,jx->x", n, self.blocks[e], n)
