@@ -1,7 +1,8 @@
 """Ball force laws and head-on two-body collisions (R. Cross, Am. J. Phys. 2000, Secs. II-VI).
 
 Public API: the force laws :class:`LinearSpring`, :class:`LinearHysteresis`,
-:class:`PowerLawHysteresis` and :class:`SineLaw`; :class:`Ball` and :data:`WALL`;
+:class:`PowerLawHysteresis`, :class:`GrowingHysteresis` (COR and stiffness that change with
+speed) and :class:`SineLaw`; :class:`Ball` and :data:`WALL`;
 :func:`collide` and its :class:`Collision` result; the closed forms in
 :mod:`ball.closed_forms`.
 """
@@ -16,7 +17,14 @@ from ball.closed_forms import (
     unhappy_solution,
 )
 from ball.collision import Collision, CollisionHistory, collide
-from ball.laws import LinearHysteresis, LinearSpring, MonotoneLaw, PowerLawHysteresis, SineLaw
+from ball.laws import (
+    GrowingHysteresis,
+    LinearHysteresis,
+    LinearSpring,
+    MonotoneLaw,
+    PowerLawHysteresis,
+    SineLaw,
+)
 from ball.series import series_force
 
 __all__ = [
@@ -24,6 +32,7 @@ __all__ = [
     "Ball",
     "Collision",
     "CollisionHistory",
+    "GrowingHysteresis",
     "LinearHysteresis",
     "LinearSpring",
     "MonotoneLaw",

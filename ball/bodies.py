@@ -22,7 +22,8 @@ class Ball:
         Ball mass [kg], > 0.
     law : MonotoneLaw or SineLaw
         Its force law (:class:`~ball.LinearSpring`, :class:`~ball.LinearHysteresis`,
-        :class:`~ball.PowerLawHysteresis` or :class:`~ball.SineLaw`).
+        :class:`~ball.PowerLawHysteresis`, :class:`~ball.GrowingHysteresis` or
+        :class:`~ball.SineLaw`).
     radius : float, optional
         Ball radius [m], > 0: a result that compresses the ball beyond it is out of the
         range where any force law of a ball means something, and warns
@@ -39,7 +40,8 @@ class Ball:
             object.__setattr__(self, "radius", positive("radius", self.radius, "m"))
         if not isinstance(self.law, (MonotoneLaw, SineLaw)):
             raise ValueError(
-                "law must be LinearSpring, LinearHysteresis, PowerLawHysteresis or SineLaw, "
+                "law must be LinearSpring, LinearHysteresis, PowerLawHysteresis, "
+                "GrowingHysteresis or SineLaw, "
                 f"got {self.law!r}"
             )
 
@@ -58,14 +60,21 @@ WALL = Wall()
 
 
 def warn_if_squashed(ball: Ball, compression, stacklevel: int = 3) -> None:
-    """Warn once (UserWarning) if any ``compression`` [m] of ``ball`` exceeds its radius:
-    its force law is then used far beyond the deformations it describes."""
-    if ball.radius is None:
-        return
+    """Warn once (UserWarning) if any ``compression`` [m] of ``ball`` exceeds its radius (its
+    force law is then used far beyond the deformations it describes), or the largest
+    compression its law was calibrated to (``law.calibrated_to``, where it has one)."""
     largest = float(np.max(compression))
-    if largest > ball.radius:
+    if ball.radius is not None and largest > ball.radius:
         warnings.warn(
             f"the ball is compressed by {1e3 * largest:.3g} mm, more than its radius "
             f"({1e3 * ball.radius:.3g} mm): its force law is used far outside its range",
+            stacklevel=stacklevel,
+        )
+        return
+    calibrated = getattr(ball.law, "calibrated_to", None)
+    if calibrated is not None and largest > calibrated:
+        warnings.warn(
+            f"the ball is compressed by {1e3 * largest:.3g} mm, beyond the {1e3 * calibrated:.3g}"
+            " mm its force law was calibrated to: the result is an extrapolation",
             stacklevel=stacklevel,
         )

@@ -32,9 +32,14 @@ import numpy as np
 
 from common.checks import finite, in_range, positive, shown
 
-LINEAR, POWER, SINE = 0, 1, 2
+LINEAR, POWER, SINE, GROWING = 0, 1, 2, 3
 """Codes of the law families in the racket solver's compiled kernel
-(:mod:`racket.kernel`), each law's ``kernel_law`` giving its code and numbers."""
+(:mod:`racket.kernel`), each law's ``kernel_law`` giving its code and (up to four) numbers."""
+
+COR_FLOOR = 0.1
+"""Lowest rigid-surface COR a :class:`GrowingHysteresis` ball reaches however hard it is
+hit (an assumption: the calibrated range ends well above it, and results beyond that range
+warn)."""
 
 MAX_UNLOADING_EXPONENT = 1000.0
 """Largest unloading exponent b of :class:`PowerLawHysteresis` (see there)."""
@@ -68,7 +73,7 @@ class MonotoneLaw(ABC):
     @property
     @abstractmethod
     def kernel_law(self) -> tuple:
-        """(code, (p0, p1, p2)): the law in the racket solver's compiled kernel."""
+        """(code, (p0, p1, p2, p3)): the law in the racket solver's compiled kernel."""
 
 
 @dataclass(frozen=True)
@@ -104,7 +109,7 @@ class LinearSpring(MonotoneLaw):
 
     @property
     def kernel_law(self) -> tuple:
-        return LINEAR, (self.k, 1.0, 0.0)
+        return LINEAR, (self.k, 1.0, 0.0, 0.0)
 
 
 @dataclass(frozen=True)
@@ -151,11 +156,56 @@ class LinearHysteresis(MonotoneLaw):
 
     @property
     def kernel_law(self) -> tuple:
-        return LINEAR, (self.k, self.e, 0.0)
+        return LINEAR, (self.k, self.e, 0.0, 0.0)
+
+
+class _PowerBranches(MonotoneLaw):
+    """Loading F = k X**a, unloading F = F_max (X / X_max)**b from the largest force: the
+    branches shared by :class:`PowerLawHysteresis` (b fixed) and
+    :class:`GrowingHysteresis` (b set by F_max); the subclass gives ``k``, ``a`` and
+    :meth:`unloading_exponent`."""
+
+    k: float
+    a: float
+
+    @abstractmethod
+    def unloading_exponent(self, f_max):
+        """Exponent b of the unloading curve from the largest force ``f_max`` [N]."""
+
+    def _x_max(self, f_max):
+        return (np.asarray(f_max, dtype=float) / self.k) ** (1.0 / self.a)
+
+    def compression(self, f, f_max):
+        f = np.asarray(f, dtype=float)
+        f_max = np.asarray(f_max, dtype=float)
+        ratio = np.divide(f, f_max, out=np.zeros(np.broadcast(f, f_max).shape), where=f_max > 0)
+        b = self.unloading_exponent(f_max)
+        return self._x_max(f_max) * np.clip(ratio, 0.0, 1.0) ** (1.0 / b)
+
+    def compliance(self, f, f_max):
+        f = np.asarray(f, dtype=float)
+        exponent = np.where(f < np.asarray(f_max), self.unloading_exponent(f_max), self.a)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            c = self.compression(f, f_max) / (exponent * f)
+        return np.where(f > 0, c, np.inf)
+
+    def dissipated(self, f_max):
+        # The loading stores F_max X_max / (a + 1); the unloading returns F_max X_max / (b + 1).
+        f_max = np.asarray(f_max, dtype=float)
+        b = self.unloading_exponent(f_max)
+        return f_max * self._x_max(f_max) * (1.0 / (self.a + 1.0) - 1.0 / (b + 1.0))
+
+    def peak_compression(self, mass: float, speed: float) -> float:
+        """Largest compression [m] of a ball of ``mass`` [kg] hitting a rigid surface at
+        ``speed`` [m/s]: the loading stores k X**(a + 1) / (a + 1) = mass speed**2 / 2."""
+        return ((self.a + 1.0) * mass * speed**2 / (2.0 * self.k)) ** (1.0 / (self.a + 1.0))
+
+    def secant_stiffness(self, mass: float, speed: float) -> float:
+        return self.k * self.peak_compression(mass, speed) ** (self.a - 1.0)
 
 
 @dataclass(frozen=True)
-class PowerLawHysteresis(MonotoneLaw):
+class PowerLawHysteresis(_PowerBranches):
     """Nonlinear hysteretic ball: load F = k X**a, unload F = F_max (X / X_max)**b.
 
     The loading stores F_max X_max / (a + 1), the unloading returns F_max X_max / (b + 1),
@@ -197,38 +247,95 @@ class PowerLawHysteresis(MonotoneLaw):
         e = in_range("e", e, e_min, 1.0, hint=f" (a power-law ball with a = {a:g})")
         return cls(k=k, a=a, b=max(a, (a + 1.0) / e**2 - 1.0))
 
-    def _x_max(self, f_max):
-        return (np.asarray(f_max, dtype=float) / self.k) ** (1.0 / self.a)
-
-    def compression(self, f, f_max):
-        f = np.asarray(f, dtype=float)
-        f_max = np.asarray(f_max, dtype=float)
-        ratio = np.divide(f, f_max, out=np.zeros(np.broadcast(f, f_max).shape), where=f_max > 0)
-        return self._x_max(f_max) * np.clip(ratio, 0.0, 1.0) ** (1.0 / self.b)
-
-    def compliance(self, f, f_max):
-        f = np.asarray(f, dtype=float)
-        exponent = np.where(f < np.asarray(f_max), self.b, self.a)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            c = self.compression(f, f_max) / (exponent * f)
-        return np.where(f > 0, c, np.inf)
-
-    def dissipated(self, f_max):
-        f_max = np.asarray(f_max, dtype=float)
-        return f_max * self._x_max(f_max) * (1.0 / (self.a + 1.0) - 1.0 / (self.b + 1.0))
+    def unloading_exponent(self, f_max):
+        return np.full(np.shape(f_max), self.b) if np.ndim(f_max) else self.b
 
     @property
     def rigid_cor(self) -> float:
         return math.sqrt((self.a + 1.0) / (self.b + 1.0))
 
-    def secant_stiffness(self, mass: float, speed: float) -> float:
-        # The loading stores k X**(a + 1) / (a + 1) = mass speed**2 / 2 at X_max.
-        x_max = ((self.a + 1.0) * mass * speed**2 / (2.0 * self.k)) ** (1.0 / (self.a + 1.0))
-        return self.k * x_max ** (self.a - 1.0)
+    @property
+    def kernel_law(self) -> tuple:
+        return POWER, (self.k, self.a, self.b, 0.0)
+
+
+@dataclass(frozen=True)
+class GrowingHysteresis(_PowerBranches):
+    """A ball whose stiffness and hysteresis loss grow with its deformation, so that its COR
+    falls and its contact shortens as the impact speed rises (paper Sec. III: "a slight
+    decrease in both e1 and the impact duration as the ball speed increases ... due to a
+    nonlinear increase in the ball stiffness ... [and] in the hysteresis loss").
+
+    Loading F = k X**a (a >= 1: stiffening); unloading F = F_max (X / X_max)**b from the
+    largest compression X_max, with b = (a + 1) / e**2 - 1 so that the unloading returns
+    e**2 of the energy stored, and
+
+        e(X_max) = max(e0 - slope X_max, COR_FLOOR),
+
+    the COR of a bounce on a rigid surface that compresses the ball by X_max.  On a rigid
+    surface X_max grows as speed**(2 / (a + 1)), so e falls nearly linearly with speed, as
+    measured (see :mod:`ball.catalog`).  On strings the ball is compressed less, so it
+    loses less: the strings' benefit grows with speed.  This is the hysteretic form of the
+    paper's force-domain laws (every branch monotone in the force, so the ball works in
+    series with the strings in :func:`ball.collide` and in the racket solver's exact force
+    solve); a velocity-dependent damper (Hunt-Crossley, F = k X**a (1 + c X')) gives the
+    same trend but makes the force depend on the rate of compression, which a spring in
+    series (the strings) turns into a differential-algebraic problem.
+
+    Parameters
+    ----------
+    k : float
+        Stiffness coefficient [N/m**a], > 0.
+    a : float
+        Loading exponent, in [1, 3].
+    e0 : float
+        COR of a vanishingly slow bounce on a rigid surface, in (COR_FLOOR, 1].
+    slope : float
+        Fall of the rigid-surface COR per metre of peak compression [1/m], >= 0.
+    calibrated_to : float, optional
+        Largest compression [m] of the measurements the law was fitted to: a result beyond
+        it warns (:func:`ball.warn_if_squashed`).  None: not checked.
+    """
+
+    k: float
+    a: float
+    e0: float
+    slope: float
+    calibrated_to: float | None = None
+
+    def __post_init__(self):
+        object.__setattr__(self, "k", positive("k", self.k, "N/m**a"))
+        object.__setattr__(self, "a", in_range("a", self.a, 1.0, 3.0))
+        e0 = finite("e0", self.e0)
+        if not COR_FLOOR < e0 <= 1.0:
+            raise ValueError(f"e0 must be in ({COR_FLOOR:g}, 1], got {shown(e0)}")
+        object.__setattr__(self, "e0", e0)
+        slope = finite("slope", self.slope, "1/m")
+        if slope < 0:
+            raise ValueError(f"slope must be >= 0 [1/m], got {shown(slope)}")
+        object.__setattr__(self, "slope", slope)
+        if self.calibrated_to is not None:
+            object.__setattr__(
+                self, "calibrated_to", positive("calibrated_to", self.calibrated_to, "m")
+            )
+
+    def cor_at_compression(self, x_max):
+        """Rigid-surface COR e(X_max) of a bounce compressing the ball by ``x_max`` [m]."""
+        return np.maximum(self.e0 - self.slope * np.asarray(x_max, dtype=float), COR_FLOOR)
+
+    def unloading_exponent(self, f_max):
+        e = self.cor_at_compression(self._x_max(f_max))
+        return (self.a + 1.0) / e**2 - 1.0
+
+    @property
+    def rigid_cor(self) -> float:
+        """e0, the COR of a vanishingly slow bounce (it falls with speed: the rigid-surface
+        COR at speed v is e(X_max(v)), :meth:`peak_compression`)."""
+        return self.e0
 
     @property
     def kernel_law(self) -> tuple:
-        return POWER, (self.k, self.a, self.b)
+        return GROWING, (self.k, self.a, self.e0, self.slope)
 
 
 @dataclass(frozen=True)
@@ -273,5 +380,5 @@ class SineLaw:
 
     @property
     def kernel_law(self) -> tuple:
-        """(code, (k0, 0, 0)): the law in the racket solver's compiled kernel."""
-        return SINE, (self.k0, 0.0, 0.0)
+        """(code, (k0, 0, 0, 0)): the law in the racket solver's compiled kernel."""
+        return SINE, (self.k0, 0.0, 0.0, 0.0)

@@ -40,7 +40,8 @@ states, energies) is the state at the step where the force last returned to zero
 moment the ball finally left.  For a hand-held racket the hand keeps pushing after that,
 and the racket's momentum keeps changing, so any later moment would give another e.
 
-Law codes: 0 linear hysteresis (k, e), 1 power law (k, a, b), 2 sine law (k0).
+Law codes (:data:`ball.laws.LINEAR` ...): 0 linear hysteresis (k, e), 1 power law (k, a, b),
+2 sine law (k0), 3 growing hysteresis (k, a, e0, slope), each from the law's ``kernel_law``.
 """
 
 from __future__ import annotations
@@ -50,6 +51,7 @@ import math
 import numpy as np
 from numba import njit, prange
 
+from ball.laws import COR_FLOOR
 from racket.layout import (
     DAMPING_LOSS,
     ENDED,
@@ -61,6 +63,7 @@ from racket.layout import (
     H_POINT_VEL_DC,
     H_STRING,
     LINEAR,
+    POWER,
     RECONTACTS,
     SINE,
     SINE_WORK,
@@ -83,6 +86,18 @@ def _power_compression(f, f_max, k, a, b):
 
 
 @njit(cache=True)
+def unloading_exponent(law, params, f_max):
+    """Exponent b of a power-law ball's unloading curve from the largest force f_max: fixed
+    (POWER: params k, a, b), or set by the largest compression (GROWING: params k, a, e0,
+    slope; b = (a + 1) / e**2 - 1 with e = max(e0 - slope X_max, COR_FLOOR))."""
+    if law == POWER:
+        return params[2]
+    x_max = (f_max / params[0]) ** (1.0 / params[1]) if f_max > 0.0 else 0.0
+    e = max(params[2] - params[3] * x_max, COR_FLOOR)
+    return (params[1] + 1.0) / (e * e) - 1.0
+
+
+@njit(cache=True)
 def ball_compression(law, params, f, f_max):
     """Compression of a monotone ball law (code ``law``, numbers ``params``) at force f
     after largest force f_max."""
@@ -91,7 +106,8 @@ def ball_compression(law, params, f, f_max):
         if f >= f_max:
             return f / k
         return (f_max * (1.0 - e * e) + e * e * f) / k
-    return _power_compression(f, f_max, params[0], params[1], params[2])
+    b = unloading_exponent(law, params, f_max)
+    return _power_compression(f, f_max, params[0], params[1], b)
 
 
 @njit(cache=True)
@@ -138,7 +154,7 @@ def monotone_force(law, params, coef, a, z_pred, f_max):
         if f >= f_max:
             return f
         return max((z_pred - f_max * coef[2]) * coef[1], 0.0)  # unloading line
-    k, p, q = params[0], params[1], params[2]
+    k, p, q = params[0], params[1], unloading_exponent(law, params, f_max)
     switch = _power_compression(f_max, f_max, k, p, q) + a * f_max
     if z_pred >= switch:
         return _power_force(z_pred, a, f_max, z_pred / a, f_max, k, p, q)

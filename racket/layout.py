@@ -12,7 +12,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from ball.laws import LINEAR, POWER, SINE  # noqa: F401  (the ball-law codes, re-exported)
+from ball.laws import GROWING, LINEAR, POWER, SINE  # noqa: F401  (the law codes, re-exported)
 
 
 class Frame(NamedTuple):
@@ -68,7 +68,7 @@ class BallModel(NamedTuple):
     :attr:`ball.laws.MonotoneLaw.kernel_law`).
 
     trans : (2, 2); g0, g1 : (2,) as for a block.
-    law : int (LINEAR, POWER or SINE); params : (3,) the law's numbers.
+    law : int (LINEAR, POWER, SINE or GROWING); params : (4,) the law's numbers.
     inv_ks : 1 / string-bed stiffness [m/N] (for the string deflection history).
     """
 

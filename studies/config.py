@@ -39,7 +39,8 @@ keys are errors)::
     preset = "tennis"           # or: mass (kg) and law, with the law's parameters:
     mass = 0.057
     law = "linear-hysteresis"   # "linear-spring" (k), "linear-hysteresis" (k, e),
-    k = 4e4                     # "power-law" (k, a, b, or k, a, e), "sine" (k0)
+    k = 4e4                     # "power-law" (k, a, b, or k, a, e), "sine" (k0),
+                                # "growing-hysteresis" (k, a, e0, slope [, calibrated_to])
     e = 0.75
 """
 
@@ -49,7 +50,14 @@ import sys
 from dataclasses import replace
 from pathlib import Path
 
-from ball import Ball, LinearHysteresis, LinearSpring, PowerLawHysteresis, SineLaw
+from ball import (
+    Ball,
+    GrowingHysteresis,
+    LinearHysteresis,
+    LinearSpring,
+    PowerLawHysteresis,
+    SineLaw,
+)
 from beam import Beam
 from common.checks import in_range, shown
 from racket import (
@@ -89,6 +97,7 @@ LAWS = {
     "linear-spring": (LinearSpring, {"k"}),
     "linear-hysteresis": (LinearHysteresis, {"k", "e"}),
     "power-law": (PowerLawHysteresis, {"k", "a", "b"}),
+    "growing-hysteresis": (GrowingHysteresis, {"k", "a", "e0", "slope"}),
     "sine": (SineLaw, {"k0"}),
 }
 
@@ -126,7 +135,7 @@ _SPEC_KEYS = {
 }
 _LEAD_KEYS = {"mass_g", "from_butt_cm"}
 _HAND_KEYS = {"stiffness", "damping", "grip_length"}
-_BALL_KEYS = {"preset", "mass", "law", "k", "e", "a", "b", "k0"}
+_BALL_KEYS = {"preset", "mass", "law", "k", "e", "a", "b", "k0", "e0", "slope", "calibrated_to"}
 
 
 def _check_keys(table, allowed: set, where: str) -> None:
@@ -254,12 +263,14 @@ def ball_from_table(table: dict) -> Ball:
     if cls is PowerLawHysteresis and given == {"k", "a", "e"}:
         law = PowerLawHysteresis.with_cor(table["k"], table["a"], table["e"])
     else:
-        if given != params:
+        optional = {"calibrated_to"} if cls is GrowingHysteresis else set()
+        if given - optional != params:
             raise ValueError(
-                f"law {table['law']!r} takes {', '.join(sorted(params))}, got "
+                f"law {table['law']!r} takes {', '.join(sorted(params))}"
+                f"{' (and calibrated_to)' if optional else ''}, got "
                 f"{', '.join(sorted(given)) or 'nothing'}"
             )
-        law = cls(**{p: table[p] for p in params})
+        law = cls(**{p: table[p] for p in params | (given & optional)})
     return Ball(table["mass"], law)
 
 

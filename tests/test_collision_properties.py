@@ -8,6 +8,7 @@ from hypothesis import strategies as st
 from ball import (
     WALL,
     Ball,
+    GrowingHysteresis,
     LinearHysteresis,
     LinearSpring,
     PowerLawHysteresis,
@@ -22,6 +23,13 @@ monotone_laws = st.one_of(
     st.builds(LinearHysteresis, stiffness, cor),
     st.builds(
         PowerLawHysteresis.with_cor, st.floats(1e4, 1e8), st.floats(1.0, 2.0), st.floats(0.2, 1.0)
+    ),
+    st.builds(
+        GrowingHysteresis,
+        st.floats(1e4, 1e8),
+        st.floats(1.0, 2.0),
+        st.floats(0.3, 1.0),
+        st.floats(0.0, 20.0),
     ),
 )
 mass = st.floats(1e-3, 1.0)

@@ -6,10 +6,22 @@ import warnings
 import numpy as np
 import pytest
 
-from ball import Ball, LinearHysteresis, LinearSpring, PowerLawHysteresis, SineLaw
+from ball import (
+    Ball,
+    GrowingHysteresis,
+    LinearHysteresis,
+    LinearSpring,
+    PowerLawHysteresis,
+    SineLaw,
+)
 from racket import impact, kernel, paper_racket, solver, tennis_ball
 
-LAWS = [LinearSpring(4e4), LinearHysteresis(4e4, 0.75), PowerLawHysteresis(2e6, 1.5, 3.0)]
+LAWS = [
+    LinearSpring(4e4),
+    LinearHysteresis(4e4, 0.75),
+    PowerLawHysteresis(2e6, 1.5, 3.0),
+    GrowingHysteresis(1e6, 1.4, 0.82, 8.0),
+]
 
 
 @pytest.mark.parametrize("law", LAWS, ids=lambda law: type(law).__name__)
@@ -34,7 +46,7 @@ def test_kernel_formulas_agree_with_the_law_objects(law):
 
 def test_every_law_names_its_kernel_code():
     codes = {type(law).__name__: law.kernel_law[0] for law in [*LAWS, SineLaw(2e4)]}
-    assert len(set(codes.values())) == 3  # linear (two laws), power, sine
+    assert len(set(codes.values())) == 4  # linear (two laws), power, sine, growing
     assert codes["SineLaw"] not in (codes["LinearSpring"], codes["PowerLawHysteresis"])
 
 

@@ -4,7 +4,7 @@ import numpy as np
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from ball import Ball, LinearHysteresis, LinearSpring, PowerLawHysteresis
+from ball import Ball, GrowingHysteresis, LinearHysteresis, LinearSpring, PowerLawHysteresis
 from beam import Beam
 from racket import Racket, StringBed, impact
 
@@ -13,6 +13,13 @@ laws = st.one_of(
     st.builds(LinearHysteresis, st.floats(1e4, 1e5), st.floats(0.3, 1.0)),
     st.builds(
         PowerLawHysteresis.with_cor, st.floats(1e5, 1e7), st.floats(1.0, 1.8), st.floats(0.4, 1.0)
+    ),
+    st.builds(
+        GrowingHysteresis,
+        st.floats(1e5, 1e7),
+        st.floats(1.0, 1.8),
+        st.floats(0.4, 1.0),
+        st.floats(0.0, 15.0),
     ),
 )
 
