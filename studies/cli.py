@@ -343,6 +343,23 @@ def cmd_collide(args) -> int:
     return 0
 
 
+def cmd_ball(args) -> int:
+    from studies.bounce import rigid_bounce_table
+
+    check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
+    speeds = _speed(args, "speeds")
+    ball = load_ball(args.ball)
+    table = rigid_bounce_table(ball, speeds)
+    _print_table(table)
+    if args.out:
+        write_table(table, args.out)
+    if args.plot:
+        from studies.plots import plot_rigid_bounce
+
+        save_plot(plot_rigid_bounce(table, radius=ball.radius), args.plot)
+    return 0
+
+
 def cmd_modes(args) -> int:
     from studies.plots import HAND_FROM_BUTT, center_of_percussion
 
@@ -631,6 +648,24 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--history", metavar="FILE", help="time history: .csv, .json or .parquet")
     p.add_argument("--plot", metavar="FILE", help="history plot (.png, .svg, .pdf)")
     p.set_defaults(func=cmd_collide)
+
+    p = sub.add_parser("ball", help="a ball's bounce on a rigid surface against impact speed")
+    p.add_argument(
+        "ball",
+        nargs="?",
+        default="tennis",
+        metavar="PRESET_OR_TOML",
+        help=f"ball: preset ({', '.join(BALLS)}) or TOML file with a [ball] table "
+        "(default: tennis)",
+    )
+    from studies.bounce import DEFAULT_SPEEDS
+
+    _speed_option(p, "speeds", [round(v, 2) for v in DEFAULT_SPEEDS], "impact speeds", True)
+    p.add_argument("--out", metavar="FILE", help="table file: .csv, .json or .parquet")
+    p.add_argument(
+        "--plot", metavar="FILE", help="COR, contact time, compression (.png, .svg, .pdf)"
+    )
+    p.set_defaults(func=cmd_ball)
 
     p = sub.add_parser("modes", help="frequencies, nodes, mass properties, swingweight")
     _racket_arg(p)

@@ -330,3 +330,35 @@ def plot_serve_what_if(table, ax=None):
     ax.set_ylabel("serve-speed reduction, zero-COR ball [%]")
     ax.legend(fontsize="small")
     return ax
+
+
+def plot_rigid_bounce(table, ax=None, radius: float | None = None):
+    """A ball's rigid-surface bounce against impact speed (:func:`studies.bounce.
+    rigid_bounce_table`): COR, contact time [ms] and peak compression [mm], with the ITF
+    type 2 rebound band at the drop test's speed and, if given, the ball's ``radius`` [m]."""
+    from studies.bounce import ITF_DROP_SPEED, ITF_TYPE2_COR
+
+    ax = _axes(ax, 3)
+    v = table["speed_m_s"]
+    ax[0].plot(v, table["e"], "o-", label="simulated")
+    low, high = ITF_TYPE2_COR
+    ax[0].errorbar(
+        [ITF_DROP_SPEED],
+        [0.5 * (low + high)],
+        yerr=[[0.5 * (high - low)]],
+        fmt="s",
+        color="k",
+        capsize=4,
+        label="ITF type 2 (254 cm drop)",
+    )
+    ax[0].set_ylabel("COR on a rigid surface")
+    ax[0].legend()
+    ax[1].plot(v, 1e3 * table["contact_time_s"], "o-")
+    ax[1].set_ylabel("contact time [ms]")
+    ax[2].plot(v, 1e3 * table["peak_compression_m"], "o-")
+    if radius is not None:
+        ax[2].axhline(1e3 * radius, ls="--", color="gray", label="ball radius")
+        ax[2].legend()
+    ax[2].set_ylabel("peak compression [mm]")
+    ax[2].set_xlabel("impact speed [m/s]")
+    return ax

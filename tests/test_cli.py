@@ -187,3 +187,30 @@ def test_installed_script_exits_2_without_traceback(tmp_path):
     )
     assert proc.returncode == 2
     assert proc.stderr.count("\n") == 1 and "Traceback" not in proc.stderr
+
+
+def test_ball_prints_and_writes_the_rigid_bounce_against_speed(tmp_path, capsys):
+    toml = tmp_path / "ball.toml"
+    toml.write_text(
+        '[ball]\nmass = 0.057\nlaw = "growing-hysteresis"\nk = 1e6\na = 1.4\ne0 = 0.82\n'
+        "slope = 8.0\n"
+    )
+    status, out, _ = run(
+        capsys,
+        "ball",
+        str(toml),
+        "--speeds",
+        "7",
+        "30",
+        "--out",
+        str(tmp_path / "b.csv"),
+        "--plot",
+        str(tmp_path / "b.png"),
+    )
+    assert status == 0 and "contact_time_s" in out
+    table = pd.read_csv(tmp_path / "b.csv")
+    assert list(table["speed_m_s"]) == [7.0, 30.0]
+    assert table["e"].iloc[1] < table["e"].iloc[0]  # this ball's COR falls with speed
+    assert (tmp_path / "b.png").stat().st_size > 0
+    status, out, _ = run(capsys, "ball", "--speeds-mph", "20")
+    assert status == 0 and "8.941" in out  # 20 mph in m/s; the paper ball by default
