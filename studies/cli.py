@@ -511,13 +511,14 @@ def _racket_arg(p):
     )
 
 
-def _ball_arg(p, flag="--ball", default="tennis", what="ball"):
+def _ball_arg(p, flag="--ball", default="tennis", what="ball", **extra):
     p.add_argument(
         flag,
         default=default,
         metavar="PRESET_OR_TOML",
         help=f"{what}: preset ({', '.join(BALLS)}) or TOML file with a [ball] "
         f"table (default: {default})",
+        **extra,
     )
 
 
@@ -650,14 +651,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.set_defaults(func=cmd_collide)
 
     p = sub.add_parser("ball", help="a ball's bounce on a rigid surface against impact speed")
-    p.add_argument(
-        "ball",
-        nargs="?",
-        default="tennis",
-        metavar="PRESET_OR_TOML",
-        help=f"ball: preset ({', '.join(BALLS)}) or TOML file with a [ball] table "
-        "(default: tennis)",
-    )
+    _ball_arg(p, "ball", nargs="?")
     from studies.bounce import DEFAULT_SPEEDS
 
     _speed_option(p, "speeds", [round(v, 2) for v in DEFAULT_SPEEDS], "impact speeds", True)
