@@ -49,8 +49,10 @@ class Beam:
         Mass per length of each segment [kg/m], > 0.
     bending_stiffness : sequence of float
         Bending stiffness EI of each segment [N m^2], > 0.
-    point_masses : sequence of (position, mass)
-        Concentrated masses (e.g. lead tape): position [m from the tip], mass [kg].
+    point_masses : sequence of (position, mass) or (position, mass, offset)
+        Concentrated masses (e.g. lead tape): position [m from the tip], mass [kg] and
+        lateral offset from the long axis [m] (default 0; it counts only in the roll
+        inertia, the bending modes are of the long axis).
     damping : float or sequence of float
         Modal damping ratio of each bending mode, in [0, 1): one value for all, or one per
         mode.  Default :data:`DEFAULT_DAMPING`.
@@ -58,6 +60,10 @@ class Beam:
         Number of bending modes, in [1, :data:`MAX_MODES`].  Default :data:`DEFAULT_MODES`.
     elements : int
         Finite elements along a non-uniform beam (about), >= 20.
+    roll_inertia_per_length : sequence of float or None
+        Moment of inertia about the long axis per length of each segment [kg m] (the
+        frame's width: hoop, strings, throat arms), >= 0; None (default) when the beam's
+        width is not modelled, and then :attr:`roll_inertia` is None.
 
     A tabulated profile is given as many short segments.  Uniform beams without point
     masses use the analytic modes (:mod:`beam.uniform`), others finite elements
@@ -71,6 +77,7 @@ class Beam:
     damping: float | tuple = DEFAULT_DAMPING
     n_modes: int = DEFAULT_MODES
     elements: int = field(default=240, compare=False)
+    roll_inertia_per_length: tuple | None = None
 
     def __post_init__(self):
         st = finite_array("stations", self.stations, "m").ravel()
@@ -92,14 +99,26 @@ class Beam:
                     f"{name} must vary by at most {MAX_PROFILE_RATIO:g} times along the beam, "
                     f"got {float(values.min()):g} to {float(values.max()):g}"
                 )
-        pm = (
-            finite_array("point_masses", self.point_masses).reshape(-1, 2)
-            if len(self.point_masses)
-            else np.zeros((0, 2))
-        )
-        for x_p, m_p in pm:
-            in_range("point mass position", x_p, 0.0, st[-1], "m from the tip")
-            positive("point mass", m_p, "kg")
+        pm = np.zeros((len(self.point_masses), 3))
+        for i, point in enumerate(self.point_masses):
+            values = finite_array("point_masses", point).ravel()
+            if values.size not in (2, 3):
+                raise ValueError(
+                    "each point mass must be (position [m], mass [kg]) or (position, mass, "
+                    f"offset [m]), got {shown(point)}"
+                )
+            pm[i, : values.size] = values
+            in_range("point mass position", values[0], 0.0, st[-1], "m from the tip")
+            positive("point mass", values[1], "kg")
+        if self.roll_inertia_per_length is not None:
+            roll = finite_array("roll_inertia_per_length", self.roll_inertia_per_length, "kg m")
+            roll = roll.ravel()
+            if roll.size != st.size - 1 or np.any(roll < 0):
+                raise ValueError(
+                    f"roll_inertia_per_length needs one value >= 0 per segment "
+                    f"({st.size - 1}) [kg m], got {shown(self.roll_inertia_per_length)}"
+                )
+            object.__setattr__(self, "roll_inertia_per_length", tuple(roll))
         n_modes = in_range("n_modes", self.n_modes, 1, MAX_MODES)
         if n_modes != int(n_modes):
             raise ValueError(f"n_modes must be a whole number, got {shown(self.n_modes)}")
@@ -161,8 +180,13 @@ class Beam:
         st = np.asarray(self.stations)
         lengths = np.diff(st)
         masses = np.asarray(self.mass_per_length) * lengths
-        pm = np.asarray(self.point_masses).reshape(-1, 2)
-        return 0.5 * (st[:-1] + st[1:]), lengths, masses, pm
+        return 0.5 * (st[:-1] + st[1:]), lengths, masses, self.point_array[:, :2]
+
+    @property
+    def point_array(self) -> np.ndarray:
+        """The point masses as an array (P, 3): position [m from the tip], mass [kg],
+        lateral offset [m]."""
+        return np.asarray(self.point_masses, dtype=float).reshape(-1, 3)
 
     @cached_property
     def mass(self) -> float:
@@ -196,6 +220,23 @@ class Beam:
         """Recoil weight: the moment of inertia about the centre of mass [kg cm^2]."""
         return self.inertia_cm * 1e4
 
+    @cached_property
+    def roll_inertia(self) -> float | None:
+        """Moment of inertia about the long axis [kg m^2] (the 'twistweight'): the
+        segments' roll inertia plus m y**2 of each point mass; None when the beam's width is
+        not modelled (``roll_inertia_per_length`` is None)."""
+        if self.roll_inertia_per_length is None:
+            return None
+        pm = self.point_array
+        lengths = np.diff(np.asarray(self.stations))
+        return float(np.asarray(self.roll_inertia_per_length) @ lengths + pm[:, 1] @ pm[:, 2] ** 2)
+
+    @property
+    def twistweight_kgcm2(self) -> float | None:
+        """:attr:`roll_inertia` in the spec sheets' unit [kg cm^2] (None if not modelled)."""
+        roll = self.roll_inertia
+        return None if roll is None else roll * 1e4
+
     @property
     def swingweight(self) -> float:
         """Moment of inertia about the axis 10 cm from the butt [kg m^2]."""
@@ -227,8 +268,8 @@ class Beam:
         return beam
 
     def with_point_masses(self, *masses) -> Beam:
-        """This beam with more point masses (lead tape): pairs (position [m from the tip],
-        mass [kg])."""
+        """This beam with more point masses (lead tape): (position [m from the tip],
+        mass [kg]) or (position, mass, lateral offset [m])."""
         return replace(self, point_masses=(*self.point_masses, *map(tuple, masses)))
 
     # ----- modes -----------------------------------------------------------------------
@@ -252,7 +293,7 @@ class Beam:
             np.asarray(self.stations),
             self.mass_per_length,
             self.bending_stiffness,
-            self.point_masses,
+            self.point_array[:, :2],
             self.elements,
         )
 
@@ -288,7 +329,7 @@ class Beam:
                 np.asarray(self.stations),
                 self.mass_per_length,
                 self.bending_stiffness,
-                self.point_masses,
+                self.point_array[:, :2],
                 self.n_modes,
                 self.elements,
             )

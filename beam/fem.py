@@ -39,8 +39,18 @@ def element_shapes(nodes: np.ndarray, x):
 
 
 def mesh(stations: np.ndarray, extra_points: np.ndarray, elements: int) -> np.ndarray:
-    """Node positions: every station and extra point, elements of about L / ``elements``."""
+    """Node positions: every station and extra point, elements of about L / ``elements``.
+
+    Points closer than 1e-9 L to the one before are merged with it: an element of rounding
+    length would make the stiffness matrix singular (a point mass placed at a station
+    computed another way lands there)."""
     knots = np.unique(np.concatenate([stations, extra_points]))
+    tol = 1e-9 * (stations[-1] - stations[0])
+    keep = np.r_[True, np.diff(knots) > tol]
+    keep[-1] = True  # the beam's ends stay where they are
+    knots = knots[keep]
+    if knots.size > 2 and knots[-1] - knots[-2] <= tol:
+        knots = np.delete(knots, -2)
     target = (stations[-1] - stations[0]) / elements
     pieces = [
         np.linspace(a, b, max(1, int(np.ceil((b - a) / target))) + 1)[:-1]

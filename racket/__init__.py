@@ -6,12 +6,12 @@ spec sheets (:func:`from_specs`, :func:`string_bed_stiffness`, the :data:`CATALO
 well-known rackets) and the modelled flex test (:func:`flex_test_stiffness`).
 """
 
-from racket.catalog import CATALOG
-from racket.flex import flex_test_stiffness
 from racket.presets import TENNIS_BALL_MASS, TENNIS_BALL_RADIUS, paper_racket, tennis_ball
 from racket.racket import SUPPORTS, Hand, Racket, StringBed
 from racket.solver import Impact, impact
 from racket.specs import from_specs, string_bed_stiffness
+from racket.specs.catalog import CATALOG
+from racket.specs.stiffness import flex_test_stiffness
 
 __all__ = [
     "CATALOG",

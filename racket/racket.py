@@ -9,6 +9,7 @@ import numpy as np
 
 from beam import Beam
 from common.checks import finite_array, non_negative, positive, shown
+from racket.head import HEAD_ASPECT, Hoop
 
 SUPPORTS = ("free", "clamped-head", "hand-held")
 
@@ -61,10 +62,14 @@ class StringBed:
         4e4 N/m for a racket strung at 55 lb; paper Secs. III and VIII).
     extent : (float, float)
         Where the strings are, as distances from the tip [m]: (start, end), start < end.
+    width : float or None
+        Width of the string bed across the racket [m]; None (default) for an elliptical bed
+        of length / width :data:`racket.head.HEAD_ASPECT`.
     """
 
     stiffness: float
     extent: tuple
+    width: float | None = None
 
     def __post_init__(self):
         object.__setattr__(self, "stiffness", positive("stiffness", self.stiffness, "N/m"))
@@ -75,11 +80,20 @@ class StringBed:
         if end <= start:
             raise ValueError(f"extent must have start < end [m from the tip], got {self.extent!r}")
         object.__setattr__(self, "extent", (start, end))
+        if self.width is not None:
+            object.__setattr__(self, "width", positive("strings width", self.width, "m"))
 
     @property
     def center(self) -> float:
         """Geometric centre of the string bed [m from the tip]."""
         return 0.5 * (self.extent[0] + self.extent[1])
+
+    @property
+    def full_width(self) -> float:
+        """Width of the string bed [m] (:attr:`width`, or from :data:`HEAD_ASPECT`)."""
+        if self.width is not None:
+            return self.width
+        return (self.extent[1] - self.extent[0]) / HEAD_ASPECT
 
 
 @dataclass(frozen=True)
@@ -134,10 +148,29 @@ class Racket:
 
         return racket_system(self.beam.modes, self.support, self.hand)
 
+    @property
+    def hoop(self) -> Hoop:
+        """The frame's centre line around the head: an ellipse through the tip, as far
+        outside the string bed at its sides as the strings' start is from the tip."""
+        start = self.strings.extent[0]
+        return Hoop(self.strings.center, 0.5 * self.strings.full_width + start)
+
     def with_mass(self, mass_kg: float, position_m: float) -> Racket:
         """This racket with a point mass (lead tape) of ``mass_kg`` [kg] at ``position_m``
-        [m from the tip]; mass, balance, swingweight and modes follow from the new beam."""
+        [m from the tip] on the long axis; mass, balance, swingweight and modes follow from
+        the new beam."""
         return replace(self, beam=self.beam.with_point_masses((position_m, mass_kg)))
+
+    def with_lead_tape(self, mass_kg: float, at: str) -> Racket:
+        """This racket with lead tape of ``mass_kg`` [kg] per side at the clock position
+        ``at`` of the head's hoop (``"12"``, ``"3 and 9"``, ``"2 and 10"``, ...; see
+        :meth:`racket.head.Hoop.clock`).  Each piece is a point mass on the hoop: it adds to
+        the mass, balance and swingweight by its position along the racket and to the roll
+        inertia by m y**2."""
+        x, y = self.hoop.clock(at)
+        mass_kg = positive("lead tape mass", mass_kg, "kg")
+        points = [(float(xi), mass_kg, float(yi)) for xi, yi in zip(x, y, strict=True)]
+        return replace(self, beam=self.beam.with_point_masses(*points))
 
     def check_positions(self, position) -> np.ndarray:
         """Impact positions [m from the tip] as a 1-D array; ValueError if there are none,

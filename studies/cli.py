@@ -409,8 +409,12 @@ def cmd_specs(args) -> int:
     specs, sources = racket_specs(args.racket)
     report = spec_report(racket, specs, count=count)
     if specs is not None:
-        print("spec sheet and fitted model (f1 given on the spec sheet, not inferred from RA):")
+        print("spec sheet and fitted model (frame stiffness as given, not inferred from RA):")
         _print_table(report.fit, "{:.5g}")
+        print("\nfitted parts and their plausible ranges:")
+        _print_table(report.parts.drop(columns="source"), "{:.4g}")
+        for warning in report.warnings:
+            print(f"warning: {warning}", file=sys.stderr)
         print()
     print("the racket (with any lead tape, strings and support of the file):")
     _print_table(report.properties, "{:.4g}")
@@ -426,6 +430,10 @@ def cmd_specs(args) -> int:
         print("\nsources:")
         for key, source in sources.items():
             print(f"  {key}: {source}")
+    if specs is not None:
+        print("\nsources of the parts' ranges:")
+        for part in report.parts.itertuples():
+            print(f"  {part.part}: {part.source}")
     if args.out:
         write_table(report.effective_mass, args.out)
     if args.plot:

@@ -11,8 +11,10 @@ keys are errors)::
     stations = [0.0, 0.3, 0.68] # m from the tip  } ... or a piecewise-constant profile
     mass_per_length = [...]     # kg/m per segment }
     bending_stiffness = [...]   # N m^2 per segment }
-    point_masses = [[0.05, 0.004]]   # [position m from the tip, mass kg]
-    lead_tape = [{mass_g = 3.0, from_butt_cm = 68.0}]   # lead tape, in tennis units
+    point_masses = [[0.05, 0.004]]   # [position m from the tip, mass kg(, offset m)]
+    lead_tape = [{mass_g = 3.0, from_butt_cm = 68.0},   # lead tape, in tennis units: on the
+                 {mass_g = 2.0, at = "3 and 9"}]        # axis, or at a clock position
+                                                        # of the head (mass_g per side)
     damping = 0.005             # modal damping ratio (one value or one per mode)
     n_modes = 8
     support = "free"            # or "clamped-head" or "hand-held"
@@ -22,9 +24,12 @@ keys are errors)::
     mass_kg = 0.321
     balance_cm = 33.0           # or balance_pts_hl (1 pt = 1/8 in head-light)
     swingweight_kgcm2 = 325
-    f1_hz = 150                 # (ra is refused until the RA scale is calibrated)
+    f1_hz = 150                 # or flex_deflection_mm with flex_load_n (ra is refused
+                                # until the RA scale is calibrated)
     head_size_cm2 = 645         # or head_size_in2
     tension_lb = 55             # or tension_n, or string_stiffness_n_m
+    beam_width_mm = [23, 26, 22]  # optional: tip, sides, throat (or one width)
+    twistweight_kgcm2 = 14      # optional; recoil_weight_kgcm2 also (or for swingweight)
 
     [racket.strings]
     stiffness = 4e4             # N/m
@@ -66,7 +71,6 @@ from racket import (
     TENNIS_BALL_RADIUS,
     Hand,
     Racket,
-    StringBed,
     from_specs,
     paper_racket,
     tennis_ball,
@@ -78,7 +82,7 @@ else:  # pragma: no cover
     import tomli as tomllib
 
 RACKETS = {"paper": paper_racket, **{name: entry.racket for name, entry in CATALOG.items()}}
-"""Racket presets by name: the paper's uniform racket and the catalogue (racket.catalog)."""
+"""Racket presets by name: the paper's uniform racket and the catalogue (racket.specs.catalog)."""
 
 SMALL_BALL_RADIUS = 0.0125
 """Radius [m] of the 10.3 g happy and unhappy balls: an assumption (a rubber sphere of
@@ -132,8 +136,13 @@ _SPEC_KEYS = {
     "tension_lb",
     "tension_n",
     "string_stiffness_n_m",
+    "recoil_weight_kgcm2",
+    "twistweight_kgcm2",
+    "flex_deflection_mm",
+    "flex_load_n",
+    "beam_width_mm",
 }
-_LEAD_KEYS = {"mass_g", "from_butt_cm"}
+_LEAD_KEYS = {"mass_g", "from_butt_cm", "at"}
 _HAND_KEYS = {"stiffness", "damping", "grip_length"}
 _BALL_KEYS = {"preset", "mass", "law", "k", "e", "a", "b", "k0", "e0", "slope", "calibrated_to"}
 
@@ -224,26 +233,38 @@ def racket_from_table(table: dict) -> Racket:
     else:
         beam = replace(beam, damping=damping, n_modes=n_modes)
     beam = beam.with_point_masses(*_list(table, "point_masses", "racket"))
-    for tape in _list(table, "lead_tape", "racket"):
-        _check_keys(tape, _LEAD_KEYS, "racket.lead_tape")
-        if set(tape) != _LEAD_KEYS:
-            raise ValueError("each lead_tape entry needs mass_g and from_butt_cm")
-        mass_g = in_range("lead_tape mass_g", tape["mass_g"], 0.0, 200.0, "g")
-        if mass_g == 0.0:
-            raise ValueError("lead_tape mass_g must be > 0 g, got 0")
-        from_butt = in_range(
-            "lead_tape from_butt_cm", tape["from_butt_cm"], 0.0, 100 * beam.length, "cm"
-        )
-        beam = beam.with_point_masses((beam.length - from_butt / 100.0, mass_g / 1000.0))
     strings_table = table.get("strings", {})
     _check_keys(strings_table, _STRING_KEYS, "racket.strings")
-    strings = StringBed(
-        strings_table.get("stiffness", base.strings.stiffness),
-        tuple(strings_table.get("extent", base.strings.extent)),
+    strings = replace(
+        base.strings,
+        stiffness=strings_table.get("stiffness", base.strings.stiffness),
+        extent=tuple(strings_table.get("extent", base.strings.extent)),
     )
     hand_table = table.get("hand", {})
     _check_keys(hand_table, _HAND_KEYS, "racket.hand")
-    return Racket(beam, strings, table.get("support", base.support), Hand(**hand_table))
+    racket = Racket(beam, strings, table.get("support", base.support), Hand(**hand_table))
+    for tape in _list(table, "lead_tape", "racket"):
+        racket = _with_lead_tape(racket, tape)
+    return racket
+
+
+def _with_lead_tape(racket: Racket, tape) -> Racket:
+    """``racket`` with one ``lead_tape`` entry: ``mass_g`` and either ``from_butt_cm`` (on the
+    long axis) or ``at`` (a clock position of the head, ``mass_g`` per side)."""
+    _check_keys(tape, _LEAD_KEYS, "racket.lead_tape")
+    if "mass_g" not in tape or len(set(tape) & {"from_butt_cm", "at"}) != 1:
+        raise ValueError(
+            "each lead_tape entry needs mass_g and one of from_butt_cm or at (a clock "
+            "position such as '12' or '3 and 9')"
+        )
+    mass_g = in_range("lead_tape mass_g", tape["mass_g"], 0.0, 200.0, "g")
+    if mass_g == 0.0:
+        raise ValueError("lead_tape mass_g must be > 0 g, got 0")
+    if "at" in tape:
+        return racket.with_lead_tape(mass_g / 1000.0, tape["at"])
+    length = racket.beam.length
+    from_butt = in_range("lead_tape from_butt_cm", tape["from_butt_cm"], 0.0, 100 * length, "cm")
+    return racket.with_mass(mass_g / 1000.0, length - from_butt / 100.0)
 
 
 def ball_from_table(table: dict) -> Ball:

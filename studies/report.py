@@ -27,23 +27,54 @@ class SpecReport:
     properties: pd.DataFrame
     modes: pd.DataFrame
     effective_mass: pd.DataFrame
+    parts: pd.DataFrame
+    warnings: tuple = ()
 
 
-def _fit_table(sheet: SpecSheet, beam: Beam) -> pd.DataFrame:
+def _fit_table(sheet: SpecSheet, beam: Beam, throat: float) -> pd.DataFrame:
     """The spec sheet against the fitted model (before lead tape or other changes)."""
     rows = [
         ("mass", 1e3 * sheet.mass, 1e3 * beam.mass, "g"),
         ("balance", 100 * sheet.balance, 100 * beam.balance, "cm from the butt"),
         ("swingweight", 1e4 * sheet.swingweight, beam.swingweight_kgcm2, "kg cm^2"),
-        ("f1 (free-free)", sheet.f1, beam.modes.frequencies[0], "Hz"),
     ]
+    if sheet.recoil_weight is not None:
+        rows.append(
+            ("recoil weight", 1e4 * sheet.recoil_weight, beam.recoil_weight_kgcm2, "kg cm^2")
+        )
+    if sheet.twistweight is not None:
+        rows.append(("twistweight", 1e4 * sheet.twistweight, beam.twistweight_kgcm2, "kg cm^2"))
+    if sheet.f1 is not None:
+        rows.append(("f1 (free-free)", sheet.f1, beam.modes.frequencies[0], "Hz"))
+    else:
+        deflection, load = sheet.flex
+        rows.append(
+            (
+                "flex-test deflection",
+                1e3 * deflection,
+                1e3 * load / flex_test_stiffness(beam, throat),
+                f"mm under {load:g} N",
+            )
+        )
     table = pd.DataFrame(rows, columns=["quantity", "spec_sheet", "fitted_model", "unit"])
     table["relative_difference"] = table["fitted_model"] / table["spec_sheet"] - 1.0
     return table
 
 
-def _properties(racket: Racket, profile: Profile | None) -> pd.DataFrame:
+def _parts(profile: Profile) -> pd.DataFrame:
+    """The fitted part masses beside their plausible ranges and the ranges' sources."""
+    return pd.DataFrame(
+        [
+            (name, 1e3 * mass, 1e3 * low, 1e3 * high, source)
+            for name, mass, low, high, source in profile.parts()
+        ],
+        columns=["part", "mass_g", "low_g", "high_g", "source"],
+    )
+
+
+def _properties(racket: Racket) -> pd.DataFrame:
     beam = racket.beam
+    throat = 2.0 * racket.hoop.center
     hand = beam.length - HAND_FROM_BUTT
     rows = [
         ("length", 100 * beam.length, "cm"),
@@ -51,6 +82,11 @@ def _properties(racket: Racket, profile: Profile | None) -> pd.DataFrame:
         ("balance", 100 * beam.balance, "cm from the butt"),
         ("swingweight", beam.swingweight_kgcm2, "kg cm^2 (axis 10 cm from the butt)"),
         ("recoil weight", beam.recoil_weight_kgcm2, "kg cm^2 (about the centre of mass)"),
+        *(
+            [("twistweight", beam.twistweight_kgcm2, "kg cm^2 (about the long axis)")]
+            if beam.roll_inertia is not None
+            else []
+        ),
         (
             "centre of percussion",
             100 * (beam.length - center_of_percussion(racket, hand)),
@@ -60,20 +96,13 @@ def _properties(racket: Racket, profile: Profile | None) -> pd.DataFrame:
         ("string bed", 100 * (racket.strings.extent[1] - racket.strings.extent[0]), "cm long"),
         (
             "flex-test tip stiffness",
-            flex_test_stiffness(beam, racket.strings.extent[1]),
-            "N/m (handle and throat supported; not converted to RA)",
+            flex_test_stiffness(beam, throat),
+            "N/m (handle and bottom of the head supported; not converted to RA)",
         ),
     ]
-    if profile is not None:
-        rows += [
-            ("head hoop mass", 1e3 * profile.head_hoop, "g"),
-            ("strings mass", 1e3 * profile.strings, "g"),
-            ("throat mass", 1e3 * profile.throat, "g"),
-            ("handle mass", 1e3 * profile.handle, f"g (last {100 * profile.handle_length:g} cm)"),
-        ]
-        extra = beam.mass - (profile.head_hoop + profile.strings + profile.throat + profile.handle)
-        if abs(extra) > 1e-9:
-            rows.append(("added point masses", 1e3 * extra, "g (lead tape)"))
+    added = beam.point_array[:, 1].sum()
+    if added > 0:
+        rows.append(("added point masses", 1e3 * added, "g (lead tape)"))
     return pd.DataFrame(rows, columns=["quantity", "value", "unit"])
 
 
@@ -110,7 +139,8 @@ def _modes(racket: Racket, count: int) -> pd.DataFrame:
 def spec_report(racket: Racket, specs: dict | None = None, count: int = 4) -> SpecReport:
     """Tables describing ``racket``; with the spec sheet it was fitted to (``specs``, the
     keywords of :func:`racket.from_specs`), also the sheet against the fitted model (before
-    any lead tape) and the mass split.
+    any lead tape), the fitted parts with their plausible ranges, and a warning for each
+    part at the edge of its range.
 
     The modes table lists the free-free bending modes and, for the racket held by its
     :class:`racket.Hand`, the coupled modes (frequency and damping ratio), including the
@@ -124,14 +154,18 @@ def spec_report(racket: Racket, specs: dict | None = None, count: int = 4) -> Sp
             "effective_mass_kg": racket.beam.effective_mass(x),
         }
     )
-    fit, profile = pd.DataFrame(), None
+    fit, parts, warnings = pd.DataFrame(), pd.DataFrame(), ()
     if specs is not None:
         sheet = spec_sheet(**specs)
         fitted, profile = fit_profile(sheet)
-        fit = _fit_table(sheet, fitted)
+        fit = _fit_table(sheet, fitted, profile.layout.head_length)
+        parts = _parts(profile)
+        warnings = tuple(profile.at_edge())
     return SpecReport(
         fit=fit,
-        properties=_properties(racket, profile),
+        properties=_properties(racket),
         modes=_modes(racket, count),
         effective_mass=effective,
+        parts=parts,
+        warnings=warnings,
     )

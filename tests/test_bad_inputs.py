@@ -71,6 +71,14 @@ TOML = {
         "lead_tape mass_g must be in [0, 200] g, got -3",
     ),
     "lead_key": ("[racket]\nlead_tape = [{grams = 3}]\n", "unknown key 'grams'"),
+    "lead_one_side": (
+        '[racket]\nlead_tape = [{mass_g = 3, at = "3"}]\n',
+        "one side only; give both sides, '3 and 9'",
+    ),
+    "lead_both_places": (
+        '[racket]\nlead_tape = [{mass_g = 3, at = "12", from_butt_cm = 60}]\n',
+        "needs mass_g and one of from_butt_cm or at",
+    ),
     "hand_key": ("[racket.hand]\ngrip = 0.1\n", "unknown key 'grip' in [racket.hand]"),
     "hand_negative": ("[racket.hand]\nstiffness = -1\n", "hand stiffness must be > 0"),
     "support": ('[racket]\nsupport = "glued"\n', "support must be one of"),

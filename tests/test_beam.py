@@ -119,6 +119,18 @@ def test_point_mass_parallel_axis_and_fem():
     assert taped.modes.frequencies[0] < base.modes.frequencies[0]
 
 
+@pytest.mark.parametrize("where", [0.3, 0.68])
+def test_a_point_mass_a_rounding_error_off_a_station_is_at_the_station(where):
+    """Lead tape placed at a station computed another way (the head's middle, the butt) is
+    a rounding error off it; the beam must not grow an element of that length."""
+    profile = Beam((0.0, 0.3, 0.68), (0.6, 0.4), (120.0, 60.0))
+    exact, off = (
+        profile.with_point_masses((x, 0.005), (x, 0.005, 0.1)) for x in (where, where - 3e-17)
+    )
+    assert off.modes.frequencies == pytest.approx(exact.modes.frequencies, rel=1e-9)
+    assert off.length == exact.length
+
+
 @pytest.mark.parametrize(
     "kwargs, name",
     [

@@ -109,8 +109,10 @@ def test_modes(tmp_path, capsys):
 def test_specs_of_a_catalogue_racket(capsys):
     status, out, _ = run(capsys, "specs", "pure-drive-2021")
     assert status == 0
-    assert "f1 given on the spec sheet, not inferred from RA" in out
+    assert "frame stiffness as given, not inferred from RA" in out
     assert "tennisaddict.fr" in out  # the sources are printed
+    assert "fitted parts and their plausible ranges" in out and "butt cap" in out
+    assert "sources of the parts' ranges:" in out and "racket_specs_sample.csv" in out
     assert "rocking" in out and "hand_held_Hz" in out
     assert "flex-test tip stiffness" in out
 

@@ -1,5 +1,7 @@
-"""Rackets from spec sheets: the fit round-trips, infeasible sheets are refused with the
-reason, units, the membrane string-bed model, lead tape, the flex test and the catalogue."""
+"""Rackets from spec sheets: the fit round-trips with every part in its plausible range,
+impossible sheets are refused with the reason, units, the membrane string-bed model, the
+flex test and the catalogue.  (The sample of real spec sheets and lead tape by clock
+position: tests/test_spec_sheets.py.)"""
 
 import numpy as np
 import pytest
@@ -8,7 +10,9 @@ from hypothesis import strategies as st
 
 from common.units import IN2, LB, POINT
 from racket import CATALOG, flex_test_stiffness, from_specs, string_bed_stiffness
-from racket.specs import STRING_MASS, fit_profile, spec_sheet
+from racket.specs import PARTS, fit_profile, spec_sheet
+from racket.specs.mass_fit import fit_masses
+from racket.specs.parts import layout
 
 # Five spec sheets from light and head-heavy to heavy and head-light, flexible to stiff.
 SHEETS = {
@@ -50,8 +54,9 @@ def test_fit_round_trips(name):
     assert beam.modes.frequencies[0] == pytest.approx(f1, rel=1e-7)
     assert min(beam.mass_per_length) > 0
     _, profile = fit_profile(spec_sheet(tension_lb=55, **specs))
-    assert profile.strings == STRING_MASS
-    assert min(profile.head_hoop, profile.throat, profile.handle) > 0
+    for part in PARTS:
+        assert part.low <= profile.masses[part.name] <= part.high
+    assert sum(profile.masses.values()) == pytest.approx(mass, rel=1e-12)
 
 
 def test_units_are_explicit_and_equivalent():
@@ -72,7 +77,7 @@ def test_units_are_explicit_and_equivalent():
     "change, match",
     [
         (dict(swingweight_kgcm2=400), r"swingweight_kgcm2 must be in \(\d+, \d+\) kg cm\^2"),
-        (dict(swingweight_kgcm2=200), r"handle would need negative mass"),
+        (dict(swingweight_kgcm2=200), r"swingweight_kgcm2 must be in \(\d+, \d+\) kg cm\^2"),
         (dict(balance_cm=60.0), r"balance_cm must be in \[20, 50\] cm from the butt, got 60"),
         (dict(length_m=0.46, balance_cm=47.0), r"balance must lie on the racket"),
         (dict(head_size_cm2=1300.0), r"head_size_cm2 must be in \[\d+, \d+\] cm\^2"),
@@ -120,7 +125,9 @@ def test_missing_or_doubled_specs(specs, match):
 
 def test_ra_is_refused_with_the_reason():
     specs = dict(mass_kg=0.32, balance_cm=33, swingweight_kgcm2=320, head_size_in2=100)
-    with pytest.raises(ValueError, match=r"RA scale has no public calibration.*give f1_hz"):
+    with pytest.raises(
+        ValueError, match=r"RA scale has no public calibration.*give f1_hz.*flex_deflection_mm"
+    ):
         from_specs(ra=66, tension_lb=55, **specs)
 
 
@@ -221,10 +228,18 @@ def test_any_sheet_round_trips_or_is_refused_with_a_reason(mass, balance, swingw
     try:
         racket = from_specs(**specs)
     except ValueError as err:
-        assert "swingweight_kgcm2 must be in" in str(err) or "no positive mass" in str(err)
+        assert str(err).startswith(("swingweight_kgcm2 must be in", "balance must be in"))
         return
     beam = racket.beam
     assert min(beam.mass_per_length) > 0
     assert beam.mass == pytest.approx(mass, rel=1e-9)
     assert beam.balance == pytest.approx(balance, rel=1e-9)
     assert beam.swingweight_kgcm2 == pytest.approx(swingweight, rel=1e-9)
+
+
+def test_a_mass_no_plausible_parts_add_up_to_is_refused():
+    lay = layout(0.6858, 100 * IN2)
+    total = sum(p.low for p in PARTS)
+    with pytest.raises(ValueError, match=r"mass_kg must be in \(0.\d+, 0.\d+\) kg .*got 0.12"):
+        fit_masses(lay, 0.12, 0.33, 0.03)
+    assert total > 0.12

@@ -4,8 +4,8 @@ Every entry holds the keyword arguments of :func:`racket.specs.from_specs` and, 
 it comes from.  Two numbers are not on any spec sheet and are the same assumption for all:
 
 * ``f1_hz``: spec sheets give the RA rating, which cannot be converted yet (see
-  :mod:`racket.flex`), so the first free-free frequency is set to :data:`ASSUMED_F1`.  The
-  published RA is kept in ``published_ra`` for when a calibration exists.
+  :mod:`racket.specs.stiffness`), so the first free-free frequency is set to
+  :data:`ASSUMED_F1`.  The published RA is kept in ``published_ra`` for when a calibration exists.
 * ``tension_lb``: a racket is strung to the player's taste; 55 lb is the paper's "typical of
   most rackets" (Sec. VIII).
 """
@@ -15,7 +15,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from racket.racket import Racket
-from racket.specs import from_specs
+from racket.specs.fit import from_specs
 
 ASSUMED_F1 = 150.0
 """First free-free frequency [Hz] assumed for catalogue rackets.  Composite rackets made after
@@ -24,7 +24,7 @@ ASSUMED_F1 = 150.0
 historical development of the tennis racket", Appl. Sci. 9, 4352, 2019); the paper's 1990s
 graphite racket is at 120 Hz.  150 Hz is an assumption, not a measurement of these models."""
 
-ASSUMED = "assumption (see racket.catalog)"
+ASSUMED = "assumption (see racket.specs.catalog)"
 PAPER_TENSION = "the paper, Sec. VIII: 55 lb is typical of most rackets"
 OUNCE = 0.028349523125
 """One ounce [kg] (US spec sheets quote strung weight in oz)."""

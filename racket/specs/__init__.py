@@ -1,0 +1,31 @@
+"""Rackets from their spec sheets (kept apart from the model, as pvlib keeps datasheet
+fitting in ``ivtools``).
+
+* :mod:`~racket.specs.sheet`: the spec sheet's numbers, their units and ranges;
+* :mod:`~racket.specs.parts`: the parts of a racket, where their mass sits and its plausible
+  range;
+* :mod:`~racket.specs.mass_fit`: the part masses that meet the sheet (constrained least
+  squares);
+* :mod:`~racket.specs.stiffness`: the bending-stiffness profile and the flex test;
+* :mod:`~racket.specs.strings`: the string bed's stiffness from the tension;
+* :mod:`~racket.specs.fit`: the fitted beam and :func:`from_specs`;
+* :mod:`~racket.specs.catalog`: well-known rackets with sourced sheets.
+"""
+
+from racket.specs.fit import Profile, fit_profile, from_specs
+from racket.specs.parts import PARTS
+from racket.specs.sheet import SPEC_RANGES, SpecSheet, spec_sheet
+from racket.specs.stiffness import flex_test_stiffness
+from racket.specs.strings import string_bed_stiffness
+
+__all__ = [
+    "PARTS",
+    "SPEC_RANGES",
+    "Profile",
+    "SpecSheet",
+    "fit_profile",
+    "flex_test_stiffness",
+    "from_specs",
+    "spec_sheet",
+    "string_bed_stiffness",
+]

@@ -1,0 +1,168 @@
+"""A racket model that meets its spec sheet: part masses, stiffness profile, string bed.
+
+:func:`fit_profile` builds the beam: the part masses of :mod:`racket.specs.parts` fitted to
+the sheet's mass, balance and swingweight (and twistweight) by :mod:`racket.specs.mass_fit`,
+the bending-stiffness profile of :mod:`racket.specs.stiffness` scaled to the sheet's f1 or
+flex test; :func:`from_specs` adds the string bed and the support.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from beam import Beam
+from racket.racket import Racket, StringBed
+from racket.specs.mass_fit import fit_masses
+from racket.specs.parts import PARTS, Layout, layout
+from racket.specs.sheet import SpecSheet, spec_sheet
+from racket.specs.stiffness import (
+    RA_UNCALIBRATED,
+    TYPICAL_BEAM_WIDTHS,
+    bending_profile,
+    flex_test_stiffness,
+)
+
+EDGE_FRACTION = 0.02
+"""A fitted part within this fraction of its range from an end is reported as at the edge
+of its range."""
+
+
+@dataclass(frozen=True)
+class Profile:
+    """The fitted model of a spec sheet.
+
+    Attributes
+    ----------
+    masses : dict
+        Mass of each part [kg], by the names of :data:`~racket.specs.parts.PARTS`.
+    layout : Layout
+        Where the parts sit (cells, hoop, string bed).
+    twistweight_residual : float or None
+        Fitted minus given twistweight [kg m^2], if one was given.
+    recoil_weight_residual : float or None
+        Fitted minus given recoil weight [kg m^2], if one was given.
+    beam_widths : (float, float, float)
+        The frame depths (tip, sides, throat) [m] that shaped EI (the sheet's, or
+        :data:`~racket.specs.stiffness.TYPICAL_BEAM_WIDTHS`).
+    """
+
+    masses: dict
+    layout: Layout
+    twistweight_residual: float | None
+    recoil_weight_residual: float | None
+    beam_widths: tuple
+
+    def parts(self) -> list[tuple[str, float, float, float, str]]:
+        """(name, mass, low, high, source) of each part [kg]."""
+        return [(p.name, self.masses[p.name], p.low, p.high, p.source) for p in PARTS]
+
+    def at_edge(self) -> list[str]:
+        """Warnings for the parts within :data:`EDGE_FRACTION` of an end of their range."""
+        out = []
+        for name, mass, low, high, _ in self.parts():
+            margin = EDGE_FRACTION * (high - low)
+            for end, bound in (("low", low), ("high", high)):
+                if abs(mass - bound) <= margin:
+                    out.append(
+                        f"the {name} ({1e3 * mass:.1f} g) sits at the {end} end of its "
+                        f"plausible range ({1e3 * low:g}-{1e3 * high:g} g): the sheet needs an "
+                        f"unusual racket, or a spec-sheet number is off"
+                    )
+        return out
+
+
+def fit_profile(sheet: SpecSheet) -> tuple[Beam, Profile]:
+    """The beam whose mass, balance, swingweight and f1 (or flex-test stiffness) equal the
+    spec sheet's, and the fitted model.
+
+    Raises ValueError, naming the quantity and the range plausible rackets reach, when no
+    racket with parts in their plausible ranges meets the sheet.
+    """
+    if sheet.ra is not None:
+        raise ValueError(RA_UNCALIBRATED)
+    lay = layout(sheet.length, sheet.head_area)
+    fit = fit_masses(lay, sheet.mass, sheet.balance, sheet.swingweight, sheet.twistweight)
+    widths = sheet.beam_widths or TYPICAL_BEAM_WIDTHS
+    shape = bending_profile(lay.stations, lay.head_length, widths)
+    beam = Beam(
+        tuple(lay.stations),
+        tuple(fit.masses @ lay.mass_shapes),
+        tuple(shape),
+        roll_inertia_per_length=tuple(fit.masses @ lay.roll_shapes),
+    )
+    if sheet.f1 is not None:
+        beam = beam.with_f1(sheet.f1)
+    else:  # the flex test's stiffness scales as EI, the frequencies as its square root
+        deflection, load = sheet.flex
+        ratio = load / deflection / flex_test_stiffness(beam, lay.head_length)
+        beam = beam.with_f1(beam.modes.frequencies[0] * np.sqrt(ratio))
+    recoil = None
+    if sheet.recoil_weight is not None:
+        recoil = beam.inertia_cm - sheet.recoil_weight
+    profile = Profile(
+        masses={p.name: float(m) for p, m in zip(PARTS, fit.masses, strict=True)},
+        layout=lay,
+        twistweight_residual=fit.twistweight_residual,
+        recoil_weight_residual=recoil,
+        beam_widths=tuple(widths),
+    )
+    return beam, profile
+
+
+def from_specs(*, support: str = "free", **specs) -> Racket:
+    """A racket whose mass, balance, swingweight and frame stiffness equal a spec sheet's.
+
+    Parameters
+    ----------
+    length_m : float
+        Overall length [m]; default 0.6858 (27 in).
+    mass_kg : float
+        Strung mass [kg].
+    balance_cm, balance_pts_hl : float
+        Balance [cm from the butt], or points head-light (1 pt = 1/8 in from the middle;
+        negative = head-heavy).  Give one.
+    swingweight_kgcm2 : float
+        Swingweight [kg cm^2] about the axis 10 cm from the butt (strung).
+    recoil_weight_kgcm2 : float, optional
+        Recoil weight [kg cm^2], the moment of inertia about the centre of mass: instead of
+        the swingweight, or beside it as a check (the difference is reported).
+    twistweight_kgcm2 : float, optional
+        Moment of inertia about the long axis [kg cm^2]: met exactly when parts in their
+        ranges can, else as closely as they can (the residual is reported).
+    f1_hz, ra, flex_deflection_mm : float
+        Frame stiffness: the first free-free bending frequency [Hz], the RA rating, or the
+        tip deflection [mm] in a flex test under ``flex_load_n`` [N] at the tip (supports
+        7 cm from the butt and at the bottom of the head).  Give one; ``ra`` is refused
+        until the RA scale is calibrated (see :mod:`racket.specs.stiffness`).
+    flex_load_n : float
+        The flex test's load [N] (with ``flex_deflection_mm``).
+    head_size_in2, head_size_cm2 : float
+        Head (string-bed) area.  Give one.
+    beam_width_mm : float or (float, float, float), optional
+        Frame depth across the string plane [mm]: one value, or the tip, sides and throat
+        (as "23/26/22 mm" on spec sheets).  It shapes the stiffness profile.
+    tension_lb, tension_n, string_stiffness_n_m : float
+        String tension [lb or N] (membrane model :func:`string_bed_stiffness`), or the
+        string-plane stiffness [N/m].  Give one.
+    support : str
+        As in :class:`~racket.Racket` ("free", "clamped-head" or "hand-held").
+
+    Returns
+    -------
+    Racket
+        Its beam has the fitted profile (:func:`fit_profile`); its elliptical string bed
+        has the head size.
+
+    Raises
+    ------
+    ValueError
+        For a missing, doubled or out-of-range spec, or a sheet no racket with plausible
+        parts can meet (naming the quantity and the range such rackets reach).
+    """
+    sheet = spec_sheet(**specs)
+    beam, profile = fit_profile(sheet)
+    lay = profile.layout
+    strings = StringBed(sheet.string_stiffness, lay.strings_extent, lay.strings_width)
+    return Racket(beam, strings, support)

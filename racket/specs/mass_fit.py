@@ -1,0 +1,173 @@
+"""The part masses that meet a spec sheet: a constrained least-squares fit.
+
+The spec sheet's mass, balance (first moment) and swingweight, and where given the
+twistweight (roll inertia), are linear in the part masses of :mod:`racket.specs.parts`:
+``A m = t``.  With more parts than numbers there are many solutions; the fit takes the one
+closest to a typical racket's split (each part's distance measured in its plausible range)
+with every part inside its range:
+
+    minimise sum_i ((m_i - typical_i) / (high_i - low_i))**2
+    subject to A m = t and low_i <= m_i <= high_i.
+
+Mass, balance and swingweight are met exactly (to rounding) whenever a racket with parts in
+their ranges can meet them; otherwise the sheet is refused, naming the quantity and the
+range such rackets reach (found by linear programming).  A twistweight is met exactly when
+it can be, else as closely as the parts allow, and the residual is reported.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from common.units import IN2, POINT
+from racket.specs.parts import PARTS, Layout
+
+_NAMES = ("mass", "first moment", "swingweight", "twistweight")
+_SOFT_WEIGHT = 1e6  # weight of a twistweight that cannot be met exactly, against the prior
+
+
+@dataclass(frozen=True)
+class MassFit:
+    """The fitted part masses.
+
+    Attributes
+    ----------
+    masses : ndarray
+        Mass of each part of :data:`~racket.specs.parts.PARTS` [kg].
+    twistweight_residual : float or None
+        Fitted minus given twistweight [kg m^2] when one was given (0 when met exactly).
+    """
+
+    masses: np.ndarray
+    twistweight_residual: float | None = None
+
+
+def _bounds():
+    low = np.array([p.low for p in PARTS])
+    high = np.array([p.high for p in PARTS])
+    return low, high
+
+
+def typical_split(mass: float) -> np.ndarray:
+    """The typical part masses [kg] of a racket of ``mass`` [kg]: the frame's parts (hoop,
+    throat, handle) scaled so that the parts add up to ``mass``, then kept in range."""
+    low, high = _bounds()
+    typical = np.array([p.typical for p in PARTS])
+    frame = np.array([p.name in ("hoop", "throat", "handle") for p in PARTS])
+    rest = mass - typical[~frame].sum()
+    typical[frame] *= max(rest, 0.0) / typical[frame].sum()
+    return np.clip(typical, low, high)
+
+
+def _linprog(c, a_eq, b_eq):
+    from scipy.optimize import linprog
+
+    low, high = _bounds()
+    return linprog(c, A_eq=a_eq, b_eq=b_eq, bounds=list(zip(low, high, strict=True)))
+
+
+def _reachable(row, a_eq, b_eq) -> tuple[float, float] | None:
+    """Smallest and largest ``row @ m`` over parts in range with ``a_eq m = b_eq``."""
+    lo, hi = _linprog(row, a_eq, b_eq), _linprog(-row, a_eq, b_eq)
+    if lo.status != 0 or hi.status != 0:
+        return None
+    return float(lo.fun), float(-hi.fun)
+
+
+def _refusal(moments: np.ndarray, target: np.ndarray, length: float, head_area: float) -> str:
+    """Why no racket with plausible parts meets the sheet: the first of mass, balance and
+    swingweight that cannot be met, with the range that can."""
+    mass, first = target[0], target[1]
+    low, high = _bounds()
+    parts = "with every part in its plausible range (racket.specs.parts.PARTS)"
+    if not low.sum() <= mass <= high.sum():
+        return (
+            f"mass_kg must be in ({low.sum():.3f}, {high.sum():.3f}) kg for a racket {parts}, "
+            f"got {mass:.4g}"
+        )
+    reach = _reachable(moments[1], moments[:1], target[:1])
+    lo, hi = (length - r / mass for r in reversed(reach))
+    balance = length - first / mass
+    if not lo <= balance <= hi:
+        pts = [(length / 2 - b) / POINT for b in (lo, hi)]
+        return (
+            f"balance must be in ({100 * lo:.1f}, {100 * hi:.1f}) cm from the butt "
+            f"({pts[0]:.0f} to {pts[1]:.0f} pts head-light) for a {1e3 * mass:.4g} g racket "
+            f"{parts}, got {100 * balance:.4g} cm"
+        )
+    lo, hi = _reachable(moments[2], moments[:2], target[:2])
+    return (
+        f"swingweight_kgcm2 must be in ({1e4 * lo:.0f}, {1e4 * hi:.0f}) kg cm^2 for a "
+        f"{1e3 * mass:.4g} g racket balanced at {100 * balance:.4g} cm with a "
+        f"{head_area / IN2:.4g} in^2 head {parts}, got {1e4 * target[2]:.4g}"
+    )
+
+
+def _least_distance(a_eq, b_eq, typical, soft=None) -> np.ndarray:
+    """Parts in range closest to ``typical`` with ``a_eq m = b_eq`` (and ``soft = (row,
+    value)`` met as closely as possible), in scaled variables z = (m - low) / (high - low)."""
+    from scipy.optimize import minimize
+
+    low, high = _bounds()
+    span = high - low
+    scale = np.abs(b_eq)
+    a = a_eq * span / scale[:, None]
+    b = (b_eq - a_eq @ low) / scale
+    z_typ = (typical - low) / span
+    if soft is not None:
+        row, value = soft
+        s_row, s_val = row * span / abs(value), (value - row @ low) / abs(value)
+
+    def cost(z):
+        d = z - z_typ
+        f, g = 0.5 * d @ d, d.copy()
+        if soft is not None:
+            r = s_row @ z - s_val
+            f, g = f + 0.5 * _SOFT_WEIGHT * r * r, g + _SOFT_WEIGHT * r * s_row
+        return f, g
+
+    start = _linprog(np.zeros(len(PARTS)), a_eq, b_eq).x
+    result = minimize(
+        cost,
+        (start - low) / span,
+        jac=True,
+        method="SLSQP",
+        bounds=[(0.0, 1.0)] * len(PARTS),
+        constraints={"type": "eq", "fun": lambda z: a @ z - b, "jac": lambda z: a},
+        options={"ftol": 1e-15, "maxiter": 500},
+    )
+    z = np.clip(result.x, 0.0, 1.0)
+    # Polish: meet the equalities to rounding by the least change of the parts off their
+    # bounds (the step is of the size of SLSQP's tolerance, far inside the ranges).
+    free = (z > 1e-9) & (z < 1.0 - 1e-9)
+    af = a[:, free]
+    z[free] += af.T @ np.linalg.solve(af @ af.T, b - a @ z)
+    return low + span * z
+
+
+def fit_masses(
+    layout: Layout,
+    mass: float,
+    balance: float,
+    swingweight: float,
+    twistweight: float | None = None,
+) -> MassFit:
+    """Part masses [kg] meeting ``mass`` [kg], ``balance`` [m from the butt] and
+    ``swingweight`` [kg m^2] exactly, and ``twistweight`` (roll inertia) [kg m^2] if given
+    as closely as the parts allow; ValueError naming the quantity and its reachable range
+    when no racket with plausible parts has them."""
+    length = float(layout.stations[-1])
+    moments = layout.moments()
+    target = np.array([mass, mass * (length - balance), swingweight])
+    if _linprog(np.zeros(len(PARTS)), moments[:3], target).status != 0:
+        raise ValueError(_refusal(moments[:3], target, length, layout.strings_area))
+    typical = typical_split(mass)
+    if twistweight is None:
+        return MassFit(_least_distance(moments[:3], target, typical))
+    with_roll = np.append(target, twistweight)
+    if _linprog(np.zeros(len(PARTS)), moments, with_roll).status == 0:
+        return MassFit(_least_distance(moments, with_roll, typical), 0.0)
+    masses = _least_distance(moments[:3], target, typical, soft=(moments[3], twistweight))
+    return MassFit(masses, float(moments[3] @ masses - twistweight))

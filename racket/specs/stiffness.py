@@ -1,0 +1,101 @@
+"""The frame's bending stiffness: its profile along the racket, and the static flex test.
+
+Profile
+-------
+:func:`bending_profile` gives EI along the racket up to a scale: EI = w d(x)**3, with d
+the frame's depth across the string plane (the spec sheets' "beam width") and w the total
+in-plane width of the members side by side, for thin-walled sections alike but for their
+depth (the second moment of area of a section of fixed shape scales as its depth cubed; at a
+fixed wall, as its width):
+
+* the head: two rails whose depth runs linearly from the tip's width to the sides' width
+  at the head's middle and to the throat's width at its bottom;
+* the throat: two arms of the throat's width;
+* the handle: one shaft of the throat's depth, as wide in the plane as the two arms
+  together (assumption: the shaft inside the pallet is about 2.5 cm wide, each throat arm
+  about half that), so the same EI as the throat.
+
+The shape is then set by the beam widths alone: a thicker throat (BeamWidth3) stiffens the
+throat and handle against the head; equal widths give a uniform EI.  With the sheets'
+typical widths (tip 23, sides 24, throat 22.5 mm) EI varies by about 20 % along the frame.
+The scale then follows from the frame stiffness given: f1 (frequencies scale as sqrt(EI)
+at a fixed mass), or a measured flex-test deflection (:func:`flex_test_stiffness` scales
+as EI).
+
+Flex test
+---------
+
+The RA rating of spec sheets comes from the Babolat RDC: "supporting the racquet at the
+handle and in the throat while a force is applied to the tip; the stiffness index is a
+measurement of how much the racquet tip is deflected" (Tennis Warehouse University,
+"Racquet vibration explained").  :func:`flex_test_stiffness` models that test on a beam:
+simple supports at :data:`HANDLE_SUPPORT` from the butt and at the throat end of the head, a
+point load at the tip, and the tip stiffness F / deflection.
+
+Calibration status.  Babolat publishes neither the machine's load nor the scale from the
+deflection to RA.  The one public analysis found (Sten Solli, racquetTune, on the Tennis
+Warehouse forum thread "Racquet stiffness - RDC/RA and frame frequency") shows RA rising with
+the beam-theory stiffness 4 M f1^2 over the TWU frequency database, with a scatter too large
+to compute one from the other.  Without paired (RA, f1 or deflection) data the RA -> stiffness
+scale cannot be calibrated, so :func:`racket.from_specs` asks for f1 and refuses an RA-only
+spec sheet with that reason; ``racket-impact specs`` prints the modelled test stiffness of
+every fitted racket so that such data can calibrate it.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from beam import Beam, fem
+
+HANDLE_SUPPORT = 0.07
+"""Handle support of the modelled flex test [m from the butt] (the middle of the grip)."""
+
+RA_UNCALIBRATED = (
+    "ra cannot be used yet: the RA scale has no public calibration against a measurable "
+    "stiffness (see racket.specs.stiffness); give f1_hz, the frame's first free-free "
+    "frequency [Hz] (tap the frame hanging free and read the ring's pitch), or "
+    "flex_deflection_mm with flex_load_n, the tip's deflection under a load at the tip with "
+    "the racket supported 7 cm from the butt and at the bottom of the head"
+)
+
+TYPICAL_BEAM_WIDTHS = (0.023, 0.024, 0.0225)
+"""Beam widths [m] (tip, sides, throat) used when a sheet gives none: the medians of the
+139 spec sheets of ../shared/data/racket_specs_sample.csv (23, 24 and 22.5 mm)."""
+
+
+def bending_profile(stations, head_length: float, widths) -> np.ndarray:
+    """EI of each cell between ``stations`` [m from the tip], up to a scale (see the module
+    docstring): the head ends at ``head_length`` [m], and ``widths`` are the frame's depths
+    (tip, sides, throat) [m]."""
+    stations = np.asarray(stations, dtype=float)
+    mid = 0.5 * (stations[:-1] + stations[1:])
+    tip, sides, throat = widths
+    return np.interp(mid, [0.0, 0.5 * head_length, head_length], [tip, sides, throat]) ** 3
+
+
+def flex_test_stiffness(beam: Beam, throat: float) -> float:
+    """Tip stiffness [N/m] of the beam in the modelled flex test.
+
+    Parameters
+    ----------
+    beam : Beam
+        The frame (tip at x = 0).
+    throat : float
+        The throat support [m from the tip] (the throat end of the head).
+    """
+    supports = np.array([throat, beam.length - HANDLE_SUPPORT])
+    extra = np.column_stack([supports, np.zeros(2)])
+    nodes, k, _ = fem.assemble(
+        np.asarray(beam.stations),
+        beam.mass_per_length,
+        beam.bending_stiffness,
+        np.vstack([beam.point_array[:, :2], extra]),
+        beam.elements,
+    )
+    fixed = [2 * int(np.argmin(np.abs(nodes - s))) for s in supports]
+    free = np.setdiff1d(np.arange(k.shape[0]), fixed)
+    load = np.zeros(free.size)
+    load[0] = 1.0  # unit force at the tip's deflection (dof 0, which stays free)
+    tip = np.linalg.solve(k[np.ix_(free, free)], load)[0]
+    return float(1.0 / tip)
