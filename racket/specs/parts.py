@@ -74,7 +74,7 @@ PARTS = (
     ),
     Part(
         "strings", 0.012, 0.024, 0.016,
-        "strung minus unstrung weight of the 139 sheets of ../shared/data/"
+        "strung minus unstrung weight of the 139 sheets of tests/data/"
         "racket_specs_sample.csv: 12-22 g for all but 3 (median 16 g)",
     ),
     Part(

@@ -109,7 +109,7 @@ around real rackets: the ITF allows at most 73.7 cm (29 in) of length and a stru
 of 39.4 x 29.2 cm (an ellipse of 140 in^2) (ITF Rules of Tennis, Appendix II); junior
 rackets start at 19 in (48 cm); strung adult rackets weigh 230-370 g, balance 30-36 cm,
 swing 280-360 kg cm^2 and have beam widths of 17.5-29 mm (retailers' spec sheets, e.g.
-../shared/data/racket_specs_sample.csv); frames ring at 100-200 Hz (Taraborrelli et al.,
+tests/data/racket_specs_sample.csv); frames ring at 100-200 Hz (Taraborrelli et al.,
 Appl. Sci. 2019); strings are strung at 40-65 lb.  The rest (recoil weight 50-300 and
 twistweight 5-40 kg cm^2, f1 60-400 Hz, a flex test of 0.1-100 mm under 1-2000 N,
 string-bed 5e3-2e5 N/m) is this project's assumption."""

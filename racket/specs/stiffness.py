@@ -61,7 +61,7 @@ RA_UNCALIBRATED = (
 
 TYPICAL_BEAM_WIDTHS = (0.023, 0.024, 0.0225)
 """Beam widths [m] (tip, sides, throat) used when a sheet gives none: the medians of the
-139 spec sheets of ../shared/data/racket_specs_sample.csv (23, 24 and 22.5 mm)."""
+139 spec sheets of tests/data/racket_specs_sample.csv (23, 24 and 22.5 mm)."""
 
 
 def bending_profile(stations, head_length: float, widths) -> np.ndarray:
