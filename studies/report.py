@@ -160,7 +160,7 @@ def spec_report(racket: Racket, specs: dict | None = None, count: int = 4) -> Sp
         fitted, profile = fit_profile(sheet)
         fit = _fit_table(sheet, fitted, profile.layout.head_length)
         parts = _parts(profile)
-        warnings = tuple(profile.at_edge())
+        warnings = tuple(profile.warnings())
     return SpecReport(
         fit=fit,
         properties=_properties(racket),

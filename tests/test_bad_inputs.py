@@ -104,7 +104,7 @@ TOML = {
     "specs_cm": (
         "[racket.specs]\nlength_m = 68.58\nmass_kg = 0.318\nbalance_cm = 33\n"
         "swingweight_kgcm2 = 320\nf1_hz = 150\nhead_size_in2 = 100\ntension_lb = 55\n",
-        "length_m must be in [0.45, 0.75] m, got 68.58 (cm typed as m?",
+        "length_m must be in [0.52, 0.75] m, got 68.58 (cm typed as m?",
     ),
     "specs_points": (
         "[racket.specs]\nmass_kg = 0.318\nbalance_pts_hl = 400\nswingweight_kgcm2 = 320\n"

@@ -125,8 +125,10 @@ def test_a_point_mass_a_rounding_error_off_a_station_is_at_the_station(where):
     a rounding error off it; the beam must not grow an element of that length."""
     profile = Beam((0.0, 0.3, 0.68), (0.6, 0.4), (120.0, 60.0))
     exact, off = (
-        profile.with_point_masses((x, 0.005), (x, 0.005, 0.1)) for x in (where, where - 3e-17)
+        profile.with_point_masses((x, 0.005), (x, 0.005, 0.1))
+        for x in (where, where - 4 * np.spacing(where))
     )
+    assert where - 4 * np.spacing(where) != where
     assert off.modes.frequencies == pytest.approx(exact.modes.frequencies, rel=1e-9)
     assert off.length == exact.length
 

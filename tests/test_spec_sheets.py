@@ -236,3 +236,67 @@ def test_catalogue_e_along_the_strings_moves_less_than_two_hundredths():
         change = np.abs(new.e - np.asarray(old["e"])[on])
         print(f"\n{name}: e moved by at most {change.max():.4f} (mean {change.mean():.4f})")
         assert on.sum() >= 20 and change.max() < 0.02
+
+
+@pytest.mark.parametrize(
+    "specs",
+    [
+        dict(mass_kg=0.318, balance_pts_hl=4, swingweight_kgcm2=276.0757202720742),
+        dict(
+            length_m=0.68774, mass_kg=0.268596, balance_cm=36.21956,
+            swingweight_kgcm2=273.1563, twistweight_kgcm2=25.17, head_size_in2=65.2,
+        ),
+    ],
+)  # fmt: skip
+def test_sheets_that_pin_most_parts_to_their_bounds_still_fit_exactly(specs):
+    """At the end of the reachable range most parts sit on a bound and the free parts are
+    fewer than the equalities: the fit's last polish must not need them to be more."""
+    sheet = spec_sheet(**({"head_size_in2": 100, "f1_hz": 150, "tension_lb": 52} | specs))
+    beam, profile = fit_profile(sheet)
+    assert beam.mass == pytest.approx(sheet.mass, rel=1e-9)
+    assert beam.balance == pytest.approx(sheet.balance, rel=1e-9)
+    assert beam.swingweight == pytest.approx(sheet.swingweight, rel=1e-9)
+    for part in PARTS:
+        assert part.low <= profile.masses[part.name] <= part.high
+    assert len(profile.at_edge()) >= 4
+
+
+def test_refused_ranges_show_the_digits_that_put_the_value_outside():
+    base = dict(mass_kg=0.318, balance_pts_hl=4, f1_hz=150, head_size_in2=100, tension_lb=52)
+    with pytest.raises(ValueError) as err:
+        fit_profile(spec_sheet(swingweight_kgcm2=276.07, **base))
+    message = str(err.value)
+    low = float(message.split("(")[1].split(",")[0])
+    got = float(message.split("got ")[1])
+    assert got == 276.07 and got < low, message
+    with pytest.raises(ValueError, match=r"must be in \(276, 352\) kg cm\^2 .* got 200$"):
+        fit_profile(spec_sheet(swingweight_kgcm2=200, **base))
+
+
+def test_a_recoil_weight_only_sheet_is_refused_naming_the_recoil_weight():
+    specs = dict(CATALOG["pure-drive-2021"].specs)
+    specs.pop("swingweight_kgcm2")
+    with pytest.raises(ValueError) as err:
+        from_specs(recoil_weight_kgcm2=60.0, **specs)
+    message = str(err.value)
+    assert message.startswith("recoil_weight_kgcm2 must be in (") and "got 60" in message
+    low = float(message.split("(")[1].split(",")[0])
+    from_specs(recoil_weight_kgcm2=low + 1.0, **specs)  # the range given is the reachable one
+
+
+def test_a_flex_test_implying_an_impossible_frame_is_refused():
+    specs = dict(CATALOG["pure-drive-2021"].specs)
+    specs.pop("f1_hz")
+    for deflection, load in ((100.0, 1.0), (0.1, 2000.0)):
+        with pytest.raises(ValueError, match=r"flex_deflection_mm .* flex_load_n .* outside"):
+            from_specs(flex_deflection_mm=deflection, flex_load_n=load, **specs)
+
+
+def test_a_contradicting_recoil_weight_or_unreachable_twistweight_is_warned():
+    specs = CATALOG["pure-drive-2021"].specs
+    _, profile = fit_profile(spec_sheet(**specs, recoil_weight_kgcm2=50.0))
+    assert any("recoil_weight_kgcm2 contradicts" in w for w in profile.warnings())
+    _, profile = fit_profile(spec_sheet(**specs, twistweight_kgcm2=30.0))
+    assert any("twistweight_kgcm2 cannot be met" in w for w in profile.warnings())
+    _, profile = fit_profile(spec_sheet(**specs))
+    assert profile.warnings() == []

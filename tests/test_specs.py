@@ -3,6 +3,8 @@ impossible sheets are refused with the reason, units, the membrane string-bed mo
 flex test and the catalogue.  (The sample of real spec sheets and lead tape by clock
 position: tests/test_spec_sheets.py.)"""
 
+import dataclasses
+
 import numpy as np
 import pytest
 from hypothesis import given, settings
@@ -79,9 +81,9 @@ def test_units_are_explicit_and_equivalent():
         (dict(swingweight_kgcm2=400), r"swingweight_kgcm2 must be in \(\d+, \d+\) kg cm\^2"),
         (dict(swingweight_kgcm2=200), r"swingweight_kgcm2 must be in \(\d+, \d+\) kg cm\^2"),
         (dict(balance_cm=60.0), r"balance_cm must be in \[20, 50\] cm from the butt, got 60"),
-        (dict(length_m=0.46, balance_cm=47.0), r"balance must lie on the racket"),
         (dict(head_size_cm2=1300.0), r"head_size_cm2 must be in \[\d+, \d+\] cm\^2"),
-        (dict(length_m=0.5, balance_cm=30.0), r"too large"),
+        (dict(length_m=0.53, balance_cm=30.0), r"too large"),
+        (dict(length_m=0.5, balance_cm=30.0), r"length_m must be in \[0.52, 0.75\] m"),
         (dict(mass_kg=0.01), r"mass_kg must be in \[0.15, 0.5\] kg, got 0.01"),
         (dict(mass_kg=float("nan")), r"mass_kg must be a finite number"),
         (dict(f1_hz=-3), r"f1_hz must be in \[60, 400\] Hz, got -3"),
@@ -91,6 +93,12 @@ def test_infeasible_or_bad_specs_raise_with_the_reason(change, match):
     specs = dict(SHEETS["Pure Drive-like"], tension_lb=55) | change
     with pytest.raises(ValueError, match=match):
         from_specs(**specs)
+
+
+def test_a_balance_off_the_racket_is_refused():
+    sheet = spec_sheet(**SHEETS["Pure Drive-like"], tension_lb=55)
+    with pytest.raises(ValueError, match=r"balance must lie on the racket"):
+        dataclasses.replace(sheet, length=0.46, balance=0.47)
 
 
 def test_swingweight_range_in_the_message_is_the_feasible_range():

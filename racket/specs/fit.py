@@ -16,7 +16,7 @@ from beam import Beam
 from racket.racket import Racket, StringBed
 from racket.specs.mass_fit import fit_masses
 from racket.specs.parts import PARTS, Layout, layout
-from racket.specs.sheet import SpecSheet, spec_sheet
+from racket.specs.sheet import SPEC_RANGES, SpecSheet, spec_sheet
 from racket.specs.stiffness import (
     RA_UNCALIBRATED,
     TYPICAL_BEAM_WIDTHS,
@@ -27,6 +27,12 @@ from racket.specs.stiffness import (
 EDGE_FRACTION = 0.02
 """A fitted part within this fraction of its range from an end is reported as at the edge
 of its range."""
+
+MISMATCH_KGCM2 = 2.0
+"""A given recoil weight or twistweight that the fit misses by more than this [kg cm^2] is
+reported: spec sheets print them to 1 kg cm^2, and a balance rounded to 0.1 cm moves the
+recoil weight derived from a swingweight by under 1 kg cm^2 (assumption from those
+roundings)."""
 
 
 @dataclass(frozen=True)
@@ -72,6 +78,21 @@ class Profile:
                     )
         return out
 
+    def warnings(self) -> list[str]:
+        """:meth:`at_edge`, and a given recoil weight or twistweight that the fit misses by
+        more than :data:`MISMATCH_KGCM2`."""
+        out = self.at_edge()
+        for name, residual, why in (
+            ("recoil_weight_kgcm2", self.recoil_weight_residual, "contradicts the swingweight"),
+            ("twistweight_kgcm2", self.twistweight_residual, "cannot be met by parts in range"),
+        ):
+            if residual is not None and abs(1e4 * residual) > MISMATCH_KGCM2:
+                out.append(
+                    f"the given {name} {why}: the fitted racket's is {1e4 * residual:+.1f} "
+                    f"kg cm^2 off it (mass, balance and swingweight are met)"
+                )
+        return out
+
 
 def fit_profile(sheet: SpecSheet) -> tuple[Beam, Profile]:
     """The beam whose mass, balance, swingweight and f1 (or flex-test stiffness) equal the
@@ -83,7 +104,14 @@ def fit_profile(sheet: SpecSheet) -> tuple[Beam, Profile]:
     if sheet.ra is not None:
         raise ValueError(RA_UNCALIBRATED)
     lay = layout(sheet.length, sheet.head_area)
-    fit = fit_masses(lay, sheet.mass, sheet.balance, sheet.swingweight, sheet.twistweight)
+    fit = fit_masses(
+        lay,
+        sheet.mass,
+        sheet.balance,
+        sheet.swingweight,
+        sheet.twistweight,
+        recoil_given=sheet.swingweight_from_recoil,
+    )
     widths = sheet.beam_widths or TYPICAL_BEAM_WIDTHS
     shape = bending_profile(lay.stations, lay.head_length, widths)
     beam = Beam(
@@ -97,7 +125,15 @@ def fit_profile(sheet: SpecSheet) -> tuple[Beam, Profile]:
     else:  # the flex test's stiffness scales as EI, the frequencies as its square root
         deflection, load = sheet.flex
         ratio = load / deflection / flex_test_stiffness(beam, lay.head_length)
-        beam = beam.with_f1(beam.modes.frequencies[0] * np.sqrt(ratio))
+        f1 = beam.modes.frequencies[0] * np.sqrt(ratio)
+        low, high, _ = SPEC_RANGES["f1_hz"]
+        if not low <= f1 <= high:
+            raise ValueError(
+                f"flex_deflection_mm {1e3 * deflection:g} under flex_load_n {load:g} gives a "
+                f"frame ringing at f1 = {f1:.4g} Hz, outside [{low:g}, {high:g}] Hz: "
+                f"check the deflection and the load (a racket bends a few mm under 100-200 N)"
+            )
+        beam = beam.with_f1(f1)
     recoil = None
     if sheet.recoil_weight is not None:
         recoil = beam.inertia_cm - sheet.recoil_weight

@@ -21,6 +21,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from beam import SWINGWEIGHT_AXIS
 from common.units import IN2, POINT
 from racket.specs.parts import PARTS, Layout
 
@@ -76,32 +77,52 @@ def _reachable(row, a_eq, b_eq) -> tuple[float, float] | None:
     return float(lo.fun), float(-hi.fun)
 
 
-def _refusal(moments: np.ndarray, target: np.ndarray, length: float, head_area: float) -> str:
+def _interval(lo: float, hi: float, got: float, digits: int = 0) -> tuple[str, str]:
+    """``"(lo, hi)"`` and ``got`` printed with the fewest decimals (at least ``digits``) that
+    show ``got`` outside the interval; one value when the interval is a point."""
+    for d in range(digits, 7):
+        r_lo, r_hi, r_got = (round(v, d) for v in (lo, hi, got))
+        if not r_lo <= r_got <= r_hi:
+            break
+    if round(lo, d) == round(hi, d):
+        return f"{lo:.{d}f} (the only value reachable)", f"{got:.{d}f}"
+    return f"({lo:.{d}f}, {hi:.{d}f})", f"{got:.{d}f}"
+
+
+def _refusal(
+    moments: np.ndarray,
+    target: np.ndarray,
+    length: float,
+    head_area: float,
+    recoil_given: bool = False,
+) -> str:
     """Why no racket with plausible parts meets the sheet: the first of mass, balance and
-    swingweight that cannot be met, with the range that can."""
+    swingweight (or recoil weight, if the sheet gave that instead) that cannot be met,
+    with the range that can."""
     mass, first = target[0], target[1]
     low, high = _bounds()
     parts = "with every part in its plausible range (racket.specs.parts.PARTS)"
     if not low.sum() <= mass <= high.sum():
-        return (
-            f"mass_kg must be in ({low.sum():.3f}, {high.sum():.3f}) kg for a racket {parts}, "
-            f"got {mass:.4g}"
-        )
+        span, got = _interval(low.sum(), high.sum(), mass, 3)
+        return f"mass_kg must be in {span} kg for a racket {parts}, got {got}"
     reach = _reachable(moments[1], moments[:1], target[:1])
     lo, hi = (length - r / mass for r in reversed(reach))
     balance = length - first / mass
     if not lo <= balance <= hi:
         pts = [(length / 2 - b) / POINT for b in (lo, hi)]
+        span, got = _interval(100 * lo, 100 * hi, 100 * balance, 1)
         return (
-            f"balance must be in ({100 * lo:.1f}, {100 * hi:.1f}) cm from the butt "
-            f"({pts[0]:.0f} to {pts[1]:.0f} pts head-light) for a {1e3 * mass:.4g} g racket "
-            f"{parts}, got {100 * balance:.4g} cm"
+            f"balance must be in {span} cm from the butt ({pts[0]:.0f} to {pts[1]:.0f} pts "
+            f"head-light) for a {1e3 * mass:.4g} g racket {parts}, got {got} cm"
         )
     lo, hi = _reachable(moments[2], moments[:2], target[:2])
+    name, shift = "swingweight_kgcm2", 0.0
+    if recoil_given:  # parallel axes: recoil weight = swingweight - M (balance - 10 cm)^2
+        name, shift = "recoil_weight_kgcm2", mass * (balance - SWINGWEIGHT_AXIS) ** 2
+    span, got = _interval(1e4 * (lo - shift), 1e4 * (hi - shift), 1e4 * (target[2] - shift))
     return (
-        f"swingweight_kgcm2 must be in ({1e4 * lo:.0f}, {1e4 * hi:.0f}) kg cm^2 for a "
-        f"{1e3 * mass:.4g} g racket balanced at {100 * balance:.4g} cm with a "
-        f"{head_area / IN2:.4g} in^2 head {parts}, got {1e4 * target[2]:.4g}"
+        f"{name} must be in {span} kg cm^2 for a {1e3 * mass:.4g} g racket balanced at "
+        f"{100 * balance:.4g} cm with a {head_area / IN2:.4g} in^2 head {parts}, got {got}"
     )
 
 
@@ -141,9 +162,10 @@ def _least_distance(a_eq, b_eq, typical, soft=None) -> np.ndarray:
     z = np.clip(result.x, 0.0, 1.0)
     # Polish: meet the equalities to rounding by the least change of the parts off their
     # bounds (the step is of the size of SLSQP's tolerance, far inside the ranges).
+    # lstsq gives the least-norm step even when the free parts are fewer than the equalities
+    # or dependent (many parts at their bounds).
     free = (z > 1e-9) & (z < 1.0 - 1e-9)
-    af = a[:, free]
-    z[free] += af.T @ np.linalg.solve(af @ af.T, b - a @ z)
+    z[free] += np.linalg.lstsq(a[:, free], b - a @ z, rcond=None)[0]
     return low + span * z
 
 
@@ -153,16 +175,18 @@ def fit_masses(
     balance: float,
     swingweight: float,
     twistweight: float | None = None,
+    recoil_given: bool = False,
 ) -> MassFit:
     """Part masses [kg] meeting ``mass`` [kg], ``balance`` [m from the butt] and
     ``swingweight`` [kg m^2] exactly, and ``twistweight`` (roll inertia) [kg m^2] if given
     as closely as the parts allow; ValueError naming the quantity and its reachable range
-    when no racket with plausible parts has them."""
+    when no racket with plausible parts has them (the recoil weight rather than the
+    swingweight if ``recoil_given``: the sheet gave that instead)."""
     length = float(layout.stations[-1])
     moments = layout.moments()
     target = np.array([mass, mass * (length - balance), swingweight])
     if _linprog(np.zeros(len(PARTS)), moments[:3], target).status != 0:
-        raise ValueError(_refusal(moments[:3], target, length, layout.strings_area))
+        raise ValueError(_refusal(moments[:3], target, length, layout.strings_area, recoil_given))
     typical = typical_split(mass)
     if twistweight is None:
         return MassFit(_least_distance(moments[:3], target, typical))

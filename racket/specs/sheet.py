@@ -48,6 +48,9 @@ class SpecSheet:
     recoil_weight : float or None
         Moment of inertia about the centre of mass [kg m^2], if given (with a swingweight
         too, it is a check: the fit meets the swingweight and reports the difference).
+    swingweight_from_recoil : bool
+        True when the sheet gave the recoil weight and no swingweight (``swingweight`` was
+        derived from it by the parallel-axis rule).
     beam_widths : (float, float, float) or None
         Frame depth across the string plane at the tip, the sides and the throat [m].
     """
@@ -65,6 +68,7 @@ class SpecSheet:
     twistweight: float | None = None
     recoil_weight: float | None = None
     beam_widths: tuple | None = None
+    swingweight_from_recoil: bool = False
 
     def __post_init__(self):
         length = positive("length_m", self.length, "m")
@@ -86,7 +90,7 @@ class SpecSheet:
 
 
 SPEC_RANGES = {
-    "length_m": (0.45, 0.75, "m"),
+    "length_m": (0.52, 0.75, "m"),
     "mass_kg": (0.15, 0.5, "kg"),
     "balance_cm": (20.0, 50.0, "cm from the butt"),
     "balance_pts_hl": (-24.0, 24.0, "pts head-light"),
@@ -107,12 +111,13 @@ SPEC_RANGES = {
 """The range of each spec-sheet input, in its own unit, checked before the fit.  Generous
 around real rackets: the ITF allows at most 73.7 cm (29 in) of length and a strung surface
 of 39.4 x 29.2 cm (an ellipse of 140 in^2) (ITF Rules of Tennis, Appendix II); junior
-rackets start at 19 in (48 cm); strung adult rackets weigh 230-370 g, balance 30-36 cm,
-swing 280-360 kg cm^2 and have beam widths of 17.5-29 mm (retailers' spec sheets, e.g.
-tests/data/racket_specs_sample.csv); frames ring at 100-200 Hz (Taraborrelli et al.,
-Appl. Sci. 2019); strings are strung at 40-65 lb.  The rest (recoil weight 50-300 and
-twistweight 5-40 kg cm^2, f1 60-400 Hz, a flex test of 0.1-100 mm under 1-2000 N,
-string-bed 5e3-2e5 N/m) is this project's assumption."""
+rackets start at 19 in (48 cm), but the mass model's 19 cm handle, 5 cm of throat and a
+60 in^2 head need 51.5 cm, so lengths start at 52 cm here; strung adult rackets weigh
+230-370 g, balance 30-36 cm, swing 280-360 kg cm^2 and have beam widths of 17.5-29 mm
+(retailers' spec sheets, e.g. tests/data/racket_specs_sample.csv); frames ring at
+100-200 Hz (Taraborrelli et al., Appl. Sci. 2019); strings are strung at 40-65 lb.  The
+rest (recoil weight 50-300 and twistweight 5-40 kg cm^2, f1 60-400 Hz, a flex test of
+0.1-100 mm under 1-2000 N, string-bed 5e3-2e5 N/m) is this project's assumption."""
 
 
 def _check_spec(name: str, value) -> float:
@@ -223,4 +228,5 @@ def spec_sheet(
         twistweight=None if twistweight_kgcm2 is None else twistweight_kgcm2 * 1e-4,
         recoil_weight=recoil,
         beam_widths=widths,
+        swingweight_from_recoil=swingweight_kgcm2 is None,
     )
