@@ -13,6 +13,7 @@ import numpy as np
 
 from beam import fem, uniform
 from beam.modes import Modes
+from beam.torsion import RollModes, roll_modes
 from common.checks import finite_array, in_range, positive, shown
 
 DEFAULT_DAMPING = 0.005
@@ -32,6 +33,10 @@ MAX_MODES = 200
 MAX_PROFILE_RATIO = 1e4
 """Largest ratio between the segments' largest and smallest EI (or mass per length): a
 racket's varies by a few times; beyond this the finite-element eigenproblem loses accuracy."""
+
+DEFAULT_TORSION_MODES = 4
+"""Default number of torsion modes (beyond the rigid roll) of a beam whose torsional
+stiffness is given; the ones left out count quasi-statically (static correction)."""
 
 SWINGWEIGHT_AXIS = 0.10
 """Swingweight is the moment of inertia about an axis this far from the butt [m]."""
@@ -64,6 +69,13 @@ class Beam:
         Moment of inertia about the long axis per length of each segment [kg m] (the
         frame's width: hoop, strings, throat arms), >= 0; None (default) when the beam's
         width is not modelled, and then :attr:`roll_inertia` is None.
+    torsional_stiffness : sequence of float or None
+        Torsional stiffness GJ of each segment [N m^2], > 0, for the torsion modes
+        (:attr:`roll_modes`); needs ``roll_inertia_per_length``.  None (default): the frame
+        is torsionally rigid (its roll is the rigid roll only).
+    n_torsion_modes : int
+        Torsion modes kept beyond the rigid roll, in [1, :data:`MAX_MODES`]; default
+        :data:`DEFAULT_TORSION_MODES`.
 
     A tabulated profile is given as many short segments.  Uniform beams without point
     masses use the analytic modes (:mod:`beam.uniform`), others finite elements
@@ -78,6 +90,8 @@ class Beam:
     n_modes: int = DEFAULT_MODES
     elements: int = field(default=240, compare=False)
     roll_inertia_per_length: tuple | None = None
+    torsional_stiffness: tuple | None = None
+    n_torsion_modes: int = DEFAULT_TORSION_MODES
 
     def __post_init__(self):
         st = finite_array("stations", self.stations, "m").ravel()
@@ -119,6 +133,29 @@ class Beam:
                     f"({st.size - 1}) [kg m], got {shown(self.roll_inertia_per_length)}"
                 )
             object.__setattr__(self, "roll_inertia_per_length", tuple(roll))
+        if self.torsional_stiffness is not None:
+            if self.roll_inertia_per_length is None:
+                raise ValueError(
+                    "torsional_stiffness needs roll_inertia_per_length (the twist's inertia)"
+                )
+            if np.any(np.asarray(self.roll_inertia_per_length) <= 0):
+                raise ValueError(
+                    "roll_inertia_per_length must be > 0 on every segment [kg m] with a "
+                    f"torsional_stiffness, got {shown(self.roll_inertia_per_length)}"
+                )
+            gj = finite_array("torsional_stiffness", self.torsional_stiffness, "N m^2").ravel()
+            if gj.size != st.size - 1 or np.any(gj <= 0):
+                raise ValueError(
+                    f"torsional_stiffness needs one value > 0 per segment ({st.size - 1}) "
+                    f"[N m^2], got {shown(self.torsional_stiffness)}"
+                )
+            object.__setattr__(self, "torsional_stiffness", tuple(gj))
+        n_torsion = in_range("n_torsion_modes", self.n_torsion_modes, 1, MAX_MODES)
+        if n_torsion != int(n_torsion):
+            raise ValueError(
+                f"n_torsion_modes must be a whole number, got {shown(self.n_torsion_modes)}"
+            )
+        object.__setattr__(self, "n_torsion_modes", int(n_torsion))
         n_modes = in_range("n_modes", self.n_modes, 1, MAX_MODES)
         if n_modes != int(n_modes):
             raise ValueError(f"n_modes must be a whole number, got {shown(self.n_modes)}")
@@ -232,6 +269,20 @@ class Beam:
         return float(np.asarray(self.roll_inertia_per_length) @ lengths + pm[:, 1] @ pm[:, 2] ** 2)
 
     @property
+    def is_mirror_symmetric(self) -> bool:
+        """True when the point masses off the long axis come in mirrored pairs (x, m, y)
+        and (x, m, -y): the beam is then symmetric about its long axis, and bending and
+        twisting are uncoupled (:mod:`beam.torsion`)."""
+        pm = self.point_array
+        off = pm[pm[:, 2] != 0.0]
+        plus = off[off[:, 2] > 0]
+        minus = off[off[:, 2] < 0] * np.array([1.0, 1.0, -1.0])
+        if plus.shape != minus.shape:
+            return False
+        key = lambda a: a[np.lexsort(a.T[::-1])]  # noqa: E731
+        return bool(np.allclose(key(plus), key(minus), rtol=1e-12, atol=1e-15))
+
+    @property
     def twistweight_kgcm2(self) -> float | None:
         """:attr:`roll_inertia` in the spec sheets' unit [kg cm^2] (None if not modelled)."""
         roll = self.roll_inertia
@@ -247,21 +298,34 @@ class Beam:
         """Swingweight in the spec sheets' unit [kg cm^2]."""
         return self.swingweight * 1e4
 
-    def effective_mass(self, x) -> np.ndarray:
-        """Effective mass [kg] at ``x`` [m from the tip] (Eq. 20): 1/m2 = 1/M + b**2 / I_cm,
-        with b = x_cm - x the distance from the centre of mass."""
+    def effective_mass(self, x, y=None) -> np.ndarray:
+        """Rigid-body effective mass [kg] at ``x`` [m from the tip] (Eq. 20): 1/m2 = 1/M +
+        b**2 / I_cm, with b = x_cm - x the distance from the centre of mass; with an offset
+        ``y`` [m from the long axis] the roll adds y**2 / I_roll (needs :attr:`roll_inertia`).
+        """
         b = self.center_of_mass - np.asarray(x, dtype=float)
-        return 1.0 / (1.0 / self.mass + b**2 / self.inertia_cm)
+        flexibility = 1.0 / self.mass + b**2 / self.inertia_cm
+        if y is not None:
+            if self.roll_inertia is None:
+                raise ValueError(
+                    "an offset from the long axis needs the beam's roll inertia "
+                    "(roll_inertia_per_length; a spec-sheet racket has it)"
+                )
+            flexibility = flexibility + np.asarray(y, dtype=float) ** 2 / self.roll_inertia
+        return 1.0 / flexibility
 
     def with_f1(self, f1: float) -> Beam:
         """This beam with every bending stiffness scaled so its first frequency is ``f1``
         [Hz].  Frequencies scale as sqrt(EI), so scaling EI by (f1 / f1_now)**2 keeps the
-        mode shapes."""
+        mode shapes.  The torsional stiffness GJ is left as it is (a spec-sheet fit derives
+        it from EI once, :func:`racket.from_specs`; :meth:`with_torsion_frequency` sets it)."""
         scale = (positive("f1", f1, "Hz") / self.modes.frequencies[0]) ** 2
         beam = replace(self, bending_stiffness=tuple(scale * np.asarray(self.bending_stiffness)))
         # Same shapes, frequencies times sqrt(scale), flexibility over scale: no recomputing.
         modes = self.modes
         beam.__dict__["modes"] = replace(modes, omega=modes.omega * np.sqrt(scale))
+        if "roll_modes" in self.__dict__:  # twisting does not depend on EI
+            beam.__dict__["roll_modes"] = self.roll_modes
         if "_flexibility" in self.__dict__:
             flex = self._flexibility
             beam.__dict__["_flexibility"] = fem.FemFlexibility(flex.nodes, flex.blocks / scale)
@@ -271,6 +335,45 @@ class Beam:
         """This beam with more point masses (lead tape): (position [m from the tip],
         mass [kg]) or (position, mass, lateral offset [m])."""
         return replace(self, point_masses=(*self.point_masses, *map(tuple, masses)))
+
+    def with_torsion_frequency(self, frequency: float) -> Beam:
+        """This beam with every torsional stiffness scaled so that its first torsion mode
+        rings at ``frequency`` [Hz] (frequencies scale as sqrt(GJ); the shapes stay)."""
+        modes = self.roll_modes
+        if modes is None or modes.count < 2:
+            raise ValueError("with_torsion_frequency needs a beam with torsional_stiffness")
+        scale = (positive("torsion frequency", frequency, "Hz") / modes.frequencies[0]) ** 2
+        beam = self.with_torsional_stiffness(scale * np.asarray(self.torsional_stiffness))
+        beam.__dict__["roll_modes"] = replace(
+            modes, omega=modes.omega * np.sqrt(scale), residual=modes.residual / scale
+        )
+        return beam
+
+    def with_torsional_stiffness(self, torsional_stiffness) -> Beam:
+        """This beam with the torsional stiffness GJ [N m^2] of each segment (its bending
+        modes and flexibility are kept, not computed again)."""
+        beam = replace(self, torsional_stiffness=tuple(np.ravel(torsional_stiffness)))
+        for name in ("modes", "_flexibility"):
+            if name in self.__dict__:
+                beam.__dict__[name] = self.__dict__[name]
+        return beam
+
+    @cached_property
+    def roll_modes(self) -> RollModes | None:
+        """The rigid roll and the torsion modes about the long axis (:mod:`beam.torsion`);
+        None when the roll inertia is not modelled.  Without ``torsional_stiffness`` the
+        rigid roll alone."""
+        if self.roll_inertia_per_length is None:
+            return None
+        return roll_modes(
+            np.asarray(self.stations),
+            self.roll_inertia_per_length,
+            self.torsional_stiffness,
+            self.point_array,
+            self.n_torsion_modes,
+            self.damping if np.ndim(self.damping) == 0 else self.damping[0],
+            self.elements,
+        )
 
     # ----- modes -----------------------------------------------------------------------
     @property

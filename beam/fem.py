@@ -59,7 +59,7 @@ def mesh(stations: np.ndarray, extra_points: np.ndarray, elements: int) -> np.nd
     return np.concatenate([*pieces, knots[-1:]])
 
 
-def _element_properties(stations, mass_per_length, bending_stiffness, nodes):
+def element_properties(stations, mass_per_length, bending_stiffness, nodes):
     """Length, mass per length and EI of each element between ``nodes``."""
     lengths = np.diff(nodes)
     mid = 0.5 * (nodes[:-1] + nodes[1:])
@@ -88,7 +88,7 @@ def assemble(stations, mass_per_length, bending_stiffness, point_masses, element
     """
     point_masses = np.asarray(point_masses, dtype=float).reshape(-1, 2)
     nodes = mesh(stations, point_masses[:, 0], elements)
-    l, rho, ei = _element_properties(stations, mass_per_length, bending_stiffness, nodes)  # noqa: E741
+    l, rho, ei = element_properties(stations, mass_per_length, bending_stiffness, nodes)  # noqa: E741
 
     o = np.ones_like(l)
     k_e = (ei / l**3)[:, None, None] * np.array(
@@ -138,7 +138,7 @@ def bending_modes(
     # fundamental of a fine mesh); inverted, the largest eigenvalues are the wanted ones.
     # The shift: the fundamental of a uniform beam of the mean EI and mass per length
     # (beta L = 4.730), so that mu of the wanted modes is within a small factor of 1 / s.
-    _, rho, ei = _element_properties(stations, mass_per_length, bending_stiffness, nodes)
+    _, rho, ei = element_properties(stations, mass_per_length, bending_stiffness, nodes)
     span = nodes[-1] - nodes[0]
     shift = 4.730**4 * (ei @ lengths) / (rho @ lengths) / span**4
     mu, v = eigh(m, k + shift * m, subset_by_index=[n_dof - n_modes - 2, n_dof - 3])

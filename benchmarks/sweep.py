@@ -12,7 +12,7 @@ to the targets, not the absolute times):
   phases, loading until the compression peaks and unloading until the force vanishes;
 * one position; 1e5 positions in one call and 1e6 impacts through ``studies.sweep`` (time
   and the peak of traced memory); the unhappy ball's 200-point sweep (its Xo search
-  included); the hand-held sweep and the fit to a spec sheet;
+  included); the hand-held sweep and the fit to a spec sheet; a 15 x 9 face map (issue 13);
 * whole processes: ``python -c "import racket"``, a cached ``racket-impact sweep`` and
   ``racket-impact paper`` (warm: the compiled kernel on disk).
 
@@ -34,6 +34,7 @@ from scipy.integrate import solve_ivp
 
 from ball import Ball, SineLaw
 from racket import CATALOG, impact, paper_racket, tennis_ball
+from studies.maps import face_map
 from studies.sweeps import sweep
 
 POINTS = 200
@@ -167,6 +168,14 @@ def main() -> None:
     entry = CATALOG["pure-drive-2021"]
     fit_ms = 1e3 * _median_time(lambda: entry.racket().beam.modes)
     print(f"{'fit to a spec sheet incl. modes (no target)':<48} {fit_ms:>10.3g} ms")
+    face = entry.racket()
+    face_map(face, ball, 16.5)  # its systems built once, as for any map after the first
+    _row("face map 15 x 9, spec-sheet racket (warm)", _median_time(
+        lambda: face_map(face, ball, 16.5)), "s", 1.0)  # fmt: skip
+    held_face = replace(face, support="hand-held")
+    face_map(held_face, ball, 16.5)
+    _row("  the same, hand-held (warm)", _median_time(
+        lambda: face_map(held_face, ball, 16.5)), "s", 1.0)  # fmt: skip
     print()
     _row("python -c 'import racket'", _process([sys.executable, "-c", "import racket"]), "s", 0.4)
     cli = [sys.executable, "-m", "studies.cli"]

@@ -362,7 +362,7 @@ def _one_impact(frame, points, ball, controls, out, p):
                 step,
                 force,
                 x_now,
-                force * ball.inv_ks,
+                force * points.inv_ks[p],
                 ud,
                 _dot(points.out_v[p], s),
                 _dot(points.out_dc[p], s),

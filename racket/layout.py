@@ -45,7 +45,10 @@ class Points(NamedTuple):
         and dc (rigid-body) velocity from the block states.
     reach_w : (P, nb) size of each block's share of the point's displacement (0 for dc).
     series : (P,) compliance in series with the ball [m/N]: the string bed's, plus the
-        residual flexibility of the bending modes left out (static correction).
+        residual flexibility of the bending (and torsion) modes left out (static
+        correction).
+    inv_ks : (P,) 1 / string-bed stiffness at the impact point [m/N] (for the string
+        deflection history).
     ball_velocity : (P,) ball velocity at first touch [m/s], towards the racket positive.
     state0 : (P, nb, 2) block states at first touch (a swung racket's rigid-body motion).
     x_o : (P,) the sine law's Xo [m] (ignored by the other laws).
@@ -57,6 +60,7 @@ class Points(NamedTuple):
     out_dc: np.ndarray
     reach_w: np.ndarray
     series: np.ndarray
+    inv_ks: np.ndarray
     ball_velocity: np.ndarray
     state0: np.ndarray
     x_o: np.ndarray
@@ -69,7 +73,6 @@ class BallModel(NamedTuple):
 
     trans : (2, 2); g0, g1 : (2,) as for a block.
     law : int (LINEAR, POWER, SINE or GROWING); params : (4,) the law's numbers.
-    inv_ks : 1 / string-bed stiffness [m/N] (for the string deflection history).
     """
 
     trans: np.ndarray
@@ -77,7 +80,6 @@ class BallModel(NamedTuple):
     g1: np.ndarray
     law: int
     params: np.ndarray
-    inv_ks: float
 
 
 class Controls(NamedTuple):

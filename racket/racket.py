@@ -10,8 +10,16 @@ import numpy as np
 from beam import Beam
 from common.checks import finite_array, non_negative, positive, shown
 from racket.head import HEAD_ASPECT, Hoop
+from racket.membrane import stiffness_ratio
 
 SUPPORTS = ("free", "clamped-head", "hand-held")
+STRING_PROFILES = ("uniform", "membrane")
+
+GRIP_RADIUS = 0.0177
+"""Radius [m] at which the hand grips the handle: a 4 3/8 grip (grip sizes are the
+handle's perimeter in inches), 111 mm round, as a circle.  The hand's springs act there,
+so it resists the racket's twist by k r**2 per unit length (assumption: the same spring
+across the handle as along it)."""
 
 
 @dataclass(frozen=True)
@@ -65,11 +73,16 @@ class StringBed:
     width : float or None
         Width of the string bed across the racket [m]; None (default) for an elliptical bed
         of length / width :data:`racket.head.HEAD_ASPECT`.
+    profile : str
+        How the stiffness varies over the face: ``"uniform"`` (default; ``stiffness``
+        everywhere, as in the paper) or ``"membrane"`` (``stiffness`` at the centre, rising
+        towards the frame, :mod:`racket.membrane`).
     """
 
     stiffness: float
     extent: tuple
     width: float | None = None
+    profile: str = "uniform"
 
     def __post_init__(self):
         object.__setattr__(self, "stiffness", positive("stiffness", self.stiffness, "N/m"))
@@ -82,6 +95,10 @@ class StringBed:
         object.__setattr__(self, "extent", (start, end))
         if self.width is not None:
             object.__setattr__(self, "width", positive("strings width", self.width, "m"))
+        if self.profile not in STRING_PROFILES:
+            raise ValueError(
+                f"string bed profile must be one of {STRING_PROFILES}, got {self.profile!r}"
+            )
 
     @property
     def center(self) -> float:
@@ -94,6 +111,23 @@ class StringBed:
         if self.width is not None:
             return self.width
         return (self.extent[1] - self.extent[0]) / HEAD_ASPECT
+
+    def rho2(self, x, y=0.0) -> np.ndarray:
+        """Squared elliptical radius of the points (``x`` [m from the tip], ``y`` [m from
+        the long axis]): 0 at the bed's centre, 1 on its edge."""
+        half_length = 0.5 * (self.extent[1] - self.extent[0])
+        dx = (np.asarray(x, dtype=float) - self.center) / half_length
+        return dx**2 + (np.asarray(y, dtype=float) / (0.5 * self.full_width)) ** 2
+
+    def stiffness_at(self, x, y=0.0) -> np.ndarray:
+        """String-plane stiffness [N/m] at (``x`` [m from the tip], ``y`` [m from the long
+        axis]): :attr:`stiffness` for a uniform bed; the membrane's rise towards the frame
+        (:func:`racket.membrane.stiffness_ratio`) for a ``"membrane"`` one."""
+        x, y = np.broadcast_arrays(np.asarray(x, dtype=float), np.asarray(y, dtype=float))
+        if self.profile == "uniform":
+            return np.full(x.shape, self.stiffness)
+        radius = 0.5 * np.sqrt((self.extent[1] - self.extent[0]) * self.full_width)
+        return self.stiffness * stiffness_ratio(self.rho2(x, y), radius)
 
 
 @dataclass(frozen=True)
@@ -148,6 +182,21 @@ class Racket:
 
         return racket_system(self.beam.modes, self.support, self.hand)
 
+    @cached_property
+    def face_system(self):
+        """The block system with the roll and torsion modes beside the bending ones
+        (:func:`racket.system.face_system`), for impacts off the long axis; None when the
+        beam's roll inertia is not modelled.  Computed once."""
+        from racket.system import clamped_system, face_system, roll_system
+
+        roll = self.beam.roll_modes
+        if roll is None:
+            return None
+        if self.support == "clamped-head":
+            return clamped_system()
+        length = self.beam.length
+        return face_system(self.system, roll_system(roll, length, self.support, self.hand))
+
     @property
     def hoop(self) -> Hoop:
         """The frame's centre line around the head: an ellipse through the tip, as far
@@ -171,6 +220,48 @@ class Racket:
         mass_kg = positive("lead tape mass", mass_kg, "kg")
         points = [(float(xi), mass_kg, float(yi)) for xi, yi in zip(x, y, strict=True)]
         return replace(self, beam=self.beam.with_point_masses(*points))
+
+    def check_points(self, position, offset=None) -> tuple[np.ndarray, np.ndarray | None]:
+        """Impact points as 1-D arrays: positions [m from the tip] and offsets [m from the
+        long axis, + towards 3 o'clock] broadcast together (offsets None if ``offset`` is
+        None).  ValueError as :meth:`check_positions`, for an offset that is not a number or
+        puts a point off the elliptical string bed, or for an offset on a racket whose roll
+        inertia is not modelled."""
+        if offset is None:
+            return self.check_positions(position), None
+        x = finite_array("position", position, "m from the tip")
+        y = finite_array("offset", offset, "m from the long axis")
+        try:
+            x, y = np.broadcast_arrays(x, y)
+        except ValueError:
+            raise ValueError(
+                f"position and offset must broadcast together, got shapes "
+                f"{np.shape(position)} and {np.shape(offset)}"
+            ) from None
+        x = self.check_positions(x)
+        y = np.atleast_1d(y).astype(float).ravel()
+        if self.beam.roll_inertia is None and np.any(y != 0.0):
+            raise ValueError(
+                "offset must be 0 on this racket: its roll inertia is not modelled (use a "
+                "spec-sheet racket, from_specs or a catalogue name, or a Beam with "
+                f"roll_inertia_per_length); got {shown(y[y != 0.0][0])}"
+            )
+        if not self.beam.is_mirror_symmetric:
+            raise ValueError(
+                "offset needs a racket symmetric about its long axis: its point masses off "
+                "the axis must come in mirrored pairs (x, m, y) and (x, m, -y), as lead tape "
+                "by clock position does; one side alone would couple bending and twisting, "
+                "which the model leaves out"
+            )
+        off = self.strings.rho2(x, y) > 1.0 + 1e-12
+        if np.any(off):
+            i = np.nonzero(off)[0][0]
+            half = 0.5 * self.strings.full_width * np.sqrt(max(1.0 - self.strings.rho2(x[i]), 0))
+            raise ValueError(
+                f"offset must put the impact point on the strings: at {x[i]:g} m from the tip "
+                f"they span [{-half:.4g}, {half:.4g}] m, got {shown(y[i])}"
+            )
+        return x, y
 
     def check_positions(self, position) -> np.ndarray:
         """Impact positions [m from the tip] as a 1-D array; ValueError if there are none,

@@ -140,6 +140,9 @@ class Impact:
     ----------
     position : float or ndarray
         Impact point [m from the tip].
+    offset : float or ndarray or None
+        Impact point's distance from the long axis [m, + towards 3 o'clock], or None for
+        impacts on the axis without the roll and torsion modes (the paper's 1-D model).
     speed, swing_speed : float
         Ball speed towards the strings and racket (impact-point) speed towards the ball
         before impact [m/s].
@@ -152,7 +155,10 @@ class Impact:
     v_cm : racket centre-of-mass velocity after [m/s] (along the ball's incoming path).
     omega : racket angular velocity after [rad/s]; the point at x moves at
         v_cm + (x_cm - x) omega.
-    point_velocity_dc : V2 = v_cm + b omega, dc velocity of the impact point after [m/s].
+    roll_rate : racket's angular velocity about its long axis after [rad/s] (the twist
+        rate; the point at offset y moves at y roll_rate more; 0 without offsets).
+    point_velocity_dc : V2 = v_cm + b omega (+ y roll_rate), dc velocity of the impact
+        point after [m/s] (Eq. 21).
     contact_time : [s].  peak_force : [N].
     vibration_energy : the racket's mechanical energy beyond its rigid-body kinetic energy
         when the ball leaves [J]: the bending modes, and for a hand-held racket also the
@@ -175,6 +181,7 @@ class Impact:
     """
 
     position: np.ndarray
+    offset: np.ndarray | None
     speed: float
     swing_speed: float
     e: np.ndarray
@@ -184,6 +191,7 @@ class Impact:
     ball_rebound: np.ndarray
     v_cm: np.ndarray
     omega: np.ndarray
+    roll_rate: np.ndarray
     point_velocity_dc: np.ndarray
     contact_time: np.ndarray
     peak_force: np.ndarray
@@ -234,6 +242,7 @@ def impact(
     position,
     speed: float,
     *,
+    offset=None,
     swing_speed: float = 0.0,
     pivot: float | None = None,
     steps_per_contact: int | None = None,
@@ -253,6 +262,12 @@ def impact(
     speed : float
         Ball speed towards the strings [m/s], 0 or in [0.001, 300] (> 0 unless the racket
         is swung).
+    offset : float or array_like, optional
+        Distance of the impact point(s) from the racket's long axis [m, + towards 3
+        o'clock], broadcast with ``position`` (to at most one dimension); the point must
+        lie on the elliptical string bed.  Given (even 0), the racket's roll and torsion
+        modes join the bending ones (the beam's roll inertia must be modelled, as on a
+        spec-sheet racket); None (default): impacts on the long axis, bending only.
     swing_speed : float
         Speed [m/s] of the impact point towards the ball from the racket's rigid-body
         motion (a swing), 0 or in [0.001, 300]; 0 for a racket at rest.
@@ -279,16 +294,16 @@ def impact(
     Raises
     ------
     ValueError
-        For an input out of its range, a frame whose first bending mode is below
-        ``F1_MIN`` (20 Hz), or a ball and strings so soft that the contact would last more
-        than ``CONTACT_TIME_MAX`` (20 ms).
+        For an input out of its range, a frame whose first bending (or, off the axis,
+        torsion) mode is below ``F1_MIN`` (20 Hz), or a ball and strings so soft that the
+        contact would last more than ``CONTACT_TIME_MAX`` (20 ms).
     """
     if not isinstance(racket, Racket):
         raise ValueError(f"racket must be a Racket, got {racket!r}")
     if not isinstance(ball, Ball):
         raise ValueError(f"ball must be a Ball, got {ball!r}")
-    scalar = np.ndim(position) == 0
-    x = racket.check_positions(position)
+    scalar = np.ndim(position) == 0 and np.ndim(offset) == 0
+    x, y = racket.check_points(position, offset)
     speed = check_speed("speed", speed, allow_zero=True)
     swing_speed = check_speed("swing_speed", swing_speed, allow_zero=True)
     if speed == 0.0 and swing_speed == 0.0:
@@ -317,6 +332,12 @@ def impact(
             f"the frame's first bending frequency must be >= {F1_MIN:g} Hz for an impact, "
             f"got {f1:.4g} Hz"
         )
+    roll = racket.beam.roll_modes if y is not None else None
+    if roll is not None and roll.count > 1 and roll.frequencies[0] < F1_MIN:
+        raise ValueError(
+            f"the frame's first torsion frequency must be >= {F1_MIN:g} Hz for an impact off "
+            f"the axis, got {roll.frequencies[0]:.4g} Hz"
+        )
     contact = contact_time_scale(ball, racket.strings.stiffness, speed + swing_speed)
     if contact > CONTACT_TIME_MAX:
         raise ValueError(
@@ -329,9 +350,14 @@ def impact(
     run = (racket, ball, speed, swing_speed, pivot, steps_per_contact, watch_after, histories)
     with _one_blas_thread() if x.size > IMPACTS_PER_THREAD else contextlib.nullcontext():
         if histories:
-            parts = [_solve(x, *run)]
+            parts = [_solve(x, y, *run)]
         else:  # in chunks: the kernel's inputs take about 1.6 kB per impact
-            parts = [_solve(x[i : i + CHUNK_POINTS], *run) for i in range(0, x.size, CHUNK_POINTS)]
+            parts = [
+                _solve(
+                    x[i : i + CHUNK_POINTS], None if y is None else y[i : i + CHUNK_POINTS], *run
+                )
+                for i in range(0, x.size, CHUNK_POINTS)
+            ]
     fields = parts[0][0]
     if len(parts) > 1:
         fields = {
@@ -356,17 +382,20 @@ def impact(
     return Impact(speed=speed, swing_speed=swing_speed, t=parts[0][1], **fields)
 
 
-def _solve(x, racket, ball, speed, swing_speed, pivot, steps_per_contact, watch_after, histories):
-    """:func:`impact` at the points ``x`` once its inputs are checked: the Impact's fields
-    (and the ball's largest compression, ``compression``) and the histories' times."""
-    stepper = _Stepper(racket, ball, x, speed, swing_speed, pivot, steps_per_contact)
+def _solve(
+    x, y, racket, ball, speed, swing_speed, pivot, steps_per_contact, watch_after, histories
+):
+    """:func:`impact` at the points ``x`` (offsets ``y`` or None) once its inputs are
+    checked: the Impact's fields (and the ball's largest compression, ``compression``) and
+    the histories' times."""
+    stepper = _Stepper(racket, ball, x, y, speed, swing_speed, pivot, steps_per_contact)
     code = stepper.code
     x_o = np.full(x.size, np.nan)
     if code == layout.SINE:
         # A rough search with a quarter of the steps, then the search itself from just
         # below where that one ended (a scan from the rigid racket's guess takes ~35 runs).
         rough_steps = max(50, steps_per_contact // ROUGH_STEPS_DIVISOR)
-        rough = _Stepper(racket, ball, x, speed, swing_speed, pivot, rough_steps)
+        rough = _Stepper(racket, ball, x, y, speed, swing_speed, pivot, rough_steps)
         guess = _x_o_guess(racket, ball, x, stepper.closing)
         start = _self_consistent_x_o(rough, SCAN_START * guess, refine=False)
         x_o = _self_consistent_x_o(stepper, ROUGH_MARGIN * start)
@@ -384,12 +413,17 @@ def _solve(x, racket, ball, speed, swing_speed, pivot, steps_per_contact, watch_
     # dc part (rigid-body motion) and ac part (the rest) when the ball has left.
     ball_after = out_ball[:, 1]
     q, qd = system.modal_state(out_state)
-    rigid_qd = qd[:, :2] if n else np.zeros((x.size, 2))
+    rigid_qd = qd[:, list(system.rigid)] if n else np.zeros((x.size, 2))
     v_cm = rigid_qd[:, 0] / np.sqrt(modes.mass)
     omega = rigid_qd[:, 1] / np.sqrt(modes.inertia_cm)
     v2_dc = v_cm + (modes.center_of_mass - x) * omega  # V = V_cm + b omega (Fig. 5)
+    roll_rate = np.zeros(x.size)
+    if stepper.face and n:  # the roll: y times its angular velocity
+        roll_rate = rigid_qd[:, 2] / np.sqrt(racket.beam.roll_modes.roll_inertia)
+        v2_dc = v2_dc + y * roll_rate
     v2_total = np.sum(stepper.phi * qd, axis=1)
-    mode_energy = 0.5 * (qd[:, 2:] ** 2 + (modes.omega[2 : q.shape[1]] * q[:, 2:]) ** 2)
+    nb = min(n, modes.count)  # the bending coordinates come first
+    mode_energy = 0.5 * (qd[:, 2:nb] ** 2 + (modes.omega[2:nb] * q[:, 2:nb]) ** 2)
     racket_energy = 0.5 * np.sum(rigid_qd**2, axis=1)
     mechanical = 0.5 * np.sum(qd**2 + (q @ system.stiffness) * q, axis=1)
     vibration = mechanical - racket_energy
@@ -416,9 +450,12 @@ def _solve(x, racket, ball, speed, swing_speed, pivot, steps_per_contact, watch_
 
     with np.errstate(invalid="ignore", divide="ignore"):
         e_a = np.where(speed > 0, -ball_after / speed, np.nan)
-    m_eff = racket.beam.effective_mass(x) if n else np.full(x.size, np.inf)
+    m_eff = np.full(x.size, np.inf)
+    if n:
+        m_eff = racket.beam.effective_mass(x, y if stepper.face else None)
     fields = dict(
         position=x,
+        offset=y,
         e=(v2_dc - ball_after) / closing,
         e_A=e_a,
         e_van_zandt=(v2_total - ball_after) / closing,
@@ -426,6 +463,7 @@ def _solve(x, racket, ball, speed, swing_speed, pivot, steps_per_contact, watch_
         ball_rebound=-ball_after,
         v_cm=v_cm,
         omega=omega,
+        roll_rate=roll_rate,
         point_velocity_dc=v2_dc,
         contact_time=summary[:, layout.T_CONTACT],
         peak_force=summary[:, layout.F_PEAK],
@@ -450,20 +488,25 @@ class _Stepper:
     """The kernel's inputs for one racket, ball and set of impact points, prepared once and
     run for any Xo (see :func:`racket.kernel.run_impacts`)."""
 
-    def __init__(self, racket, ball, x, speed, swing_speed, pivot, steps_per_contact):
-        k_s = racket.strings.stiffness
+    def __init__(self, racket, ball, x, y, speed, swing_speed, pivot, steps_per_contact):
+        # The step follows from the centre's string stiffness, whatever the points.
         self.closing = speed + swing_speed
-        self.dt = contact_time_scale(ball, k_s, self.closing) / steps_per_contact
+        self.dt = contact_time_scale(ball, racket.strings.stiffness, self.closing)
+        self.dt /= steps_per_contact
         self.max_steps = 12 * steps_per_contact
         law = getattr(ball.law, "kernel_law", None)
         if law is None:
             raise ValueError(f"ball law {ball.law!r} is not supported on a racket")
         self.code = law[0]
         self.modes = modes = racket.beam.modes
-        self.system = system = racket.system
+        self.face = y is not None and racket.face_system is not None
+        self.system = system = racket.face_system if self.face else racket.system
         self.n = n = system.count
         shapes = modes.shape(x)
-        self.phi = phi = shapes.T[:, :n].copy()
+        phi = shapes.T[:, : min(n, modes.count)]
+        if self.face and n:
+            phi = np.hstack([phi, racket.beam.roll_modes.shape(x, y).T])
+        self.phi = phi = np.ascontiguousarray(phi)
         trans, g0, g1 = system.step(self.dt)
         out_d, out_v, out_dc = system.outputs(phi)
         self.swing_qd = _swing_velocities(modes, x, swing_speed, pivot)
@@ -471,9 +514,12 @@ class _Stepper:
         if swing_speed:
             z0[:, n : n + 2] = self.swing_qd
         self.position = x
-        series = np.full(x.size, 1.0 / k_s)
+        inv_ks = 1.0 / racket.strings.stiffness_at(x, 0.0 if y is None else y)
+        series = inv_ks.copy()
         if n:  # static correction: the bending modes left out respond quasi-statically
             series += racket.beam.residual_flexibility(x, shapes)
+        if self.face and n:  # and the torsion modes left out
+            series += racket.beam.roll_modes.residual_flexibility(x, y)
         self.points = layout.Points(
             unit=system.inputs(phi),
             out_d=out_d,
@@ -481,6 +527,7 @@ class _Stepper:
             out_dc=out_dc,
             reach_w=np.linalg.norm(out_d, axis=2) * ~system.dc,
             series=series,
+            inv_ks=inv_ks,
             ball_velocity=np.full(x.size, speed),
             state0=system.state(z0),
             x_o=np.full(x.size, np.nan),
@@ -502,7 +549,6 @@ class _Stepper:
             g1=np.array([dt * dt / 6.0, dt / 2.0]) / -ball.mass,
             law=law[0],
             params=np.array(law[1], dtype=float),
-            inv_ks=1.0 / k_s,
         )
 
     def run(self, x_o, subset=None, stop_on_snap=False, extra_steps=0, history_steps=0):

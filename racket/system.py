@@ -24,7 +24,8 @@ from functools import cached_property
 import numpy as np
 
 from beam import Modes
-from racket.racket import Hand
+from beam.torsion import RollModes
+from racket.racket import GRIP_RADIUS, Hand
 
 _GRIP_POINTS = 24  # Gauss-Legendre points over the grip
 
@@ -46,6 +47,9 @@ class BlockSystem:
         Weights w with sqrt(w0 s_a**2 + w1 s_b**2) bounding a block's future amplitude.
     stiffness, damping : (N, N)
         W (+ K_h) and D (+ C_h) in modal coordinates.
+    rigid : tuple of int
+        The modal coordinates of rigid-body modes (translation and rotation; the roll too
+        in a :func:`face_system`): the impact point's dc velocity is theirs.
     """
 
     blocks: np.ndarray
@@ -54,6 +58,7 @@ class BlockSystem:
     metric: np.ndarray
     stiffness: np.ndarray
     damping: np.ndarray
+    rigid: tuple = (0, 1)
     _steps: dict = field(default_factory=dict, compare=False, repr=False)
 
     @property
@@ -94,10 +99,10 @@ class BlockSystem:
     def outputs(self, phi: np.ndarray):
         """Rows (P, nb, 2) giving the displacement, the velocity and the dc (rigid-body)
         velocity of points with mode shapes phi (P, N) from the block states."""
-        n = self.count
+        n, rigid = self.count, list(self.rigid)
         disp = self._blocks_of(phi @ self.basis[:n])
         vel = self._blocks_of(phi @ self.basis[n:])
-        dc = self._blocks_of(phi[:, :2] @ self.basis[n : n + 2])
+        dc = self._blocks_of(phi[:, rigid] @ self.basis[[n + i for i in rigid]])
         return disp, vel, dc
 
     @cached_property
@@ -147,9 +152,15 @@ def block_steps(blocks: np.ndarray, dt: float):
 
 def free_system(modes: Modes) -> BlockSystem:
     """The free racket: block i is mode i, (q_i, q_i')."""
-    n = modes.count
-    w2 = modes.omega**2
-    d = 2.0 * modes.damping * modes.omega
+    return _free_blocks(modes.omega, modes.damping, (0, 1))
+
+
+def _free_blocks(omega, zeta, rigid: tuple) -> BlockSystem:
+    """Uncoupled modes ``omega`` [rad/s] with damping ratios ``zeta``: block i is mode i,
+    (q_i, q_i')."""
+    n = omega.size
+    w2 = omega**2
+    d = 2.0 * zeta * omega
     blocks = np.zeros((n, 2, 2))
     blocks[:, 0, 1] = 1.0
     blocks[:, 1, 0] = -w2
@@ -157,28 +168,34 @@ def free_system(modes: Modes) -> BlockSystem:
     basis = np.zeros((2 * n, 2 * n))
     basis[np.arange(n), 2 * np.arange(n)] = 1.0
     basis[n + np.arange(n), 2 * np.arange(n) + 1] = 1.0
-    dc = modes.omega == 0.0
+    dc = omega == 0.0
     metric = np.column_stack([np.ones(n), np.where(dc, 0.0, 1.0 / np.maximum(w2, 1e-300))])
-    return BlockSystem(blocks, basis, dc, metric, np.diag(w2), np.diag(d))
+    return BlockSystem(blocks, basis, dc, metric, np.diag(w2), np.diag(d), rigid)
+
+
+def _grip_overlap(shapes, length: float, hand: Hand) -> np.ndarray:
+    """int phi_i phi_j dx over the grip / grip length, for ``shapes(x)`` (N, len(x)) of a
+    beam ``length`` [m] long (Gauss-Legendre)."""
+    nodes, weights = np.polynomial.legendre.leggauss(_GRIP_POINTS)
+    start = length - hand.grip_length
+    x = start + 0.5 * hand.grip_length * (nodes + 1.0)
+    w = 0.5 * hand.grip_length * weights
+    phi = shapes(x)
+    return (phi * w) @ phi.T / hand.grip_length
 
 
 def hand_matrices(modes: Modes, hand: Hand):
     """K_h and C_h (N, N) of the hand over the grip (see the module docstring)."""
-    nodes, weights = np.polynomial.legendre.leggauss(_GRIP_POINTS)
-    start = modes.length - hand.grip_length
-    x = start + 0.5 * hand.grip_length * (nodes + 1.0)
-    w = 0.5 * hand.grip_length * weights
-    phi = modes.shape(x)
-    overlap = (phi * w) @ phi.T / hand.grip_length  # int phi_i phi_j dx / grip length
+    overlap = _grip_overlap(modes.shape, modes.length, hand)
     return hand.stiffness * overlap, hand.damping * overlap
 
 
-def held_system(modes: Modes, hand: Hand) -> BlockSystem:
-    """The hand-held racket in real blocks (see the module docstring)."""
-    k_h, c_h = hand_matrices(modes, hand)
-    n = modes.count
-    stiffness = np.diag(modes.omega**2) + k_h
-    damping = np.diag(2.0 * modes.damping * modes.omega) + c_h
+def _held_blocks(omega, zeta, k_h, c_h, slow: float, rigid: tuple) -> BlockSystem:
+    """Modes ``omega`` [rad/s] with damping ratios ``zeta`` coupled by the hand's K_h and
+    C_h, in real blocks; blocks slower than ``slow`` [rad/s] are the dc motion."""
+    n = omega.size
+    stiffness = np.diag(omega**2) + k_h
+    damping = np.diag(2.0 * zeta * omega) + c_h
     a = np.block([[np.zeros((n, n)), np.eye(n)], [-stiffness, -damping]])
     lam, vec = np.linalg.eig(a)
     scale = np.abs(lam).max()
@@ -196,19 +213,68 @@ def held_system(modes: Modes, hand: Hand) -> BlockSystem:
         columns += [vec[:, i].real, vec[:, j].real]
         freq.append(max(abs(lam[i]), abs(lam[j])))
     blocks, basis, freq = np.array(blocks), np.column_stack(columns), np.array(freq)
-    # Blocks of the racket rocking on the hand: slower than half the first bending mode.
-    dc = freq < 0.5 * modes.omega[2]
+    dc = freq < slow
     # A rotating block's output never exceeds |c| |s|; a pair of decaying exponentials
     # never exceeds |c0 s0| + |c1 s1| <= sqrt(2) |c| |s|.
     metric = np.repeat(np.where(blocks[:, 0, 1] == 0.0, 2.0, 1.0)[:, None], 2, axis=1)
-    return BlockSystem(blocks, basis, dc, metric, stiffness, damping)
+    return BlockSystem(blocks, basis, dc, metric, stiffness, damping, rigid)
+
+
+def held_system(modes: Modes, hand: Hand) -> BlockSystem:
+    """The hand-held racket in real blocks (see the module docstring).  Blocks of the
+    racket rocking on the hand, slower than half the first bending mode, are its dc
+    motion."""
+    k_h, c_h = hand_matrices(modes, hand)
+    return _held_blocks(modes.omega, modes.damping, k_h, c_h, 0.5 * modes.omega[2], (0, 1))
+
+
+def held_roll_system(roll: RollModes, length: float, hand: Hand) -> BlockSystem:
+    """The roll and torsion modes of a hand-held racket in real blocks.  The hand's
+    springs act at the handle's surface, :data:`GRIP_RADIUS` from the axis, so it resists
+    twist with k r**2 (and c r**2) per unit length; blocks slower than half the first
+    torsion mode (the racket rolling in the hand) are the dc motion."""
+    overlap = _grip_overlap(roll.twist, length, hand) * GRIP_RADIUS**2
+    slow = 0.5 * roll.omega[1] if roll.count > 1 else np.inf
+    return _held_blocks(
+        roll.omega, roll.damping, hand.stiffness * overlap, hand.damping * overlap, slow, (0,)
+    )
+
+
+def face_system(bending: BlockSystem, roll: BlockSystem) -> BlockSystem:
+    """The bending and the roll systems side by side (uncoupled: the frame is symmetric
+    about its long axis, see :mod:`beam.torsion`); modal coordinates (q_bending, q_roll)."""
+    nb, nr = bending.count, roll.count
+    n = nb + nr
+    # rows of z = (q_b, q_r, q_b', q_r') from those of (q_b, q_b') and (q_r, q_r')
+    rows_b = np.r_[np.arange(nb), n + np.arange(nb)]
+    rows_r = np.r_[nb + np.arange(nr), n + nb + np.arange(nr)]
+    basis = np.zeros((2 * n, 2 * n))
+    basis[np.ix_(rows_b, np.arange(2 * nb))] = bending.basis
+    basis[np.ix_(rows_r, 2 * nb + np.arange(2 * nr))] = roll.basis
+    return BlockSystem(
+        blocks=np.concatenate([bending.blocks, roll.blocks]),
+        basis=basis,
+        dc=np.concatenate([bending.dc, roll.dc]),
+        metric=np.concatenate([bending.metric, roll.metric]),
+        stiffness=block_diag(bending.stiffness, roll.stiffness),
+        damping=block_diag(bending.damping, roll.damping),
+        rigid=(*bending.rigid, *(nb + i for i in roll.rigid)),
+    )
+
+
+def block_diag(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """[[a, 0], [0, b]]."""
+    out = np.zeros((a.shape[0] + b.shape[0], a.shape[1] + b.shape[1]))
+    out[: a.shape[0], : a.shape[1]] = a
+    out[a.shape[0] :, a.shape[1] :] = b
+    return out
 
 
 def clamped_system() -> BlockSystem:
     """A clamped head: nothing moves, no blocks."""
     empty = np.zeros((0, 0))
     return BlockSystem(
-        np.zeros((0, 2, 2)), empty, np.zeros(0, bool), np.zeros((0, 2)), empty, empty
+        np.zeros((0, 2, 2)), empty, np.zeros(0, bool), np.zeros((0, 2)), empty, empty, ()
     )
 
 
@@ -217,3 +283,10 @@ def racket_system(modes: Modes, support: str, hand: Hand) -> BlockSystem:
     if support == "clamped-head":
         return clamped_system()
     return held_system(modes, hand) if support == "hand-held" else free_system(modes)
+
+
+def roll_system(roll: RollModes, length: float, support: str, hand: Hand) -> BlockSystem:
+    """The block system of the roll and torsion modes of a free or hand-held racket."""
+    if support == "hand-held":
+        return held_roll_system(roll, length, hand)
+    return _free_blocks(roll.omega, roll.damping, (0,))

@@ -242,6 +242,7 @@ def cmd_sweep(args) -> int:
         string_stiffness=args.string_stiffness,
         f1=args.f1,
         support=args.support,
+        offset=args.offset,
     )
     _print_table(
         table[
@@ -361,7 +362,7 @@ def cmd_ball(args) -> int:
 
 
 def cmd_modes(args) -> int:
-    from studies.plots import HAND_FROM_BUTT, center_of_percussion
+    from studies.landmarks import HAND_FROM_BUTT, center_of_percussion
 
     check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
     count = _count("--count", args.count, 1, MAX_MODES)
@@ -444,6 +445,7 @@ def cmd_specs(args) -> int:
 
 
 def cmd_compare(args) -> int:
+    from studies.maps import compare_summary
     from studies.sweeps import compare
 
     check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
@@ -458,24 +460,9 @@ def cmd_compare(args) -> int:
         from dataclasses import replace
 
         rackets = {k: replace(r, support=args.support) for k, r in rackets.items()}
-    table = compare(rackets, load_ball(args.ball), speed, points)
-    rows = []
-    for label, group in table.groupby("racket", sort=False):
-        best = group.loc[group["e"].idxmax()]
-        rows.append(
-            {
-                "racket": label,
-                "largest_e": best["e"],
-                "at_cm_from_tip": 100 * best["position_from_tip_m"],
-                "e_at_string_centre": float(
-                    np.interp(
-                        rackets[label].strings.center, group["position_from_tip_m"], group["e"]
-                    )
-                ),
-                "e_at_tip_end": group["e"].iloc[0],
-            }
-        )
-    _print_table(pd.DataFrame(rows))
+    ball = load_ball(args.ball)
+    table = compare(rackets, ball, speed, points)
+    _print_table(compare_summary(rackets, table, ball, speed))
     if args.out:
         write_table(table, args.out)
     if args.plot:
@@ -483,6 +470,34 @@ def cmd_compare(args) -> int:
 
         groups = {k: g for k, g in table.groupby("racket", sort=False)}
         save_plot(plot_cor_comparison(groups), args.plot)
+    return 0
+
+
+def cmd_map(args) -> int:
+    from studies.maps import FIELDS, face_map
+
+    check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
+    if args.field not in FIELDS:
+        raise ValueError(f"--field must be one of {list(FIELDS)}, got {args.field!r}")
+    grid = tuple(_count("--grid", n, 4, 1000) for n in args.grid)
+    speed = _speed(args, "speed")
+    racket_speed = _speed(args, "racket_speed", allow_zero=True)
+    if args.field == "exit_speed_swung" and not racket_speed:
+        raise ValueError("--field exit_speed_swung needs --racket-speed (or --racket-speed-mph)")
+    racket = load_racket(args.racket)
+    if args.support:
+        from dataclasses import replace
+
+        racket = replace(racket, support=args.support)
+    result = face_map(racket, load_ball(args.ball), speed, racket_speed=racket_speed, grid=grid)
+    for line in result.summary():
+        print(line)
+    if args.out:
+        write_table(result.to_frame(), args.out)
+    if args.plot:
+        from studies.plots import plot_face_map
+
+        save_plot(plot_face_map(result, args.field), args.plot)
     return 0
 
 
@@ -509,13 +524,13 @@ def _labels(names: list[str]) -> list[tuple[str, str]]:
 
 
 # ----- parser -----------------------------------------------------------------------------
-def _racket_arg(p):
+def _racket_arg(p, default="paper"):
     p.add_argument(
         "--racket",
-        default="paper",
+        default=default,
         metavar="PRESET_OR_TOML",
         help=f"racket preset ({', '.join(RACKETS)}) or TOML file with a [racket] "
-        "table (default: paper)",
+        f"table (default: {default})",
     )
 
 
@@ -593,6 +608,13 @@ def build_parser() -> argparse.ArgumentParser:
     )
     p.add_argument("--points", type=int, default=101, help="impact points (default 101)")
     p.add_argument(
+        "--offset",
+        type=float,
+        metavar="M",
+        help="impact points' distance from the long axis [m, + towards 3 o'clock]; given "
+        "(even 0), the roll and torsion modes take part (a spec-sheet racket)",
+    )
+    p.add_argument(
         "--string-stiffness",
         type=float,
         nargs="+",
@@ -617,6 +639,28 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--json", metavar="FILE", help="table as JSON records")
     p.add_argument("--plot", metavar="FILE", help="e along the racket: .png, .svg or .pdf")
     p.set_defaults(func=cmd_sweep)
+
+    p = sub.add_parser("map", help="e, e_A, exit speed, vibration and twist over the face")
+    _racket_arg(p, default="pure-drive-2021")
+    _ball_arg(p)
+    _speed_option(p, "speed", 16.5, "ball speed towards the strings")
+    _speed_option(p, "racket-speed", 0.0, "free racket's speed towards the ball (swung exit)")
+    p.add_argument(
+        "--grid",
+        type=int,
+        nargs=2,
+        default=[15, 9],
+        metavar=("ALONG", "ACROSS"),
+        help="grid points along and across the racket (default 15 9)",
+    )
+    p.add_argument("--support", choices=list(SUPPORTS), help="support (default: the racket's)")
+    p.add_argument(
+        "--field", default="e_A", help="what the plot shows: e, e_A, exit_speed, "
+        "exit_speed_swung, vibration_energy or roll_rate (default e_A)",
+    )  # fmt: skip
+    p.add_argument("--out", metavar="FILE", help="table file: .csv, .json or .parquet")
+    p.add_argument("--plot", metavar="FILE", help="the map (.png, .svg, .pdf)")
+    p.set_defaults(func=cmd_map)
 
     p = sub.add_parser("serve", help="serve speed with a normal and a zero-COR ball (Sec. VIII)")
     _racket_arg(p)

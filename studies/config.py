@@ -11,6 +11,8 @@ keys are errors)::
     stations = [0.0, 0.3, 0.68] # m from the tip  } ... or a piecewise-constant profile
     mass_per_length = [...]     # kg/m per segment }
     bending_stiffness = [...]   # N m^2 per segment }
+    roll_inertia_per_length = [...]  # kg m per segment (optional: offsets, twistweight)
+    torsional_stiffness = [...] # N m^2 per segment (optional: torsion modes)
     point_masses = [[0.05, 0.004]]   # [position m from the tip, mass kg(, offset m)]
     lead_tape = [{mass_g = 3.0, from_butt_cm = 68.0},   # lead tape, in tennis units: on the
                  {mass_g = 2.0, at = "3 and 9"}]        # axis, or at a clock position
@@ -30,10 +32,12 @@ keys are errors)::
     tension_lb = 55             # or tension_n, or string_stiffness_n_m
     beam_width_mm = [23, 26, 22]  # optional: tip, sides, throat (or one width)
     twistweight_kgcm2 = 14      # optional; recoil_weight_kgcm2 also (or for swingweight)
+    torsion_hz = 320            # optional: measured first torsion frequency
 
     [racket.strings]
     stiffness = 4e4             # N/m
     extent = [0.0, 0.32]        # m from the tip
+    profile = "membrane"        # or "uniform": stiffness over the face
 
     [racket.hand]               # the hand of a hand-held racket (racket.Hand)
     stiffness = 1e4             # N/m
@@ -121,8 +125,10 @@ _RACKET_KEYS = {
     "specs",
     "lead_tape",
     "hand",
+    "roll_inertia_per_length",
+    "torsional_stiffness",
 }
-_STRING_KEYS = {"stiffness", "extent"}
+_STRING_KEYS = {"stiffness", "extent", "profile"}
 _SPEC_KEYS = {
     "length_m",
     "mass_kg",
@@ -141,6 +147,7 @@ _SPEC_KEYS = {
     "flex_deflection_mm",
     "flex_load_n",
     "beam_width_mm",
+    "torsion_hz",
 }
 _LEAD_KEYS = {"mass_g", "from_butt_cm", "at"}
 _HAND_KEYS = {"stiffness", "damping", "grip_length"}
@@ -191,6 +198,12 @@ def racket_from_table(table: dict) -> Racket:
     _check_keys(table, _RACKET_KEYS, "racket")
     uniform = {"length", "mass", "f1"} & set(table)
     profile = {"stations", "mass_per_length", "bending_stiffness"} & set(table)
+    twist = {"roll_inertia_per_length", "torsional_stiffness"} & set(table)
+    if twist and not profile:
+        raise ValueError(
+            f"{sorted(twist)[0]} in [racket] goes with a profile (stations, mass_per_length, "
+            "bending_stiffness)"
+        )
     if "specs" in table:
         if uniform or profile or "preset" in table:
             raise ValueError(
@@ -229,6 +242,8 @@ def racket_from_table(table: dict) -> Racket:
             table["bending_stiffness"],
             damping=damping,
             n_modes=n_modes,
+            roll_inertia_per_length=table.get("roll_inertia_per_length"),
+            torsional_stiffness=table.get("torsional_stiffness"),
         )
     else:
         beam = replace(beam, damping=damping, n_modes=n_modes)
@@ -239,6 +254,7 @@ def racket_from_table(table: dict) -> Racket:
         base.strings,
         stiffness=strings_table.get("stiffness", base.strings.stiffness),
         extent=tuple(strings_table.get("extent", base.strings.extent)),
+        profile=strings_table.get("profile", base.strings.profile),
     )
     hand_table = table.get("hand", {})
     _check_keys(hand_table, _HAND_KEYS, "racket.hand")

@@ -16,7 +16,7 @@ from beam import Beam
 from racket import Racket, flex_test_stiffness
 from racket.specs import Profile, SpecSheet, fit_profile, spec_sheet
 from racket.system import held_system
-from studies.plots import HAND_FROM_BUTT, center_of_percussion
+from studies.landmarks import HAND_FROM_BUTT, center_of_percussion
 
 
 @dataclass(frozen=True)
@@ -85,6 +85,11 @@ def _properties(racket: Racket) -> pd.DataFrame:
         *(
             [("twistweight", beam.twistweight_kgcm2, "kg cm^2 (about the long axis)")]
             if beam.roll_inertia is not None
+            else []
+        ),
+        *(
+            [("first torsion mode", beam.roll_modes.frequencies[0], "Hz (free frame)")]
+            if beam.roll_modes is not None and beam.roll_modes.count > 1
             else []
         ),
         (

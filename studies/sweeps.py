@@ -21,7 +21,7 @@ import pandas as pd
 from ball import Ball
 from common.checks import in_range
 from common.checks import speed as check_speed
-from racket import Racket, StringBed, impact
+from racket import Racket, impact
 from racket.solver import F1_MIN
 from studies.tables import impact_columns, impact_table
 
@@ -34,11 +34,13 @@ F1_MAX = 2000.0
 
 COLUMNS = (
     "position_from_tip_m",
+    "offset_m",
     "e",
     "e_A",
     "effective_mass_kg",
     "v_cm_m_s",
     "omega_rad_s",
+    "roll_rate_rad_s",
     "ball_rebound_m_s",
     "vibration_energy_fraction",
     "contact_time_s",
@@ -65,7 +67,7 @@ def _variant(racket: Racket, string_stiffness=None, f1=None, support=None) -> Ra
     strings = (
         racket.strings
         if string_stiffness is None
-        else StringBed(string_stiffness, racket.strings.extent)
+        else replace(racket.strings, stiffness=string_stiffness)
     )
     return replace(
         racket, beam=beam, strings=strings, support=racket.support if support is None else support
@@ -108,6 +110,7 @@ def sweep(
     string_stiffness=None,
     f1=None,
     support=None,
+    offset=None,
     swing_speed: float = 0.0,
     pivot: float | None = None,
     progress: bool | None = None,
@@ -132,6 +135,10 @@ def sweep(
         kept).
     support : str or sequence, optional
         ``"free"``, ``"clamped-head"`` or ``"hand-held"``.
+    offset : float or array_like, optional
+        Distance of the impact points from the long axis [m, + towards 3 o'clock],
+        broadcast with ``positions`` (:func:`racket.impact`); None: on the axis, the
+        bending modes only.
     swing_speed, pivot :
         A swung racket, as in :func:`racket.impact`.
     progress : bool, optional
@@ -158,7 +165,7 @@ def sweep(
     }
     varying = [name for name, values in grid.items() if len(values) > 1]
     # Every value checked before any impact runs.
-    racket.check_positions(positions)
+    racket.check_points(positions, offset)
     for sp in grid["speed"]:
         check_speed("speed", sp, allow_zero=swing_speed > 0)
     for freq in grid["f1"]:
@@ -173,7 +180,7 @@ def sweep(
         if (ks, freq, sup) not in variants:
             variants[ks, freq, sup] = _variant(racket, ks, freq, sup)
         combos.append((sp, variants[ks, freq, sup], label, b))
-    runs = [(variant, b, positions, sp, swing_speed, pivot) for sp, variant, _, b in combos]
+    runs = [(variant, b, positions, sp, offset, swing_speed, pivot) for sp, variant, _, b in combos]
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         if executor is None:
@@ -225,11 +232,11 @@ def _first_of_each_kind(caught) -> None:
             warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
 
 
-def _impact_columns(racket, ball, positions, speed, swing_speed, pivot) -> dict:
+def _impact_columns(racket, ball, positions, speed, offset, swing_speed, pivot) -> dict:
     """The table columns of one grid point (module level, so that an executor can pickle
     it)."""
     return impact_columns(
-        impact(racket, ball, positions, speed, swing_speed=swing_speed, pivot=pivot)
+        impact(racket, ball, positions, speed, offset=offset, swing_speed=swing_speed, pivot=pivot)
     )
 
 

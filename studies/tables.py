@@ -18,11 +18,13 @@ def impact_columns(result: Impact) -> dict:
     """The columns of :func:`impact_table` as a dict of 1-D arrays."""
     columns = {
         "position_from_tip_m": result.position,
+        "offset_m": 0.0 * result.position if result.offset is None else result.offset,
         "e": result.e,
         "e_A": result.e_A,
         "effective_mass_kg": result.effective_mass,
         "v_cm_m_s": result.v_cm,
         "omega_rad_s": result.omega,
+        "roll_rate_rad_s": result.roll_rate,
         "ball_rebound_m_s": result.ball_rebound,
         "vibration_energy_fraction": np.divide(result.vibration_energy, result.energy_initial),
         "contact_time_s": result.contact_time,

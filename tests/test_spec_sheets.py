@@ -2,6 +2,7 @@
 of giving a racket (recoil weight, twistweight, beam widths, a flex test)."""
 
 import json
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -224,11 +225,14 @@ def test_beam_widths_shape_the_stiffness_and_keep_f1():
 
 def test_catalogue_e_along_the_strings_moves_less_than_two_hundredths():
     """Where the whole ball lands on the string bed (its centre a ball radius inside the
-    bed's ends), e (Eq. 21) moves by less than 0.02 from the model before issue 12."""
+    bed's ends), e (Eq. 21) moves by less than 0.02 from the model before issue 12.  The
+    mass model is compared: on the uniform string bed that model had (the membrane's rise
+    towards the frame, issue 13, is a change of its own, measured in test_string_face)."""
     before = json.loads(BEFORE.read_text())
     ball = tennis_ball()
     for name, old in before["rackets"].items():
         racket = CATALOG[name].racket()
+        racket = replace(racket, strings=replace(racket.strings, profile="uniform"))
         x = racket.beam.length - np.asarray(old["position_from_butt_cm"]) / 100
         start, end = racket.strings.extent
         on = (x >= start + ball.radius) & (x <= end - ball.radius)

@@ -33,7 +33,8 @@ def sweep(request):
 
 
 def _snapped(ball, position, x_o):
-    stepper = _Stepper(RACKET, ball, np.array([position]), 10.0, 0.0, None, SINE_STEPS_PER_CONTACT)
+    x = np.array([position])
+    stepper = _Stepper(RACKET, ball, x, None, 10.0, 0.0, None, SINE_STEPS_PER_CONTACT)
     x_o = np.atleast_1d(x_o)
     summary = stepper.run(x_o, np.zeros(x_o.size, dtype=int), stop_on_snap=True)[2]
     return summary[:, layout.SNAPPED] > 0
@@ -97,7 +98,7 @@ def test_where_no_x_o_is_self_consistent_the_rule_is_the_closest_one():
     with pytest.warns(UserWarning, match="no self-consistent"):
         r = impact(RACKET, ball, 0.0, 10.0)
     assert not r.self_consistent
-    stepper = _Stepper(RACKET, ball, np.zeros(4), 10.0, 0.0, None, SINE_STEPS_PER_CONTACT)
+    stepper = _Stepper(RACKET, ball, np.zeros(4), None, 10.0, 0.0, None, SINE_STEPS_PER_CONTACT)
     larger = r.x_o * np.array([1.0, 1.05, 1.2, 1.5])
     summary = stepper.run(larger)[2]
     ratio = summary[:, layout.X_END] / larger

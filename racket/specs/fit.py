@@ -22,6 +22,7 @@ from racket.specs.stiffness import (
     TYPICAL_BEAM_WIDTHS,
     bending_profile,
     flex_test_stiffness,
+    torsional_profile,
 )
 
 EDGE_FRACTION = 0.02
@@ -134,6 +135,9 @@ def fit_profile(sheet: SpecSheet) -> tuple[Beam, Profile]:
                 f"check the deflection and the load (a racket bends a few mm under 100-200 N)"
             )
         beam = beam.with_f1(f1)
+    beam = beam.with_torsional_stiffness(torsional_profile(beam.bending_stiffness))
+    if sheet.torsion_hz is not None:
+        beam = beam.with_torsion_frequency(sheet.torsion_hz)
     recoil = None
     if sheet.recoil_weight is not None:
         recoil = beam.inertia_cm - sheet.recoil_weight
@@ -174,6 +178,9 @@ def from_specs(*, support: str = "free", **specs) -> Racket:
         until the RA scale is calibrated (see :mod:`racket.specs.stiffness`).
     flex_load_n : float
         The flex test's load [N] (with ``flex_deflection_mm``).
+    torsion_hz : float, optional
+        Measured first torsion frequency of the free frame [Hz]; default: GJ from EI by
+        the tube rule (:mod:`racket.specs.stiffness`).
     head_size_in2, head_size_cm2 : float
         Head (string-bed) area.  Give one.
     beam_width_mm : float or (float, float, float), optional
@@ -188,8 +195,9 @@ def from_specs(*, support: str = "free", **specs) -> Racket:
     Returns
     -------
     Racket
-        Its beam has the fitted profile (:func:`fit_profile`); its elliptical string bed
-        has the head size.
+        Its beam has the fitted profile (:func:`fit_profile`), torsion included; its
+        elliptical string bed has the head size and the membrane's stiffness profile (the
+        sheet's stiffness at the centre, rising towards the frame, :mod:`racket.membrane`).
 
     Raises
     ------
@@ -200,5 +208,7 @@ def from_specs(*, support: str = "free", **specs) -> Racket:
     sheet = spec_sheet(**specs)
     beam, profile = fit_profile(sheet)
     lay = profile.layout
-    strings = StringBed(sheet.string_stiffness, lay.strings_extent, lay.strings_width)
+    strings = StringBed(
+        sheet.string_stiffness, lay.strings_extent, lay.strings_width, profile="membrane"
+    )
     return Racket(beam, strings, support)

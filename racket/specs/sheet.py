@@ -53,6 +53,8 @@ class SpecSheet:
         derived from it by the parallel-axis rule).
     beam_widths : (float, float, float) or None
         Frame depth across the string plane at the tip, the sides and the throat [m].
+    torsion_hz : float or None
+        Measured first torsion frequency of the free frame [Hz], if given.
     """
 
     length: float
@@ -69,6 +71,7 @@ class SpecSheet:
     recoil_weight: float | None = None
     beam_widths: tuple | None = None
     swingweight_from_recoil: bool = False
+    torsion_hz: float | None = None
 
     def __post_init__(self):
         length = positive("length_m", self.length, "m")
@@ -98,6 +101,7 @@ SPEC_RANGES = {
     "recoil_weight_kgcm2": (50.0, 300.0, "kg cm^2"),
     "twistweight_kgcm2": (5.0, 40.0, "kg cm^2"),
     "f1_hz": (60.0, 400.0, "Hz"),
+    "torsion_hz": (150.0, 1500.0, "Hz"),
     "ra": (40.0, 90.0, ""),
     "flex_deflection_mm": (0.1, 100.0, "mm"),
     "flex_load_n": (1.0, 2000.0, "N"),
@@ -116,7 +120,8 @@ rackets start at 19 in (48 cm), but the mass model's 19 cm handle, 5 cm of throa
 230-370 g, balance 30-36 cm, swing 280-360 kg cm^2 and have beam widths of 17.5-29 mm
 (retailers' spec sheets, e.g. tests/data/racket_specs_sample.csv); frames ring at
 100-200 Hz (Taraborrelli et al., Appl. Sci. 2019); strings are strung at 40-65 lb.  The
-rest (recoil weight 50-300 and twistweight 5-40 kg cm^2, f1 60-400 Hz, a flex test of
+rest (recoil weight 50-300 and twistweight 5-40 kg cm^2, f1 60-400 Hz, torsion
+150-1500 Hz, a flex test of
 0.1-100 mm under 1-2000 N, string-bed 5e3-2e5 N/m) is this project's assumption."""
 
 
@@ -174,6 +179,7 @@ def spec_sheet(
     tension_lb: float | None = None,
     tension_n: float | None = None,
     string_stiffness_n_m: float | None = None,
+    torsion_hz: float | None = None,
 ) -> SpecSheet:
     """A :class:`SpecSheet` from the units of spec sheets (see :func:`racket.from_specs`);
     every value is first checked against its range (:data:`SPEC_RANGES`)."""
@@ -229,4 +235,5 @@ def spec_sheet(
         recoil_weight=recoil,
         beam_widths=widths,
         swingweight_from_recoil=swingweight_kgcm2 is None,
+        torsion_hz=torsion_hz,
     )

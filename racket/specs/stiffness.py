@@ -22,6 +22,15 @@ The scale then follows from the frame stiffness given: f1 (frequencies scale as 
 at a fixed mass), or a measured flex-test deflection (:func:`flex_test_stiffness` scales
 as EI).
 
+Torsion
+-------
+The torsional stiffness GJ follows EI by the thin-walled tube's rule GJ = EI / (1 + nu)
+(J = 2 I and G = E / (2 (1 + nu)) for a circular tube) with nu = :data:`POISSON` (an
+estimate for an isotropic wall; a composite's +-45 degree plies make G, and so GJ, larger).
+It gives the Pure Drive a first torsion mode at about 320 Hz.  We found no published
+measured torsional frequency we could verify, so a measured value can be given instead
+(``torsion_hz`` of :func:`racket.from_specs`), which scales GJ to it.
+
 Flex test
 ---------
 
@@ -47,6 +56,9 @@ from __future__ import annotations
 import numpy as np
 
 from beam import Beam, fem
+
+POISSON = 0.3
+"""Poisson's ratio of the tube rule GJ = EI / (1 + nu) (assumption: an isotropic wall)."""
 
 HANDLE_SUPPORT = 0.07
 """Handle support of the modelled flex test [m from the butt] (the middle of the grip)."""
@@ -99,3 +111,8 @@ def flex_test_stiffness(beam: Beam, throat: float) -> float:
     load[0] = 1.0  # unit force at the tip's deflection (dof 0, which stays free)
     tip = np.linalg.solve(k[np.ix_(free, free)], load)[0]
     return float(1.0 / tip)
+
+
+def torsional_profile(bending_stiffness) -> np.ndarray:
+    """GJ [N m^2] of each segment from its EI [N m^2] by the tube rule EI / (1 + nu)."""
+    return np.asarray(bending_stiffness, dtype=float) / (1.0 + POISSON)

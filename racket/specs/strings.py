@@ -6,10 +6,7 @@ import numpy as np
 
 from common.checks import positive
 from common.units import IN2
-
-CONTACT_RADIUS = 0.025
-"""Radius [m] over which the ball loads the strings in the membrane model (the contact
-patch of a tennis ball on strings is about 5 cm across at 20-30 m/s)."""
+from racket.membrane import CONTACT_RADIUS
 
 MEMBRANE_REFERENCE = (245.0, 100.0 * IN2, 3e4)
 """Calibration of the membrane model: 245 N (55 lb) on a 100 in^2 head gives a string-plane
@@ -31,7 +28,8 @@ def string_bed_stiffness(tension_n: float, head_area_m2: float) -> float:
     k = C T / ln(R / a) with R = sqrt(A / pi), a = :data:`CONTACT_RADIUS`, and the constant C
     (the 2 pi / s and the effect of the frame and string stretch) fixed by
     :data:`MEMBRANE_REFERENCE`.  k rises in proportion to the tension and falls slowly with
-    the head size.
+    the head size.  This is the centre's value; :mod:`racket.membrane` gives its rise
+    towards the frame.
 
     Parameters
     ----------
