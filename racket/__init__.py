@@ -1,9 +1,10 @@
 """Ball impacts on a flexible racket (paper Sec. VII).
 
 Public API: :class:`Racket`, :class:`StringBed`, :class:`Hand`, :func:`impact` and its
-:class:`Impact` result, the presets :func:`paper_racket` and :func:`tennis_ball`, rackets from
-spec sheets (:func:`from_specs`, :func:`string_bed_stiffness`, the :data:`CATALOG` of
-well-known rackets) and the modelled flex test (:func:`flex_test_stiffness`).
+:class:`Impact` result, a :class:`Swing` about a pivot, the presets :func:`paper_racket` and
+:func:`tennis_ball`, rackets from spec sheets (:func:`from_specs`,
+:func:`string_bed_stiffness`, the :data:`CATALOG` of well-known rackets) and the modelled flex
+test (:func:`flex_test_stiffness`).
 """
 
 from racket.presets import TENNIS_BALL_MASS, TENNIS_BALL_RADIUS, paper_racket, tennis_ball
@@ -12,6 +13,7 @@ from racket.solver import Impact, impact
 from racket.specs import from_specs, string_bed_stiffness
 from racket.specs.catalog import CATALOG
 from racket.specs.stiffness import flex_test_stiffness
+from racket.swing import Swing
 
 __all__ = [
     "CATALOG",
@@ -22,6 +24,7 @@ __all__ = [
     "Impact",
     "Racket",
     "StringBed",
+    "Swing",
     "flex_test_stiffness",
     "from_specs",
     "impact",

@@ -42,7 +42,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ball import Ball, SineLaw, warn_if_squashed
-from common.checks import finite, in_range, shown
+from common.checks import finite, finite_array, in_range, shown
 from common.checks import speed as check_speed
 from racket import layout
 from racket.racket import Racket
@@ -143,11 +143,13 @@ class Impact:
     offset : float or ndarray or None
         Impact point's distance from the long axis [m, + towards 3 o'clock], or None for
         impacts on the axis without the roll and torsion modes (the paper's 1-D model).
-    speed, swing_speed : float
-        Ball speed towards the strings and racket (impact-point) speed towards the ball
-        before impact [m/s].
+    speed : float
+        Ball speed towards the strings before impact [m/s].
+    swing_speed : racket (impact-point) speed towards the ball before impact [m/s].
     e : COR from the dc (rigid-body) motion, Eq. 21 / Eq. 1.
-    e_A : apparent COR V1 / v1 (NaN for a ball at rest).
+    e_A : apparent COR V1 / v1 of a racket at rest; for a swung racket (impact point at v2
+        towards the ball) the same in the frame of the swing, (V1 - v2) / (v1 + v2), which
+        equals the racket at rest's at the closing speed v1 + v2 (the swing superposes).
     e_van_zandt : COR with the vibration at separation wrongly included.
     effective_mass : racket effective mass at the impact point [kg] (Eq. 20 for the free
         racket, also quoted for a hand-held one; inf clamped).
@@ -224,8 +226,9 @@ class Impact:
 
 
 def _swing_velocities(modes, position, swing_speed, pivot):
-    """Rigid-mode velocities (P, 2) of a racket whose impact point moves at -swing_speed."""
-    if swing_speed == 0.0:
+    """Rigid-mode velocities (P, 2) of a racket whose impact point moves at -swing_speed
+    (P,)."""
+    if not np.any(swing_speed):
         return np.zeros((position.size, 2))
     if pivot is None:  # pure translation
         v_cm = np.full(position.size, -swing_speed)
@@ -243,7 +246,7 @@ def impact(
     speed: float,
     *,
     offset=None,
-    swing_speed: float = 0.0,
+    swing_speed=0.0,
     pivot: float | None = None,
     steps_per_contact: int | None = None,
     watch_after: float = 0.0,
@@ -268,9 +271,11 @@ def impact(
         lie on the elliptical string bed.  Given (even 0), the racket's roll and torsion
         modes join the bending ones (the beam's roll inertia must be modelled, as on a
         spec-sheet racket); None (default): impacts on the long axis, bending only.
-    swing_speed : float
+    swing_speed : float or array_like
         Speed [m/s] of the impact point towards the ball from the racket's rigid-body
-        motion (a swing), 0 or in [0.001, 300]; 0 for a racket at rest.
+        motion (a swing), 0 or in [0.001, 300]; 0 for a racket at rest.  An array gives each
+        impact point its own (broadcast with the points), e.g. from one swing about a pivot
+        (:meth:`racket.Swing.point_speeds`).
     pivot : float, optional
         The swing's instantaneous centre of rotation [m from the tip], beyond every impact
         point and at most 1 m beyond the butt (e.g. the wrist, 5 cm beyond it); None for
@@ -305,8 +310,10 @@ def impact(
     scalar = np.ndim(position) == 0 and np.ndim(offset) == 0
     x, y = racket.check_points(position, offset)
     speed = check_speed("speed", speed, allow_zero=True)
-    swing_speed = check_speed("swing_speed", swing_speed, allow_zero=True)
-    if speed == 0.0 and swing_speed == 0.0:
+    scalar = scalar and np.ndim(swing_speed) == 0
+    swing = _swing_speeds(swing_speed, x.size)
+    closing = speed + swing
+    if np.any(closing == 0.0):
         raise ValueError("speed must be > 0 m/s (or the racket swung, swing_speed > 0), got 0")
     if pivot is not None:
         pivot = finite("pivot", pivot, "m from the tip")
@@ -321,7 +328,7 @@ def impact(
         steps_per_contact = SINE_STEPS_PER_CONTACT if sine else DEFAULT_STEPS_PER_CONTACT
     steps_per_contact = int(in_range("steps_per_contact", steps_per_contact, 50, 100_000))
     watch_after = in_range("watch_after", watch_after, 0.0, 1.0, "s")
-    if swing_speed and racket.support != "free":
+    if np.any(swing) and racket.support != "free":
         raise ValueError(
             f"swing_speed must be 0 for a {racket.support} racket (the hand or clamp is at "
             "rest); swing a free racket, as the paper does"
@@ -338,30 +345,36 @@ def impact(
             f"the frame's first torsion frequency must be >= {F1_MIN:g} Hz for an impact off "
             f"the axis, got {roll.frequencies[0]:.4g} Hz"
         )
-    contact = contact_time_scale(ball, racket.strings.stiffness, speed + swing_speed)
-    if contact > CONTACT_TIME_MAX:
+    # One time step per closing speed (it sets the contact time of a non-linear ball), so
+    # that each impact's result depends on its own inputs only; a linear ball has one.
+    speeds, group = np.unique(closing, return_inverse=True)
+    scales = np.array([contact_time_scale(ball, racket.strings.stiffness, c) for c in speeds])
+    if scales.max() > CONTACT_TIME_MAX:
+        slow = speeds[np.argmax(scales)]
         raise ValueError(
             f"the ball and strings are too soft: their contact would last about "
-            f"{1e3 * contact:.3g} ms, and racket-impact resolves contacts up to "
+            f"{1e3 * scales.max():.3g} ms, and racket-impact resolves contacts up to "
             f"{1e3 * CONTACT_TIME_MAX:g} ms (ball stiffness "
-            f"{ball.law.secant_stiffness(ball.mass, speed + swing_speed):.3g} N/m, strings "
+            f"{ball.law.secant_stiffness(ball.mass, slow):.3g} N/m, strings "
             f"{racket.strings.stiffness:.3g} N/m)"
         )
-    run = (racket, ball, speed, swing_speed, pivot, steps_per_contact, watch_after, histories)
+    _, step_group = np.unique(scales[group], return_inverse=True)
+    batches = [np.flatnonzero(step_group == g) for g in range(step_group.max() + 1)]
+    if histories and len(batches) > 1:
+        raise ValueError(
+            "histories need one time step for all impacts: give them one closing speed "
+            "(ball speed + swing speed), or a ball whose contact time does not depend on it"
+        )
+    if not histories:  # in chunks: the kernel's inputs take about 1.6 kB per impact
+        batches = [b[i : i + CHUNK_POINTS] for b in batches for i in range(0, b.size, CHUNK_POINTS)]
+    run = (racket, ball, speed, pivot, steps_per_contact, watch_after, histories)
     with _one_blas_thread() if x.size > IMPACTS_PER_THREAD else contextlib.nullcontext():
-        if histories:
-            parts = [_solve(x, y, *run)]
-        else:  # in chunks: the kernel's inputs take about 1.6 kB per impact
-            parts = [
-                _solve(
-                    x[i : i + CHUNK_POINTS], None if y is None else y[i : i + CHUNK_POINTS], *run
-                )
-                for i in range(0, x.size, CHUNK_POINTS)
-            ]
+        parts = [_solve(x[b], None if y is None else y[b], swing[b], *run) for b in batches]
     fields = parts[0][0]
     if len(parts) > 1:
+        back = np.argsort(np.concatenate(batches))
         fields = {
-            k: None if v is None else np.concatenate([p[0][k] for p in parts])
+            k: None if v is None else np.concatenate([p[0][k] for p in parts])[back]
             for k, v in fields.items()
         }
     squashed = fields.pop("compression")
@@ -379,11 +392,29 @@ def impact(
         fields = {
             k: (v if v is None else v[0] if v.ndim > 1 else v[0].item()) for k, v in fields.items()
         }
-    return Impact(speed=speed, swing_speed=swing_speed, t=parts[0][1], **fields)
+    return Impact(speed=speed, t=parts[0][1], **fields)
+
+
+def _swing_speeds(swing_speed, count: int) -> np.ndarray:
+    """``swing_speed`` as one value per impact point (P,), each 0 or a speed in range."""
+    values = finite_array("swing_speed", swing_speed, "m/s")
+    if values.ndim > 1:
+        raise ValueError(
+            f"swing_speed must be a number or one per impact point [m/s], got an array of "
+            f"shape {values.shape}"
+        )
+    for v in np.unique(values):
+        check_speed("swing_speed", v, allow_zero=True)
+    try:
+        return np.broadcast_to(values, (count,)).astype(float)
+    except ValueError:
+        raise ValueError(
+            f"swing_speed must be one value or one per impact point ({count}), got {values.size}"
+        ) from None
 
 
 def _solve(
-    x, y, racket, ball, speed, swing_speed, pivot, steps_per_contact, watch_after, histories
+    x, y, swing_speed, racket, ball, speed, pivot, steps_per_contact, watch_after, histories
 ):
     """:func:`impact` at the points ``x`` (offsets ``y`` or None) once its inputs are
     checked: the Impact's fields (and the ball's largest compression, ``compression``) and
@@ -448,14 +479,14 @@ def _solve(
         hist[:, np.arange(used)[None, :] > steps[:, None]] = np.nan  # after the ball left
         history = {name: hist[row] for name, row in _HISTORY_ROWS.items()}
 
-    with np.errstate(invalid="ignore", divide="ignore"):
-        e_a = np.where(speed > 0, -ball_after / speed, np.nan)
+    e_a = (-ball_after - (closing - speed)) / closing  # (V1 - v2) / (v1 + v2)
     m_eff = np.full(x.size, np.inf)
     if n:
         m_eff = racket.beam.effective_mass(x, y if stepper.face else None)
     fields = dict(
         position=x,
         offset=y,
+        swing_speed=np.array(stepper.closing - speed),
         e=(v2_dc - ball_after) / closing,
         e_A=e_a,
         e_van_zandt=(v2_total - ball_after) / closing,
@@ -489,9 +520,11 @@ class _Stepper:
     run for any Xo (see :func:`racket.kernel.run_impacts`)."""
 
     def __init__(self, racket, ball, x, y, speed, swing_speed, pivot, steps_per_contact):
-        # The step follows from the centre's string stiffness, whatever the points.
+        # The step follows from the centre's string stiffness, whatever the points, and from
+        # the closing speed, the same for all (see impact).
+        swing_speed = np.broadcast_to(np.asarray(swing_speed, dtype=float), x.shape)
         self.closing = speed + swing_speed
-        self.dt = contact_time_scale(ball, racket.strings.stiffness, self.closing)
+        self.dt = contact_time_scale(ball, racket.strings.stiffness, self.closing[0])
         self.dt /= steps_per_contact
         self.max_steps = 12 * steps_per_contact
         law = getattr(ball.law, "kernel_law", None)
@@ -511,7 +544,7 @@ class _Stepper:
         out_d, out_v, out_dc = system.outputs(phi)
         self.swing_qd = _swing_velocities(modes, x, swing_speed, pivot)
         z0 = np.zeros((x.size, 2 * n))
-        if swing_speed:
+        if np.any(swing_speed):
             z0[:, n : n + 2] = self.swing_qd
         self.position = x
         inv_ks = 1.0 / racket.strings.stiffness_at(x, 0.0 if y is None else y)

@@ -228,7 +228,7 @@ def cmd_sweep(args) -> int:
         if path is not None and Path(path).suffix.lower() != kind:
             raise ValueError(f"{flag} must be a file ending in {kind}, got {path!r}")
     points = _count("--points", args.points, 2, 100_000)
-    speeds = _speed(args, "speed")
+    speeds = _speed(args, "speed", allow_zero=args.swing_speed or args.swing_speed_mph)
     racket, ball = load_racket(args.racket), load_ball(args.ball)
     ends = list(racket.strings.extent)
     for k, (flag, value) in enumerate((("--from", args.from_), ("--to", args.to))):
@@ -243,6 +243,7 @@ def cmd_sweep(args) -> int:
         f1=args.f1,
         support=args.support,
         offset=args.offset,
+        swing=_swing(args),
     )
     _print_table(
         table[
@@ -254,6 +255,7 @@ def cmd_sweep(args) -> int:
                 "ball_rebound_m_s",
                 "vibration_energy_fraction",
             ]
+            + (["swing_speed_m_s", "exit_speed_mph"] if table["swing_speed_m_s"].any() else [])
             + [c for c in table.columns[len(COLUMNS) :]]
         ].iloc[:: max(1, len(table) // 25)]
     )
@@ -272,20 +274,40 @@ def cmd_sweep(args) -> int:
 
 
 def cmd_serve(args) -> int:
-    from studies.serve import serve_table, serve_what_if
+    from studies.serve import head_speed_for, serve_table, serve_what_if
 
     check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
     if args.plot and not args.what_if:
         raise ValueError("--plot needs --what-if for serve")
-    speed = _speed(args, "racket_speed")
     racket, ball = load_racket(args.racket), load_ball(args.ball)
-    if args.position is not None:
-        in_range("--position", args.position, *racket.strings.extent, "m from the tip")
-    table = serve_table(racket, ball, args.position, speed, args.pivot)
-    print(f"racket (impact point) speed v2 = {speed:.2f} m/s ({speed / MPH:.1f} mph)")
-    _print_table(table)
+    positions = [racket.strings.center] if args.position is None else args.position
+    for x in positions:
+        in_range("--position", x, *racket.strings.extent, "m from the tip")
+    pivot = in_range("--pivot-cm-from-butt", args.pivot_cm_from_butt, -100.0, 30.0, "cm") / 100
+    mph = args.racket_speed_mph is not None or args.target_ball_speed_mph is not None
+    if args.target_ball_speed is not None or args.target_ball_speed_mph is not None:
+        target = _speed(args, "target_ball_speed")
+        head = head_speed_for(racket, ball, target, positions[0], pivot)
+        print(
+            f"racket-head speed for a {_shown_speed(target, mph)} serve at "
+            f"{100 * (racket.beam.length - positions[0]):.1f} cm from the butt: "
+            f"{_shown_speed(head, mph, digits=3)}"
+        )
+    else:
+        head = _speed(args, "racket_speed")
+    table = serve_table(racket, ball, positions, head, pivot, zero_cor=args.what_if)
+    unit = "mph" if mph else "m_s"
+    print(
+        f"one swing: racket-head (string centre) speed {_shown_speed(head, mph)}, pivot "
+        f"{abs(100 * pivot):g} cm {'beyond' if pivot <= 0 else 'inside'} the butt"
+    )
+    columns = ["position_from_butt_cm", "position_from_tip_m", f"point_speed_{unit}", "e"]
+    columns += [f"serve_eq22_{unit}", f"serve_simulated_{unit}"]
     if args.what_if:
-        what_if = serve_what_if(racket, ball, args.position, speed, pivot=args.pivot)
+        columns.append("reduction_simulated_percent")
+    _print_table(table[columns])
+    if args.what_if:
+        what_if = serve_what_if(racket, ball, positions[0], head, pivot_from_butt=pivot)
         print()
         _print_table(
             what_if[["varied", "value", "e", "serve_simulated_m_s", "reduction_simulated_percent"]]
@@ -298,6 +320,11 @@ def cmd_serve(args) -> int:
     if args.out:
         write_table(table.reset_index(), args.out)
     return 0
+
+
+def _shown_speed(value: float, mph: bool, digits: int = 1) -> str:
+    """A speed [m/s] as the user typed speeds: mph, or m/s."""
+    return f"{value / MPH:.{digits}f} mph" if mph else f"{value:.{digits + 1}f} m/s"
 
 
 def cmd_collide(args) -> int:
@@ -450,7 +477,8 @@ def cmd_compare(args) -> int:
 
     check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
     points = _count("--points", args.points, 2, 100_000)
-    speed = _speed(args, "speed")
+    swing = _swing(args)
+    speed = _speed(args, "speed", allow_zero=swing is not None)
     names = args.racket or ["paper", "pure-drive-2021"]
     if len(names) < 2:
         raise ValueError(f"compare needs two or more --racket, got {len(names)}")
@@ -461,7 +489,7 @@ def cmd_compare(args) -> int:
 
         rackets = {k: replace(r, support=args.support) for k, r in rackets.items()}
     ball = load_ball(args.ball)
-    table = compare(rackets, ball, speed, points)
+    table = compare(rackets, ball, speed, points, swing=swing)
     _print_table(compare_summary(rackets, table, ball, speed))
     if args.out:
         write_table(table, args.out)
@@ -481,15 +509,15 @@ def cmd_map(args) -> int:
         raise ValueError(f"--field must be one of {list(FIELDS)}, got {args.field!r}")
     grid = tuple(_count("--grid", n, 4, 1000) for n in args.grid)
     speed = _speed(args, "speed")
-    racket_speed = _speed(args, "racket_speed", allow_zero=True)
-    if args.field == "exit_speed_swung" and not racket_speed:
-        raise ValueError("--field exit_speed_swung needs --racket-speed (or --racket-speed-mph)")
+    swing = _swing(args)
+    if args.field == "exit_speed_swung" and swing is None:
+        raise ValueError("--field exit_speed_swung needs --swing-speed (or --swing-speed-mph)")
     racket = load_racket(args.racket)
     if args.support:
         from dataclasses import replace
 
         racket = replace(racket, support=args.support)
-    result = face_map(racket, load_ball(args.ball), speed, racket_speed=racket_speed, grid=grid)
+    result = face_map(racket, load_ball(args.ball), speed, swing=swing, grid=grid)
     for line in result.summary():
         print(line)
     if args.out:
@@ -499,6 +527,17 @@ def cmd_map(args) -> int:
 
         save_plot(plot_face_map(result, args.field), args.plot)
     return 0
+
+
+def _swing(args):
+    """The ``--swing-speed[-mph]`` and ``--pivot-cm-from-butt`` options as a Swing, or None
+    without a swing speed."""
+    from racket import Swing
+
+    if args.swing_speed is None and args.swing_speed_mph is None:
+        return None
+    pivot = in_range("--pivot-cm-from-butt", args.pivot_cm_from_butt, -100.0, 30.0, "cm")
+    return Swing(_speed(args, "swing_speed"), pivot / 100)
 
 
 def _labels(names: list[str]) -> list[tuple[str, str]]:
@@ -556,7 +595,8 @@ def _speed_option(p, name: str, default, what: str, many: bool = False):
         nargs=nargs,
         default=default,
         metavar="M_S",
-        help=f"{what} [m/s] (default {default if not many else default[0]:g})",
+        help=f"{what} [m/s]"
+        + ("" if default is None else f" (default {default if not many else default[0]:g})"),
     )
     group.add_argument(
         f"--{name}-mph",
@@ -566,6 +606,24 @@ def _speed_option(p, name: str, default, what: str, many: bool = False):
         metavar="MPH",
         help=f"{what} [mph]",
     )
+
+
+def _pivot_option(p):
+    p.add_argument(
+        "--pivot-cm-from-butt",
+        type=float,
+        default=-5.0,
+        metavar="CM",
+        help="swing pivot [cm from the butt, negative beyond it] (default -5, the wrist)",
+    )
+
+
+def _swing_options(p):
+    """A swing about a pivot: the racket-head (string centre) speed and the pivot."""
+    _speed_option(
+        p, "swing-speed", None, "racket-head (string centre) speed of a swing of the free racket"
+    )
+    _pivot_option(p)
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -634,6 +692,7 @@ def build_parser() -> argparse.ArgumentParser:
         choices=list(SUPPORTS),
         help="support(s) (default: the racket's)",
     )
+    _swing_options(p)
     p.add_argument("--out", metavar="FILE", help="table file: .csv, .json or .parquet")
     p.add_argument("--csv", metavar="FILE", help="table as CSV")
     p.add_argument("--json", metavar="FILE", help="table as JSON records")
@@ -644,7 +703,7 @@ def build_parser() -> argparse.ArgumentParser:
     _racket_arg(p, default="pure-drive-2021")
     _ball_arg(p)
     _speed_option(p, "speed", 16.5, "ball speed towards the strings")
-    _speed_option(p, "racket-speed", 0.0, "free racket's speed towards the ball (swung exit)")
+    _swing_options(p)
     p.add_argument(
         "--grid",
         type=int,
@@ -662,26 +721,25 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--plot", metavar="FILE", help="the map (.png, .svg, .pdf)")
     p.set_defaults(func=cmd_map)
 
-    p = sub.add_parser("serve", help="serve speed with a normal and a zero-COR ball (Sec. VIII)")
+    p = sub.add_parser("serve", help="serve speed for one swing (Sec. VIII), and what-ifs")
     _racket_arg(p)
     _ball_arg(p)
     p.add_argument(
         "--position",
         type=float,
+        nargs="+",
+        action=_Once,
         metavar="M",
-        help="impact point [m from the tip] (default: centre of the strings)",
+        help="impact point(s) [m from the tip] (default: centre of the strings)",
     )
-    _speed_option(p, "racket-speed", 40.0, "impact-point speed of the swung racket")
-    p.add_argument(
-        "--pivot",
-        type=float,
-        metavar="M",
-        help="swing pivot [m from the tip] (default: 5 cm beyond the butt)",
-    )
+    _speed_option(p, "racket-speed", 40.0, "racket-head (string centre) speed of the swing")
+    _speed_option(p, "target-ball-speed", None, "serve speed to reach: solve for the head speed")
+    _pivot_option(p)
     p.add_argument(
         "--what-if",
         action="store_true",
-        help="also sweep the reduction over string and ball stiffness",
+        help="add the zero-COR ball (Sec. VIII) and sweep its reduction over string and ball "
+        "stiffness",
     )
     p.add_argument("--out", metavar="FILE", help="table file: .csv, .json or .parquet")
     p.add_argument("--plot", metavar="FILE", help="what-if plot (.png, .svg, .pdf)")
@@ -746,6 +804,7 @@ def build_parser() -> argparse.ArgumentParser:
     _speed_option(p, "speed", 10.0, "ball speed towards the strings")
     p.add_argument("--points", type=int, default=101, help="impact points per racket")
     p.add_argument("--support", choices=list(SUPPORTS), help="support for every racket")
+    _swing_options(p)
     p.add_argument("--out", metavar="FILE", help="table file: .csv, .json or .parquet")
     p.add_argument("--plot", metavar="FILE", help="comparison plot (.png, .svg, .pdf)")
     p.set_defaults(func=cmd_compare)

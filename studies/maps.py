@@ -17,11 +17,15 @@ import numpy as np
 from ball import Ball
 from common.checks import in_range
 from common.checks import speed as check_speed
-from racket import Racket, impact
+from common.units import MPH
+from racket import Racket, Swing, impact
 from studies.landmarks import HAND_FROM_BUTT, center_of_percussion
 
 SWEET_FRACTION = 0.05
 """The sweet area is where e_A is within this fraction of its largest value on the map."""
+
+MAP_SPEED = 16.5
+"""Default ball speed of a map [m/s]: TWU's test speed (the ball hits a racket at rest)."""
 
 MAP_GRID = (15, 9)
 """Default grid (along the racket, across it): TWU measures 15 points over a face."""
@@ -49,8 +53,8 @@ class FaceMap:
     exit_speed : (nx, ny) ndarray
         Ball speed after the impact, stationary racket [m/s].
     exit_speed_swung : (nx, ny) ndarray or None
-        Ball speed after the impact when the racket moves at ``racket_speed`` towards the
-        ball [m/s] (None when ``racket_speed`` is 0).
+        Ball speed after the impact when the racket is swung (``swing``) [m/s]; None
+        without a swing.
     vibration_energy : (nx, ny) ndarray
         Vibration energy left in the frame (bending and torsion modes, and the hand's
         spring if held) as a fraction of the ball's incoming kinetic energy, racket at rest.
@@ -61,8 +65,10 @@ class FaceMap:
         (the ball's centre ``margin`` inside the frame), stationary.
     side_offset : float
         Where ``e_A_side`` is taken [m from the long axis].
-    speed, racket_speed : float
-        Ball speed and racket (swing) speed [m/s].
+    speed : float
+        Ball speed [m/s].
+    swing : Swing or None
+        The swing of ``exit_speed_swung``.
     node : ndarray
         Nodes of the first bending mode on the strings [m from the tip].
     center_of_percussion : float
@@ -90,7 +96,7 @@ class FaceMap:
     e_A_side: float
     side_offset: float
     speed: float
-    racket_speed: float
+    swing: Swing | None
     node: np.ndarray
     center_of_percussion: float
     sweet_threshold: float
@@ -143,9 +149,13 @@ class FaceMap:
             "% of the ball's",
         ]
         if self.exit_speed_swung is not None:
+            i, j = np.unravel_index(np.argmax(self.exit_speed_swung), self.e_A.shape)
             lines.append(
-                f"racket at {self.racket_speed:g} m/s: exit speed "
-                f"{np.min(self.exit_speed_swung):.2f}-{np.max(self.exit_speed_swung):.2f} m/s"
+                f"swung at {self.swing.head_speed:.4g} m/s ({self.swing.head_speed / MPH:.1f} "
+                f"mph) head speed about a pivot {-100 * self.swing.pivot_from_butt:g} cm beyond "
+                f"the butt: exit speed {np.min(self.exit_speed_swung):.2f}-"
+                f"{np.max(self.exit_speed_swung):.2f} m/s, fastest at "
+                f"{100 * self.positions[i]:.1f} cm from the tip"
             )
         return lines
 
@@ -172,9 +182,9 @@ def face_points(racket: Racket, grid=MAP_GRID, margin: float = 0.0):
 def face_map(
     racket: Racket,
     ball: Ball,
-    speed: float = 16.5,
+    speed: float = MAP_SPEED,
     *,
-    racket_speed: float = 0.0,
+    swing: Swing | None = None,
     grid=MAP_GRID,
     margin: float | None = None,
 ) -> FaceMap:
@@ -187,9 +197,9 @@ def face_map(
     ball : Ball
     speed : float
         Ball speed towards the strings [m/s] (default 16.5, TWU's test speed).
-    racket_speed : float
-        Racket speed towards the ball [m/s] for the swung exit speed (a free racket in
-        translation: every point moves at it); 0 (default) for none.
+    swing : Swing, optional
+        A swing of the (free) racket about a pivot for the swung exit speed, each point at
+        its own speed (the ball coming in at ``speed``); None (default) for none.
     grid : (int, int)
         Grid lines along and across the racket, each in [4, 1000]; default (15, 9).
     margin : float, optional
@@ -201,11 +211,10 @@ def face_map(
     FaceMap
     """
     speed = check_speed("speed", speed)
-    racket_speed = check_speed("racket_speed", racket_speed, allow_zero=True)
-    if racket_speed and racket.support != "free":
+    if swing is not None and racket.support != "free":
         raise ValueError(
-            f"racket_speed must be 0 for a {racket.support} racket (swing a free racket), "
-            f"got {racket_speed:g}"
+            f"swing must be None for a {racket.support} racket (the hand or clamp is at rest; "
+            "swing a free racket)"
         )
     if racket.beam.roll_inertia is None:
         raise ValueError(
@@ -219,8 +228,9 @@ def face_map(
     side = 0.5 * racket.strings.full_width - margin
     landmarks = impact(racket, ball, racket.strings.center, speed, offset=[0.0, side])
     swung = None
-    if racket_speed:
-        swung = impact(racket, ball, x, speed, offset=offsets.ravel(), swing_speed=racket_speed)
+    if swing is not None:
+        moved = swing.impact_kwargs(racket, x)
+        swung = impact(racket, ball, x, speed, offset=offsets.ravel(), **moved)
 
     def on_grid(values):
         return np.reshape(values, offsets.shape)
@@ -243,7 +253,7 @@ def face_map(
         e_A_side=float(landmarks.e_A[1]),
         side_offset=side,
         speed=speed,
-        racket_speed=racket_speed,
+        swing=swing,
         node=node[(node >= start) & (node <= end)],
         center_of_percussion=center_of_percussion(racket, pivot),
         sweet_threshold=threshold,
@@ -280,10 +290,12 @@ def _sweet_area(positions, half_width, values) -> tuple[float, float]:
 
 def compare_summary(rackets, table, ball: Ball, speed: float):
     """One row per racket of a :func:`studies.sweeps.compare` table: the largest e and
-    where, e at the string centre and at the tip end of the strings, and, for rackets whose
+    where, e at the string centre and at the tip end of the strings, the largest exit speed
+    [mph] and where [cm from the butt] (of a swing, if the table has one), and, for rackets whose
     roll inertia is modelled, the off-axis power (e_A at the centre's distance from the
     tip, at 3 o'clock with the ball's edge on the frame) and the sweet area of the
-    :func:`face_map` (NaN otherwise).
+    :func:`face_map` of the racket at rest hit at ``speed`` (or :data:`MAP_SPEED` when
+    ``speed`` is 0, a serve), NaN otherwise.
 
     Parameters
     ----------
@@ -300,6 +312,7 @@ def compare_summary(rackets, table, ball: Ball, speed: float):
     for label, group in table.groupby("racket", sort=False):
         racket = rackets[label]
         best = group.loc[group["e"].idxmax()]
+        fastest = group["position_from_tip_m"].iloc[group["exit_speed_mph"].argmax()]
         row = {
             "racket": label,
             "largest_e": best["e"],
@@ -308,12 +321,14 @@ def compare_summary(rackets, table, ball: Ball, speed: float):
                 np.interp(racket.strings.center, group["position_from_tip_m"], group["e"])
             ),
             "e_at_tip_end": group["e"].iloc[0],
+            "largest_exit_mph": group["exit_speed_mph"].max(),
+            "exit_at_cm_from_butt": 100 * (racket.beam.length - fastest),
             "e_A_centre": np.nan,
             "e_A_3_oclock": np.nan,
             "sweet_area_cm2": np.nan,
         }
-        if racket.beam.roll_inertia is not None:
-            face = face_map(racket, ball, speed)
+        if racket.beam.roll_inertia is not None:  # the racket at rest (TWU's speed for a serve)
+            face = face_map(racket, ball, speed or MAP_SPEED)
             row["e_A_centre"], row["e_A_3_oclock"] = face.e_A_centre, face.e_A_side
             row["sweet_area_cm2"] = face.sweet_area_cm2
         rows.append(row)

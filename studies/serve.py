@@ -4,8 +4,13 @@ Two ways, side by side:
 
 * **Eq. 22**: V1 = (1 + e) m2 v2 / (m1 + m2), with e and the effective mass m2 taken from the
   simulation of the ball hitting the racket at rest at the same point and relative speed;
-* **full simulation**: the racket, swung so that the impact point moves at v2 (a rotation
-  about ``pivot``), hits the ball at rest; its speed afterwards is read off the impact.
+* **full simulation**: the racket, swung about a pivot (:class:`racket.Swing`: the wrist by
+  default) so that the impact point moves at v2, hits the ball at rest; its speed afterwards
+  is read off the impact.
+
+The swing is "the same swing" everywhere: its racket-head speed is the string centre's, and
+an impact point farther from the pivot (towards the tip) moves faster, v2 = omega (pivot -
+x).  :func:`head_speed_for` solves for the head speed that gives a target serve speed.
 
 The two agree to round-off (1e-15 measured; 3e-11 for a sine-law ball, whose Xo is found
 to about that), for a rotation about the wrist as for a translation.  The racket's
@@ -23,17 +28,16 @@ A sine-law ball is its own zero-COR ball.
 
 from __future__ import annotations
 
+import warnings
 from dataclasses import replace
 
 import numpy as np
 import pandas as pd
 
 from ball import Ball, LinearHysteresis, SineLaw, serve_speed
-from common.checks import positive
-from racket import Racket, StringBed, impact
-
-WRIST_BEYOND_BUTT = 0.05
-"""Default swing pivot: the wrist, this far beyond the butt [m]."""
+from common.units import MPH
+from racket import Racket, Swing, impact
+from racket.swing import WRIST_BEYOND_BUTT
 
 
 def zero_cor_ball(ball: Ball, speed: float) -> Ball:
@@ -45,10 +49,9 @@ def zero_cor_ball(ball: Ball, speed: float) -> Ball:
     return replace(ball, law=SineLaw(k0=ball.law.secant_stiffness(ball.mass, speed)))
 
 
-def serve(
-    racket: Racket, ball: Ball, position: float, racket_speed: float, pivot: float | None = None
-) -> dict:
-    """Serve speed of ``ball`` from ``racket`` at ``position``, both ways (see module docs).
+def serve(racket: Racket, ball: Ball, position: float, swing: Swing) -> dict:
+    """Serve speed of ``ball`` from ``racket`` hit at ``position`` by ``swing``, both ways
+    (see the module docstring).
 
     Parameters
     ----------
@@ -56,61 +59,119 @@ def serve(
     ball : Ball
     position : float
         Impact point [m from the tip].
-    racket_speed : float
-        Speed v2 of the impact point towards the ball [m/s].
-    pivot : float, optional
-        Swing pivot [m from the tip]; default the wrist, 5 cm beyond the butt.
+    swing : Swing
+        The swing: its head speed is the string centre's; the impact point moves at
+        v2 = :meth:`Swing.point_speeds` (faster towards the tip).
 
     Returns
     -------
     dict
-        ``e``, ``effective_mass_kg``, ``serve_eq22_m_s``, ``serve_simulated_m_s`` and the two
-        ratios to v2, ``ratio_eq22`` and ``ratio_simulated``.
+        ``position_from_tip_m``, ``position_from_butt_cm``, ``head_speed_m_s``,
+        ``point_speed_m_s`` (v2), ``e``, ``effective_mass_kg``, ``serve_eq22_m_s``,
+        ``serve_simulated_m_s``, their ratios to v2 ``ratio_eq22`` and ``ratio_simulated``,
+        and the speeds in mph (``*_mph``).
     """
-    racket_speed = positive("racket_speed", racket_speed, "m/s")
-    if pivot is None:
-        pivot = racket.beam.length + WRIST_BEYOND_BUTT
-    at_rest = impact(racket, ball, position, racket_speed)
-    swung = impact(racket, ball, position, 0.0, swing_speed=racket_speed, pivot=pivot)
-    eq22 = serve_speed(
-        min(max(at_rest.e, 0.0), 1.0), ball.mass, at_rest.effective_mass, racket_speed
-    )
+    v2 = float(swing.point_speeds(racket, position))
+    at_rest = impact(racket, ball, position, v2)
+    swung = impact(racket, ball, position, 0.0, **swing.impact_kwargs(racket, position))
+    eq22 = serve_speed(min(max(at_rest.e, 0.0), 1.0), ball.mass, at_rest.effective_mass, v2)
     return {
+        "position_from_tip_m": float(position),
+        "position_from_butt_cm": 100 * (racket.beam.length - position),
+        "head_speed_m_s": swing.head_speed,
+        "point_speed_m_s": v2,
         "e": at_rest.e,
         "effective_mass_kg": at_rest.effective_mass,
         "serve_eq22_m_s": eq22,
         "serve_simulated_m_s": swung.ball_rebound,
-        "ratio_eq22": eq22 / racket_speed,
-        "ratio_simulated": swung.ball_rebound / racket_speed,
+        "ratio_eq22": eq22 / v2,
+        "ratio_simulated": swung.ball_rebound / v2,
+        "head_speed_mph": swing.head_speed / MPH,
+        "point_speed_mph": v2 / MPH,
+        "serve_eq22_mph": eq22 / MPH,
+        "serve_simulated_mph": swung.ball_rebound / MPH,
     }
 
 
 def serve_table(
     racket: Racket,
     ball: Ball,
-    position: float | None = None,
+    position=None,
     racket_speed: float = 40.0,
-    pivot: float | None = None,
+    pivot_from_butt: float = -WRIST_BEYOND_BUTT,
+    zero_cor: bool = True,
 ) -> pd.DataFrame:
-    """Serve speeds of ``ball`` and of its zero-COR twin, with the reduction in percent.
+    """Serve speeds of ``ball`` (and of its zero-COR twin) at each position, for one swing.
 
-    ``position`` defaults to the centre of the strings.  Rows: ``normal``, ``zero-COR``
-    (:func:`zero_cor_ball` at the racket speed; for a sine-law ball the same ball, so the
-    reduction is 0); columns: those of :func:`serve`, plus ``reduction_eq22_percent`` and
-    ``reduction_simulated_percent`` (zero-COR row; 0 for the normal ball).
+    Parameters
+    ----------
+    racket : Racket
+    ball : Ball
+    position : float or sequence of float, optional
+        Impact point(s) [m from the tip]; default the centre of the strings.
+    racket_speed : float
+        Racket-head speed [m/s]: the string centre's speed (:class:`racket.Swing`); the
+        impact point's speed follows from its distance to the pivot.
+    pivot_from_butt : float
+        The swing's pivot [m from the butt, - beyond it]; default the wrist, 5 cm beyond.
+    zero_cor : bool
+        Add the rows of the zero-COR twin (:func:`zero_cor_ball` at the racket speed; for a
+        sine-law ball the same ball, so the reduction is 0) and the reductions.
+
+    Returns
+    -------
+    DataFrame
+        Index ``ball`` (``normal``, ``zero-COR``), one row per ball and position; columns
+        those of :func:`serve`, plus ``reduction_eq22_percent`` and
+        ``reduction_simulated_percent`` with ``zero_cor`` (0 for the normal ball).
     """
-    position = racket.strings.center if position is None else position
-    twin = zero_cor_ball(ball, positive("racket_speed", racket_speed, "m/s"))
-    rows = {
-        name: serve(racket, b, position, racket_speed, pivot)
-        for name, b in (("normal", ball), ("zero-COR", twin))
-    }
-    table = pd.DataFrame.from_dict(rows, orient="index")
-    table.index.name = "ball"
-    for how in ("eq22", "simulated"):
-        col = f"serve_{how}_m_s"
-        table[f"reduction_{how}_percent"] = 100.0 * (1.0 - table[col] / table.loc["normal", col])
+    positions = np.atleast_1d(racket.strings.center if position is None else position)
+    swing = Swing(racket_speed, pivot_from_butt)
+    balls = [("normal", ball)]
+    if zero_cor:
+        balls.append(("zero-COR", zero_cor_ball(ball, swing.head_speed)))
+    rows = [
+        {"ball": name, **serve(racket, b, float(x), swing)} for name, b in balls for x in positions
+    ]
+    table = pd.DataFrame(rows).set_index("ball")
+    if zero_cor:
+        for how in ("eq22", "simulated"):
+            col = f"serve_{how}_m_s"
+            normal = np.tile(table.loc[["normal"], col].to_numpy(), len(balls))
+            table[f"reduction_{how}_percent"] = 100.0 * (1.0 - table[col].to_numpy() / normal)
     return table
+
+
+def head_speed_for(
+    racket: Racket,
+    ball: Ball,
+    target: float,
+    position: float | None = None,
+    pivot_from_butt: float = -WRIST_BEYOND_BUTT,
+) -> float:
+    """The racket-head speed [m/s] whose swing sends ``ball`` (at rest) off at ``target``
+    [m/s] from ``position`` [m from the tip; default the string centre] (the simulated serve,
+    solved by Brent's method to 1e-9 m/s)."""
+    from scipy.optimize import brentq
+
+    position = racket.strings.center if position is None else float(position)
+    low, high = 0.1, 250.0
+
+    def miss(head):
+        return (
+            serve(racket, ball, position, Swing(head, pivot_from_butt))["serve_simulated_m_s"]
+            - target
+        )
+
+    with warnings.catch_warnings():  # the search passes through absurd speeds
+        warnings.simplefilter("ignore")
+        reach = miss(low) + target, miss(high) + target
+        if not reach[0] < target < reach[1]:
+            raise ValueError(
+                f"target ball speed must be in ({reach[0]:.4g}, {reach[1]:.4g}) m/s for head "
+                f"speeds of {low:g}-{high:g} m/s, got {target:g}"
+            )
+        return float(brentq(miss, low, high, xtol=1e-9))
 
 
 def serve_what_if(
@@ -120,12 +181,14 @@ def serve_what_if(
     racket_speed: float = 40.0,
     string_stiffness=None,
     ball_stiffness=None,
-    pivot: float | None = None,
+    pivot_from_butt: float = -WRIST_BEYOND_BUTT,
 ) -> pd.DataFrame:
     """Serve-speed reduction from a zero-COR ball against string and ball stiffness.
 
     Parameters
     ----------
+    racket, ball, position, racket_speed, pivot_from_butt :
+        As in :func:`serve_table` (one position).
     string_stiffness : sequence of float, optional
         String-bed stiffnesses [N/m] (tension); default 1e4 to 1e5 N/m.
     ball_stiffness : sequence of float, optional
@@ -146,11 +209,11 @@ def serve_what_if(
     ball_stiffness = np.geomspace(2e4, 1e5, 5) if ball_stiffness is None else ball_stiffness
     rows = []
     for k_s in string_stiffness:
-        variant = Racket(racket.beam, StringBed(k_s, racket.strings.extent), racket.support)
-        row = serve_table(variant, ball, position, racket_speed, pivot).loc["zero-COR"]
+        variant = replace(racket, strings=replace(racket.strings, stiffness=float(k_s)))
+        row = serve_table(variant, ball, position, racket_speed, pivot_from_butt).loc["zero-COR"]
         rows.append({"varied": "string_stiffness", "value": float(k_s), **row.to_dict()})
     for k_b in ball_stiffness:
         stiff = Ball(ball.mass, replace(ball.law, k=float(k_b)))
-        row = serve_table(racket, stiff, position, racket_speed, pivot).loc["zero-COR"]
+        row = serve_table(racket, stiff, position, racket_speed, pivot_from_butt).loc["zero-COR"]
         rows.append({"varied": "ball_stiffness", "value": float(k_b), **row.to_dict()})
     return pd.DataFrame(rows)

@@ -21,7 +21,7 @@ import pandas as pd
 from ball import Ball
 from common.checks import in_range
 from common.checks import speed as check_speed
-from racket import Racket, impact
+from racket import Racket, Swing, impact
 from racket.solver import F1_MIN
 from studies.tables import impact_columns, impact_table
 
@@ -41,7 +41,9 @@ COLUMNS = (
     "v_cm_m_s",
     "omega_rad_s",
     "roll_rate_rad_s",
+    "swing_speed_m_s",
     "ball_rebound_m_s",
+    "exit_speed_mph",
     "vibration_energy_fraction",
     "contact_time_s",
     "peak_force_N",
@@ -111,8 +113,7 @@ def sweep(
     f1=None,
     support=None,
     offset=None,
-    swing_speed: float = 0.0,
-    pivot: float | None = None,
+    swing: Swing | None = None,
     progress: bool | None = None,
     executor: Executor | None = None,
 ) -> pd.DataFrame:
@@ -139,8 +140,11 @@ def sweep(
         Distance of the impact points from the long axis [m, + towards 3 o'clock],
         broadcast with ``positions`` (:func:`racket.impact`); None: on the axis, the
         bending modes only.
-    swing_speed, pivot :
-        A swung racket, as in :func:`racket.impact`.
+    swing : Swing, optional
+        The racket swung about a pivot (a free racket): each impact point moves at its own
+        speed, :meth:`racket.Swing.point_speeds`; ``speed`` may then be 0 (a serve: the
+        ball at rest).  The ball's exit speed is ``ball_rebound_m_s`` (and
+        ``exit_speed_mph``).
     progress : bool, optional
         Show a progress bar; default: when standard error is a terminal.
     executor : concurrent.futures.Executor, optional
@@ -167,7 +171,9 @@ def sweep(
     # Every value checked before any impact runs.
     racket.check_points(positions, offset)
     for sp in grid["speed"]:
-        check_speed("speed", sp, allow_zero=swing_speed > 0)
+        check_speed("speed", sp, allow_zero=swing is not None)
+    if swing is not None and not isinstance(swing, Swing):
+        raise ValueError(f"swing must be a Swing, got {swing!r}")
     for freq in grid["f1"]:
         if freq is not None:
             in_range("f1", freq, F1_MIN, F1_MAX, "Hz")
@@ -180,7 +186,7 @@ def sweep(
         if (ks, freq, sup) not in variants:
             variants[ks, freq, sup] = _variant(racket, ks, freq, sup)
         combos.append((sp, variants[ks, freq, sup], label, b))
-    runs = [(variant, b, positions, sp, offset, swing_speed, pivot) for sp, variant, _, b in combos]
+    runs = [(variant, b, positions, sp, offset, swing) for sp, variant, _, b in combos]
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         if executor is None:
@@ -232,12 +238,11 @@ def _first_of_each_kind(caught) -> None:
             warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
 
 
-def _impact_columns(racket, ball, positions, speed, offset, swing_speed, pivot) -> dict:
+def _impact_columns(racket, ball, positions, speed, offset, swing) -> dict:
     """The table columns of one grid point (module level, so that an executor can pickle
     it)."""
-    return impact_columns(
-        impact(racket, ball, positions, speed, offset=offset, swing_speed=swing_speed, pivot=pivot)
-    )
+    moved = {} if swing is None else swing.impact_kwargs(racket, positions)
+    return impact_columns(impact(racket, ball, positions, speed, offset=offset, **moved))
 
 
 def compare(
@@ -245,6 +250,7 @@ def compare(
     ball: Ball,
     speed: float = 10.0,
     points: int = 101,
+    swing: Swing | None = None,
 ) -> pd.DataFrame:
     """Impacts across the string bed of each racket: one sweep table, a ``racket`` column.
 
@@ -253,19 +259,21 @@ def compare(
     rackets : mapping label -> Racket
     ball : Ball
     speed : float
-        Ball speed towards the strings [m/s].
+        Ball speed towards the strings [m/s] (0 allowed with a swing).
     points : int
         Impact points across each racket's string bed, in [2, 100000].
+    swing : Swing, optional
+        The same swing for every racket (as in :func:`sweep`).
     """
     points = in_range("points", points, 2, 100_000)
     if points != int(points):
         raise ValueError(f"points must be a whole number, got {points:g}")
-    check_speed("speed", speed)
+    check_speed("speed", speed, allow_zero=swing is not None)
     frames = []
     for label, racket in rackets.items():
-        frame = impact_table(
-            impact(racket, ball, np.linspace(*racket.strings.extent, int(points)), speed)
-        )
+        x = np.linspace(*racket.strings.extent, int(points))
+        moved = {} if swing is None else swing.impact_kwargs(racket, x)
+        frame = impact_table(impact(racket, ball, x, speed, **moved))
         frame.insert(0, "racket", label)
         frames.append(frame)
     return pd.concat(frames, ignore_index=True)

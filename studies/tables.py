@@ -6,6 +6,7 @@ import numpy as np
 import pandas as pd
 
 from ball import CollisionHistory
+from common.units import MPH
 from racket import Impact
 
 
@@ -25,7 +26,9 @@ def impact_columns(result: Impact) -> dict:
         "v_cm_m_s": result.v_cm,
         "omega_rad_s": result.omega,
         "roll_rate_rad_s": result.roll_rate,
+        "swing_speed_m_s": np.broadcast_to(result.swing_speed, np.shape(result.position)),
         "ball_rebound_m_s": result.ball_rebound,
+        "exit_speed_mph": np.asarray(result.ball_rebound) / MPH,
         "vibration_energy_fraction": np.divide(result.vibration_energy, result.energy_initial),
         "contact_time_s": result.contact_time,
         "peak_force_N": result.peak_force,

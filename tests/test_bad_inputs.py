@@ -37,8 +37,11 @@ for flag in ("--from", "--to"):
         CASES.append((["sweep", flag, value, *POINTS], flag))
 for value in ("-3", "nan", "inf", "1e300"):
     CASES.append((["serve", "--position", value], "--position"))
-for value in ("0", "-3", "nan", "inf", "1e300"):
-    CASES.append((["serve", "--pivot", value], "pivot"))
+for value in ("-300", "31", "nan", "inf", "1e300"):
+    CASES.append((["serve", "--pivot-cm-from-butt", value], "--pivot-cm-from-butt"))
+for value in ("0", "-3", "nan", "1e300"):
+    CASES.append((["serve", "--target-ball-speed-mph", value], "--target-ball-speed-mph"))
+CASES.append((["serve", "--target-ball-speed", "0.05"], "target ball speed must be in"))
 for flag in ("--va", "--va-mph"):
     for value in ("0", "-3", "nan", "inf", "1e300"):
         CASES.append(

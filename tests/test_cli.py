@@ -67,13 +67,22 @@ def test_sweep_toml_racket_mph_and_plot(tmp_path, capsys):
     assert len(pd.read_csv(tmp_path / "s.csv")) == 5
 
 
-def test_serve(tmp_path, capsys):
+def test_serve_one_swing_tip_ward_is_faster_in_the_unit_typed(tmp_path, capsys):
+    """The same swing (racket-head speed 100 mph at the string centre, pivot at the wrist):
+    5 cm towards the tip the point moves faster and the ball leaves faster; mph in, mph out,
+    the positions echoed; no zero-COR row unless --what-if."""
+    out_file = str(tmp_path / "serve.json")
     status, out, _ = run(
-        capsys, "serve", "--racket-speed-mph", "90", "--out", str(tmp_path / "serve.json")
-    )
-    assert status == 0 and "zero-COR" in out and "90.0 mph" in out
-    rows = json.loads((tmp_path / "serve.json").read_text())
-    assert rows[1]["ball"] == "zero-COR" and 15 < rows[1]["reduction_simulated_percent"] < 23
+        capsys, "serve", "--racket", "pure-drive-2021", "--racket-speed-mph", "100",
+        "--position", "0.1732", "0.1232", "--out", out_file,
+    )  # fmt: skip
+    assert status == 0 and "100.0 mph" in out and "zero-COR" not in out
+    assert "serve_simulated_mph" in out and "position_from_butt_cm" in out
+    centre, tipward = json.loads((tmp_path / "serve.json").read_text())
+    assert tipward["point_speed_mph"] > centre["point_speed_mph"]
+    assert tipward["serve_simulated_mph"] > centre["serve_simulated_mph"]
+    status, out, _ = run(capsys, "serve", "--what-if")
+    assert status == 0 and "zero-COR" in out
 
 
 def test_serve_what_if_plot(tmp_path, capsys):

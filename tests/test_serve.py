@@ -34,7 +34,9 @@ def test_serve_runs_for_every_ball_with_a_reduction_in_range(name):
 def test_serve_command_for_the_presets_the_help_lists(name, capsys):
     assert main(["serve", "--ball", name, "--racket-speed", "30"]) == 0
     out = capsys.readouterr().out
-    assert "zero-COR" in out and "Traceback" not in out
+    assert "serve_simulated_m_s" in out and "zero-COR" not in out and "Traceback" not in out
+    assert main(["serve", "--ball", name, "--racket-speed", "30", "--what-if"]) in (0, 2)
+    assert "zero-COR" in capsys.readouterr().out  # (the stiffness sweep needs a linear ball)
 
 
 def test_sine_law_ball_is_its_own_zero_cor_ball():

@@ -10,7 +10,7 @@ from hypothesis import strategies as st
 
 from ball import Ball, LinearSpring
 from beam import Beam
-from racket import CATALOG, Racket, StringBed, from_specs, impact, paper_racket, tennis_ball
+from racket import CATALOG, Racket, StringBed, Swing, from_specs, impact, paper_racket, tennis_ball
 from studies.cli import main
 from studies.maps import face_map
 
@@ -220,7 +220,7 @@ def test_off_axis_power_falls_as_twu_measures_and_lead_at_3_and_9_restores_it(tw
 
 def test_face_map_is_symmetric_and_its_sweet_area_lies_inside_the_face(pure_drive):
     ball = tennis_ball()
-    result = face_map(pure_drive, ball, SPEED, racket_speed=20.0)
+    result = face_map(pure_drive, ball, SPEED, swing=Swing(20.0))
     assert result.e_A.shape == (15, 9)
     assert result.e_A == pytest.approx(result.e_A[:, ::-1], rel=1e-12)
     assert result.roll_rate == pytest.approx(-result.roll_rate[:, ::-1], rel=1e-12, abs=1e-12)
