@@ -112,12 +112,30 @@ class StringBed:
             return self.width
         return (self.extent[1] - self.extent[0]) / HEAD_ASPECT
 
+    @property
+    def area(self) -> float:
+        """Area of the (elliptical) string bed [m^2]."""
+        return 0.25 * np.pi * (self.extent[1] - self.extent[0]) * self.full_width
+
     def rho2(self, x, y=0.0) -> np.ndarray:
         """Squared elliptical radius of the points (``x`` [m from the tip], ``y`` [m from
         the long axis]): 0 at the bed's centre, 1 on its edge."""
         half_length = 0.5 * (self.extent[1] - self.extent[0])
         dx = (np.asarray(x, dtype=float) - self.center) / half_length
         return dx**2 + (np.asarray(y, dtype=float) / (0.5 * self.full_width)) ** 2
+
+    @property
+    def stiffest(self) -> float:
+        """The largest string-plane stiffness anywhere on the bed [N/m] (the solver's time
+        step follows from it): :attr:`stiffness` for a uniform bed."""
+        if self.profile == "uniform":
+            return self.stiffness
+        return self.stiffness * float(stiffness_ratio(1.0, self._radius))
+
+    @property
+    def _radius(self) -> float:
+        """Radius [m] of the circle of the bed's area (the membrane model's)."""
+        return 0.5 * np.sqrt((self.extent[1] - self.extent[0]) * self.full_width)
 
     def stiffness_at(self, x, y=0.0) -> np.ndarray:
         """String-plane stiffness [N/m] at (``x`` [m from the tip], ``y`` [m from the long
@@ -126,8 +144,7 @@ class StringBed:
         x, y = np.broadcast_arrays(np.asarray(x, dtype=float), np.asarray(y, dtype=float))
         if self.profile == "uniform":
             return np.full(x.shape, self.stiffness)
-        radius = 0.5 * np.sqrt((self.extent[1] - self.extent[0]) * self.full_width)
-        return self.stiffness * stiffness_ratio(self.rho2(x, y), radius)
+        return self.stiffness * stiffness_ratio(self.rho2(x, y), self._radius)
 
 
 @dataclass(frozen=True)
@@ -196,6 +213,20 @@ class Racket:
             return clamped_system()
         length = self.beam.length
         return face_system(self.system, roll_system(roll, length, self.support, self.hand))
+
+    def point_dynamics(self, x, y=None):
+        """The block system for impacts at points (``x`` [m from the tip], ``y`` [m from the
+        long axis] or None) and the points' modal shapes: (system, phi (P, N), face) with
+        ``face`` True when the roll and torsion modes take part (an offset given on a racket
+        whose roll inertia is modelled), :attr:`face_system` then, else :attr:`system`."""
+        x = np.atleast_1d(np.asarray(x, dtype=float))
+        face = y is not None and self.face_system is not None
+        system = self.face_system if face else self.system
+        n = system.count
+        phi = self.beam.modes.shape(x).T[:, : min(n, self.beam.modes.count)]
+        if face and n:
+            phi = np.hstack([phi, self.beam.roll_modes.shape(x, y).T])
+        return system, np.ascontiguousarray(phi), face
 
     @property
     def hoop(self) -> Hoop:

@@ -140,6 +140,8 @@ class Impact:
     ----------
     position : float or ndarray
         Impact point [m from the tip].
+    position_from_butt : float or ndarray
+        The same [m from the butt], as spec sheets count.
     offset : float or ndarray or None
         Impact point's distance from the long axis [m, + towards 3 o'clock], or None for
         impacts on the axis without the roll and torsion modes (the paper's 1-D model).
@@ -183,6 +185,7 @@ class Impact:
     """
 
     position: np.ndarray
+    position_from_butt: np.ndarray
     offset: np.ndarray | None
     speed: float
     swing_speed: float
@@ -485,6 +488,7 @@ def _solve(
         m_eff = racket.beam.effective_mass(x, y if stepper.face else None)
     fields = dict(
         position=x,
+        position_from_butt=racket.beam.length - x,
         offset=y,
         swing_speed=np.array(stepper.closing - speed),
         e=(v2_dc - ball_after) / closing,
@@ -520,11 +524,11 @@ class _Stepper:
     run for any Xo (see :func:`racket.kernel.run_impacts`)."""
 
     def __init__(self, racket, ball, x, y, speed, swing_speed, pivot, steps_per_contact):
-        # The step follows from the centre's string stiffness, whatever the points, and from
-        # the closing speed, the same for all (see impact).
+        # The step follows from the bed's stiffest spot, whatever the points (the shortest
+        # contact on it), and from the closing speed, the same for all (see impact).
         swing_speed = np.broadcast_to(np.asarray(swing_speed, dtype=float), x.shape)
         self.closing = speed + swing_speed
-        self.dt = contact_time_scale(ball, racket.strings.stiffness, self.closing[0])
+        self.dt = contact_time_scale(ball, racket.strings.stiffest, self.closing[0])
         self.dt /= steps_per_contact
         self.max_steps = 12 * steps_per_contact
         law = getattr(ball.law, "kernel_law", None)
@@ -532,14 +536,9 @@ class _Stepper:
             raise ValueError(f"ball law {ball.law!r} is not supported on a racket")
         self.code = law[0]
         self.modes = modes = racket.beam.modes
-        self.face = y is not None and racket.face_system is not None
-        self.system = system = racket.face_system if self.face else racket.system
+        system, phi, self.face = racket.point_dynamics(x, y)
+        self.system, self.phi = system, phi
         self.n = n = system.count
-        shapes = modes.shape(x)
-        phi = shapes.T[:, : min(n, modes.count)]
-        if self.face and n:
-            phi = np.hstack([phi, racket.beam.roll_modes.shape(x, y).T])
-        self.phi = phi = np.ascontiguousarray(phi)
         trans, g0, g1 = system.step(self.dt)
         out_d, out_v, out_dc = system.outputs(phi)
         self.swing_qd = _swing_velocities(modes, x, swing_speed, pivot)
@@ -550,7 +549,7 @@ class _Stepper:
         inv_ks = 1.0 / racket.strings.stiffness_at(x, 0.0 if y is None else y)
         series = inv_ks.copy()
         if n:  # static correction: the bending modes left out respond quasi-statically
-            series += racket.beam.residual_flexibility(x, shapes)
+            series += racket.beam.residual_flexibility(x)
         if self.face and n:  # and the torsion modes left out
             series += racket.beam.roll_modes.residual_flexibility(x, y)
         self.points = layout.Points(

@@ -86,8 +86,12 @@ def _check_directory(flag: str, directory: Path, path) -> None:
         raise ValueError(f"{flag}: directory {str(directory)!r} of {str(path)!r} is not writable")
 
 
+_RUN = {}  # the command line being run (main sets it), for the tables' sidecars
+
+
 def write_table(table: pd.DataFrame, path: str) -> None:
-    """Write ``table`` to ``path`` as CSV, JSON (records) or Parquet, by extension."""
+    """Write ``table`` to ``path`` as CSV, JSON (records) or Parquet, by extension, and,
+    when the command line writes it, its sidecar (:mod:`studies.provenance`)."""
     suffix = Path(path).suffix.lower()
     if suffix not in TABLE_FORMATS:
         raise ValueError(f"table file must end in {', '.join(TABLE_FORMATS)}, got {path!r}")
@@ -102,6 +106,15 @@ def write_table(table: pd.DataFrame, path: str) -> None:
             raise ValueError(
                 "Parquet output needs pyarrow: pip install 'racket-impact[parquet]'"
             ) from None
+    _sidecar(path)
+
+
+def _sidecar(path) -> None:
+    """The sidecar of a table the command line wrote (:mod:`studies.provenance`)."""
+    if _RUN:
+        from studies.provenance import describe, write_sidecar
+
+        write_sidecar(path, describe(_RUN["argv"], _RUN["command"], _RUN["options"]))
 
 
 def save_plot(axes, path: str) -> None:
@@ -172,6 +185,7 @@ def cmd_paper(args) -> int:
             for r in table.itertuples()
         ]
         Path(args.json).write_text(json.dumps(records, indent=2))
+        _sidecar(args.json)
     written = write_paper_figures(Path(args.out))
     print(f"figures written to {args.out}/: {', '.join(p.name for p in written)}")
     return 0 if ok else 1
@@ -240,6 +254,7 @@ def cmd_sweep(args) -> int:
         np.linspace(*ends, points),
         speeds,
         string_stiffness=args.string_stiffness,
+        tension=None if args.tension_lb is None else [_tension(t) for t in args.tension_lb],
         f1=args.f1,
         support=args.support,
         offset=args.offset,
@@ -248,6 +263,7 @@ def cmd_sweep(args) -> int:
     _print_table(
         table[
             [
+                "position_from_butt_cm",
                 "position_from_tip_m",
                 "e",
                 "e_A",
@@ -261,7 +277,8 @@ def cmd_sweep(args) -> int:
     )
     best = table.loc[table["e"].idxmax()]
     print(
-        f"\nlargest e = {best['e']:.4f} at {best['position_from_tip_m']:.3f} m from the tip "
+        f"\nlargest e = {best['e']:.4f} at {best['position_from_butt_cm']:.1f} cm from the butt "
+        f"({best['position_from_tip_m']:.3f} m from the tip) "
         f"({len(table)} impacts)"
     )
     for path in filter(None, (args.out, args.csv, args.json)):
@@ -402,19 +419,26 @@ def cmd_modes(args) -> int:
     print(f"balance           {100 * beam.balance:.2f} cm from the butt")
     print(f"swingweight       {beam.swingweight_kgcm2:.1f} kg cm^2 (axis 10 cm from the butt)")
     print(f"recoil weight     {1e4 * beam.inertia_cm:.1f} kg cm^2 (about the centre of mass)")
+    cop = center_of_percussion(racket, hand)
     print(
-        f"centre of percussion  {100 * center_of_percussion(racket, hand):.1f} cm from the "
-        f"tip (hand {100 * HAND_FROM_BUTT:.0f} cm from the butt)"
+        f"centre of percussion  {100 * (beam.length - cop):.1f} cm from the butt "
+        f"({100 * cop:.1f} from the tip; hand {100 * HAND_FROM_BUTT:.0f} cm from the butt)"
     )
     print(
-        f"effective mass at the string centre ({100 * centre:.1f} cm)  "
+        f"effective mass at the string centre ({100 * (beam.length - centre):.1f} cm from "
+        f"the butt, {100 * centre:.1f} from the tip)  "
         f"{beam.effective_mass(centre):.4f} kg"
     )
     rows = []
     for k in range(1, min(count, modes.count - 2) + 1):
-        nodes = ", ".join(f"{100 * n:.1f}" for n in modes.nodes(k))
+        nodes = modes.nodes(k)
         rows.append(
-            {"mode": k, "frequency_Hz": modes.frequencies[k - 1], "nodes_cm_from_tip": nodes}
+            {
+                "mode": k,
+                "frequency_Hz": modes.frequencies[k - 1],
+                "nodes_cm_from_butt": ", ".join(f"{100 * (beam.length - n):.1f}" for n in nodes),
+                "nodes_cm_from_tip": ", ".join(f"{100 * n:.1f}" for n in nodes),
+            }
         )
     table = pd.DataFrame(rows)
     print()
@@ -452,6 +476,8 @@ def cmd_specs(args) -> int:
         f"{100 * racket.hand.grip_length:g} cm)"
     )
     _print_table(report.modes, "{:.4g}")
+    print("\nsweet spots (a tennis ball at 16.5 m/s on the racket at rest):")
+    _print_table(report.sweet_spots, "{:.4g}")
     print("\neffective mass along the strings (Eq. 20)")
     _print_table(report.effective_mass, "{:.4g}")
     if sources:
@@ -468,6 +494,72 @@ def cmd_specs(args) -> int:
         from studies.plots import plot_modes
 
         save_plot(plot_modes(racket, count=count), args.plot)
+    return 0
+
+
+def cmd_rerun(args) -> int:
+    from studies.provenance import rerun_argv, temporary_directory
+
+    with temporary_directory() as workdir:
+        argv = rerun_argv(args.sidecar, workdir)
+        print("racket-impact " + " ".join(argv), file=sys.stderr)
+        return main(argv)
+
+
+def cmd_feel(args) -> int:
+    from racket.feel import hand_feel
+
+    check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
+    racket = load_racket(args.racket)
+    if args.support:
+        from dataclasses import replace
+
+        racket = replace(racket, support=args.support)
+    position = racket.strings.center if args.position is None else args.position
+    in_range("--position", position, *racket.strings.extent, "m from the tip")
+    duration = in_range("--duration-ms", args.duration_ms, 5.0, 1000.0, "ms") / 1e3
+    feel = hand_feel(
+        racket, load_ball(args.ball), position, _speed(args, "speed"), offset=args.offset,
+        duration=duration,
+    )  # fmt: skip
+    length = racket.beam.length
+    print(
+        f"impact {100 * (length - position):.1f} cm from the butt ({100 * position:.1f} from "
+        f"the tip){'' if args.offset is None else f', {100 * args.offset:+.1f} cm off the axis'}"
+        f"; the handle read {100 * (length - feel.grip):.1f} cm from the butt ({racket.support})"
+    )
+    print(f"peak handle velocity      {feel.peak_velocity:.3f} m/s")
+    print(f"peak handle acceleration  {feel.peak_acceleration:.0f} m/s^2 "
+          f"({feel.peak_acceleration / 9.81:.0f} g)")  # fmt: skip
+    above = feel.frequencies > 20.0
+    dominant = feel.frequencies[above][np.argmax(feel.spectrum[above])]
+    print(f"strongest vibration       {dominant:.0f} Hz")
+    print(
+        f"vibration reaching the hand  {1e3 * feel.hand_vibration_energy:.2f} mJ over "
+        f"{1e3 * feel.t[-1]:.0f} ms (all the hand absorbs: {1e3 * feel.hand_energy:.1f} mJ)"
+    )
+    print(f"vibration left in the frame  {1e3 * feel.vibration_energy_end:.2f} mJ")
+    if args.out:
+        write_table(feel.to_frame(), args.out)
+    if args.plot:
+        from studies.plots import plot_hand_feel
+
+        save_plot(plot_hand_feel(feel), args.plot)
+    return 0
+
+
+def cmd_sweetspots(args) -> int:
+    from studies.landmarks import sweet_spots
+
+    check_outputs(tables=[("--out", args.out)])
+    swing = _swing(args)
+    speed = _speed(args, "speed", allow_zero=swing is not None)
+    grip = in_range("--grip-cm-from-butt", args.grip_cm_from_butt, 0.0, 30.0, "cm") / 100
+    racket, ball = load_racket(args.racket), load_ball(args.ball)
+    table = sweet_spots(racket, ball, speed, swing, grip)
+    _print_table(table, "{:.4g}")
+    if args.out:
+        write_table(table, args.out)
     return 0
 
 
@@ -489,7 +581,8 @@ def cmd_compare(args) -> int:
 
         rackets = {k: replace(r, support=args.support) for k, r in rackets.items()}
     ball = load_ball(args.ball)
-    table = compare(rackets, ball, speed, points, swing=swing)
+    tension = None if args.tension_lb is None else _tension(args.tension_lb)
+    table = compare(rackets, ball, speed, points, swing=swing, tension=tension)
     _print_table(compare_summary(rackets, table, ball, speed))
     if args.out:
         write_table(table, args.out)
@@ -517,6 +610,10 @@ def cmd_map(args) -> int:
         from dataclasses import replace
 
         racket = replace(racket, support=args.support)
+    if args.tension_lb is not None:
+        from racket.specs.strings import with_tension
+
+        racket = with_tension(racket, _tension(args.tension_lb))
     result = face_map(racket, load_ball(args.ball), speed, swing=swing, grid=grid)
     for line in result.summary():
         print(line)
@@ -527,6 +624,25 @@ def cmd_map(args) -> int:
 
         save_plot(plot_face_map(result, args.field), args.plot)
     return 0
+
+
+def _tension(value_lb: float) -> float:
+    """``--tension-lb`` [lb] checked in lb (20-80) and given in N."""
+    from common.units import LB
+
+    return in_range("--tension-lb", value_lb, 20.0, 80.0, "lb") * LB
+
+
+def _tension_option(p, many: bool = False):
+    p.add_argument(
+        "--tension-lb",
+        type=float,
+        nargs="+" if many else None,
+        action=_Once,
+        metavar="LB",
+        help="string tension(s) [lb]: the string bed's stiffness from the membrane model "
+        "(default: the racket's)",
+    )
 
 
 def _swing(args):
@@ -693,6 +809,7 @@ def build_parser() -> argparse.ArgumentParser:
         help="support(s) (default: the racket's)",
     )
     _swing_options(p)
+    _tension_option(p, many=True)
     p.add_argument("--out", metavar="FILE", help="table file: .csv, .json or .parquet")
     p.add_argument("--csv", metavar="FILE", help="table as CSV")
     p.add_argument("--json", metavar="FILE", help="table as JSON records")
@@ -713,6 +830,7 @@ def build_parser() -> argparse.ArgumentParser:
         help="grid points along and across the racket (default 15 9)",
     )
     p.add_argument("--support", choices=list(SUPPORTS), help="support (default: the racket's)")
+    _tension_option(p)
     p.add_argument(
         "--field", default="e_A", help="what the plot shows: e, e_A, exit_speed, "
         "exit_speed_swung, vibration_energy or roll_rate (default e_A)",
@@ -792,6 +910,45 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--plot", metavar="FILE", help="mode shapes (.png, .svg, .pdf)")
     p.set_defaults(func=cmd_specs)
 
+    p = sub.add_parser("rerun", help="make a table again from its sidecar (*.meta.json)")
+    p.add_argument("sidecar", metavar="FILE", help="a table's sidecar, or the table itself")
+    p.set_defaults(func=cmd_rerun)
+
+    p = sub.add_parser("feel", help="the handle's motion at the hand after an impact")
+    _racket_arg(p, default="pure-drive-2021")
+    _ball_arg(p)
+    _speed_option(p, "speed", 20.0, "ball speed towards the strings")
+    p.add_argument("--position", type=float, metavar="M", help="impact point [m from the tip] "
+                   "(default: the string centre)")  # fmt: skip
+    p.add_argument("--offset", type=float, metavar="M", help="impact point's distance from "
+                   "the long axis [m, + towards 3 o'clock]")  # fmt: skip
+    p.add_argument("--support", choices=["free", "hand-held"], default="hand-held",
+                   help="support (default hand-held)")  # fmt: skip
+    p.add_argument("--duration-ms", type=float, default=50.0, metavar="MS",
+                   help="how long to follow the racket (default 50 ms)")  # fmt: skip
+    p.add_argument("--out", metavar="FILE", help="histories: .csv, .json or .parquet")
+    p.add_argument("--plot", metavar="FILE", help="histories and spectrum (.png, .svg, .pdf)")
+    p.set_defaults(func=cmd_feel)
+
+    p = sub.add_parser("sweetspots", help="nodes, centre of percussion, power spots, sweet area")
+    p.add_argument(
+        "racket",
+        metavar="PRESET_OR_TOML",
+        help=f"racket preset ({', '.join(RACKETS)}) or TOML file with a [racket] table",
+    )
+    _ball_arg(p)
+    _speed_option(p, "speed", 16.5, "ball speed towards the strings")
+    _swing_options(p)
+    p.add_argument(
+        "--grip-cm-from-butt",
+        type=float,
+        default=7.0,
+        metavar="CM",
+        help="where the hand pivots, for the centre of percussion (default 7)",
+    )
+    p.add_argument("--out", metavar="FILE", help="table file: .csv, .json or .parquet")
+    p.set_defaults(func=cmd_sweetspots)
+
     p = sub.add_parser("compare", help="e along the strings of two or more rackets")
     p.add_argument(
         "--racket",
@@ -805,6 +962,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--points", type=int, default=101, help="impact points per racket")
     p.add_argument("--support", choices=list(SUPPORTS), help="support for every racket")
     _swing_options(p)
+    _tension_option(p)
     p.add_argument("--out", metavar="FILE", help="table file: .csv, .json or .parquet")
     p.add_argument("--plot", metavar="FILE", help="comparison plot (.png, .svg, .pdf)")
     p.set_defaults(func=cmd_compare)
@@ -819,6 +977,8 @@ def main(argv=None) -> int:
     args = build_parser().parse_args([a for a in argv if a != "--debug"])
     args.debug = debug
     prefix = f"racket-impact {args.command}"
+    options = {k: v for k, v in vars(args).items() if k != "func" and not k.startswith("_")}
+    _RUN.update(argv=[a for a in argv if a != "--debug"], command=args.command, options=options)
 
     kinds = set()
 

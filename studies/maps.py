@@ -82,6 +82,8 @@ class FaceMap:
         The racket's string bed (for the outline).
     margin : float
         How far inside the bed's edge the ball's centre stays [m].
+    length : float
+        The racket's length [m] (for positions from the butt).
     """
 
     positions: np.ndarray
@@ -103,13 +105,18 @@ class FaceMap:
     sweet_area_cm2: float
     strings: object
     margin: float
+    length: float
 
     def to_frame(self):
         """One row per grid point on the face: position, offset and each field (pandas)."""
         import pandas as pd
 
         x = np.broadcast_to(self.positions[:, None], self.offsets.shape).ravel()
-        columns = {"position_from_tip_m": x, "offset_m": self.offsets.ravel()}
+        columns = {
+            "position_from_butt_cm": 100 * (self.length - x),
+            "position_from_tip_m": x,
+            "offset_m": self.offsets.ravel(),
+        }
         units = {
             "e": "e",
             "e_A": "e_A",
@@ -129,21 +136,23 @@ class FaceMap:
         """The map in a few lines: where e_A is largest, the sweet area, e_A at the centre
         and at 3 o'clock near the frame, the node line and the centre of percussion."""
         i, j = np.unravel_index(np.argmax(self.e_A), self.e_A.shape)
-        centre = 100 * self.strings.center
-        nodes = ", ".join(f"{100 * n:.1f}" for n in self.node)
+
+        def butt(x):
+            return f"{100 * (self.length - x):.1f} cm from the butt ({100 * x:.1f} from the tip)"
+
+        nodes = ", ".join(butt(n) for n in self.node)
         lines = [
             f"ball at {self.speed:g} m/s on a racket at rest; grid {self.e_A.shape[0]} x "
             f"{self.e_A.shape[1]} over the face (ball centre >= {100 * self.margin:.1f} cm "
             "inside the frame)",
-            f"largest e_A on the grid {self.e_A[i, j]:.4f} at {100 * self.positions[i]:.1f} cm "
-            f"from the tip, {abs(100 * self.offsets[i, j]):.1f} cm off the axis",
-            f"e_A at the string centre ({centre:.1f} cm from the tip): {self.e_A_centre:.4f} on "
+            f"largest e_A on the grid {self.e_A[i, j]:.4f} at {butt(self.positions[i])}, "
+            f"{abs(100 * self.offsets[i, j]):.1f} cm off the axis",
+            f"e_A at the string centre, {butt(self.strings.center)}: {self.e_A_centre:.4f} on "
             f"the axis, {self.e_A_side:.4f} at 3 o'clock ({100 * self.side_offset:.1f} cm off)",
             f"sweet area (e_A within {100 * SWEET_FRACTION:g} % of its largest) "
             f"{self.sweet_area_cm2:.1f} cm^2",
-            (f"node of mode 1 at {nodes} cm from the tip" if nodes else "no node on the strings")
-            + "; centre of percussion (hand pivot) at "
-            f"{100 * self.center_of_percussion:.1f} cm from the tip",
+            (f"node of mode 1 at {nodes}" if nodes else "no node on the strings")
+            + f"; centre of percussion (hand pivot) at {butt(self.center_of_percussion)}",
             f"largest twist rate {np.abs(self.roll_rate).max():.1f} rad/s; vibration energy "
             f"{100 * self.vibration_energy.min():.1f}-{100 * self.vibration_energy.max():.1f} "
             "% of the ball's",
@@ -154,8 +163,7 @@ class FaceMap:
                 f"swung at {self.swing.head_speed:.4g} m/s ({self.swing.head_speed / MPH:.1f} "
                 f"mph) head speed about a pivot {-100 * self.swing.pivot_from_butt:g} cm beyond "
                 f"the butt: exit speed {np.min(self.exit_speed_swung):.2f}-"
-                f"{np.max(self.exit_speed_swung):.2f} m/s, fastest at "
-                f"{100 * self.positions[i]:.1f} cm from the tip"
+                f"{np.max(self.exit_speed_swung):.2f} m/s, fastest at {butt(self.positions[i])}"
             )
         return lines
 
@@ -260,6 +268,7 @@ def face_map(
         sweet_area_cm2=area,
         strings=racket.strings,
         margin=margin,
+        length=racket.beam.length,
     )
 
 
@@ -291,7 +300,8 @@ def _sweet_area(positions, half_width, values) -> tuple[float, float]:
 def compare_summary(rackets, table, ball: Ball, speed: float):
     """One row per racket of a :func:`studies.sweeps.compare` table: the largest e and
     where, e at the string centre and at the tip end of the strings, the largest exit speed
-    [mph] and where [cm from the butt] (of a swing, if the table has one), and, for rackets whose
+    [mph] and where (of a swing, if the table has one), the first mode's node and the centre
+    of percussion for the hand, and, for rackets whose
     roll inertia is modelled, the off-axis power (e_A at the centre's distance from the
     tip, at 3 o'clock with the ball's edge on the frame) and the sweet area of the
     :func:`face_map` of the racket at rest hit at ``speed`` (or :data:`MAP_SPEED` when
@@ -313,16 +323,24 @@ def compare_summary(rackets, table, ball: Ball, speed: float):
         racket = rackets[label]
         best = group.loc[group["e"].idxmax()]
         fastest = group["position_from_tip_m"].iloc[group["exit_speed_mph"].argmax()]
+        node = racket.beam.modes.nodes(1)[0]  # the one nearer the tip, on the strings
+        cop = center_of_percussion(racket, racket.beam.length - HAND_FROM_BUTT)
         row = {
             "racket": label,
             "largest_e": best["e"],
-            "at_cm_from_tip": 100 * best["position_from_tip_m"],
+            "largest_e_from_butt_cm": 100 * (racket.beam.length - best["position_from_tip_m"]),
+            "largest_e_from_tip_cm": 100 * best["position_from_tip_m"],
             "e_at_string_centre": float(
                 np.interp(racket.strings.center, group["position_from_tip_m"], group["e"])
             ),
             "e_at_tip_end": group["e"].iloc[0],
             "largest_exit_mph": group["exit_speed_mph"].max(),
-            "exit_at_cm_from_butt": 100 * (racket.beam.length - fastest),
+            "largest_exit_from_butt_cm": 100 * (racket.beam.length - fastest),
+            "largest_exit_from_tip_cm": 100 * fastest,
+            "node_from_butt_cm": 100 * (racket.beam.length - node),
+            "node_from_tip_cm": 100 * node,
+            "centre_of_percussion_from_butt_cm": 100 * (racket.beam.length - cop),
+            "centre_of_percussion_from_tip_cm": 100 * cop,
             "e_A_centre": np.nan,
             "e_A_3_oclock": np.nan,
             "sweet_area_cm2": np.nan,

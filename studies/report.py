@@ -13,10 +13,10 @@ import numpy as np
 import pandas as pd
 
 from beam import Beam
-from racket import Racket, flex_test_stiffness
+from racket import Racket, flex_test_stiffness, tennis_ball
 from racket.specs import Profile, SpecSheet, fit_profile, spec_sheet
 from racket.system import held_system
-from studies.landmarks import HAND_FROM_BUTT, center_of_percussion
+from studies.landmarks import HAND_FROM_BUTT, center_of_percussion, sweet_spots
 
 
 @dataclass(frozen=True)
@@ -28,6 +28,7 @@ class SpecReport:
     modes: pd.DataFrame
     effective_mass: pd.DataFrame
     parts: pd.DataFrame
+    sweet_spots: pd.DataFrame
     warnings: tuple = ()
 
 
@@ -122,6 +123,9 @@ def _modes(racket: Racket, count: int) -> pd.DataFrame:
         row = {
             "mode": k,
             "free_Hz": modes.frequencies[k - 1],
+            "nodes_cm_from_butt": ", ".join(
+                f"{100 * (modes.length - n):.1f}" for n in modes.nodes(k)
+            ),
             "nodes_cm_from_tip": ", ".join(f"{100 * n:.1f}" for n in modes.nodes(k)),
         }
         if k <= bending.size:
@@ -172,5 +176,6 @@ def spec_report(racket: Racket, specs: dict | None = None, count: int = 4) -> Sp
         modes=_modes(racket, count),
         effective_mass=effective,
         parts=parts,
+        sweet_spots=sweet_spots(racket, tennis_ball()),
         warnings=warnings,
     )

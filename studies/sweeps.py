@@ -23,7 +23,11 @@ from common.checks import in_range
 from common.checks import speed as check_speed
 from racket import Racket, Swing, impact
 from racket.solver import F1_MIN
+from racket.specs.strings import with_tension
 from studies.tables import impact_columns, impact_table
+
+TENSION_RANGE = (89.0, 356.0)
+"""String tension [N] a sweep accepts: 20-80 lb (strung rackets: 40-65 lb), as spec sheets."""
 
 STRING_STIFFNESS_RANGE = (1e3, 1e7)
 """String-bed stiffness [N/m] a sweep accepts (a strung racket's is 2e4-5e4; paper Secs. III
@@ -33,6 +37,7 @@ F1_MAX = 2000.0
 """Highest f1 [Hz] a sweep accepts (a racket's is 100-200 Hz; Taraborrelli et al. 2019)."""
 
 COLUMNS = (
+    "position_from_butt_cm",
     "position_from_tip_m",
     "offset_m",
     "e",
@@ -57,6 +62,7 @@ column per varying parameter follows."""
 PARAMETERS = {
     "speed": "speed_m_s",
     "string_stiffness": "string_stiffness_N_m",
+    "tension": "tension_N",
     "f1": "f1_Hz",
     "support": "support",
     "ball": "ball",
@@ -64,7 +70,9 @@ PARAMETERS = {
 """Sweepable parameters and their column names."""
 
 
-def _variant(racket: Racket, string_stiffness=None, f1=None, support=None) -> Racket:
+def _variant(racket: Racket, string_stiffness=None, tension=None, f1=None, support=None):
+    if tension is not None:
+        racket = with_tension(racket, tension)
     beam = racket.beam if f1 is None else racket.beam.with_f1(f1)
     strings = (
         racket.strings
@@ -110,6 +118,7 @@ def sweep(
     speed: float | Sequence[float] = 10.0,
     *,
     string_stiffness=None,
+    tension=None,
     f1=None,
     support=None,
     offset=None,
@@ -131,6 +140,10 @@ def sweep(
         Ball speed towards the strings [m/s].
     string_stiffness : float or sequence, optional
         String-bed stiffness [N/m], in [1e3, 1e7].
+    tension : float or sequence, optional
+        String tension [N], in [89, 356] (20-80 lb): the string bed's stiffness from the
+        membrane model on the racket's head (:func:`racket.string_bed_stiffness`); not with
+        ``string_stiffness``.
     f1 : float or sequence, optional
         First bending frequency of the frame [Hz], in [20, 2000] (EI scaled, mode shapes
         kept).
@@ -163,6 +176,7 @@ def sweep(
     grid = {
         "speed": _as_list("speed", speed),
         "string_stiffness": _as_list("string_stiffness", string_stiffness),
+        "tension": _as_list("tension", tension),
         "f1": _as_list("f1", f1),
         "support": _as_list("support", support),
         "ball": [_ball_label(b) for b in _as_list("ball", ball)],
@@ -177,16 +191,21 @@ def sweep(
     for freq in grid["f1"]:
         if freq is not None:
             in_range("f1", freq, F1_MIN, F1_MAX, "Hz")
+    if string_stiffness is not None and tension is not None:
+        raise ValueError("give string_stiffness or tension, not both")
+    for t in grid["tension"]:
+        if t is not None:
+            in_range("tension", t, *TENSION_RANGE, "N")
     for k_s in grid["string_stiffness"]:
         if k_s is not None:
             in_range("string_stiffness", k_s, *STRING_STIFFNESS_RANGE, "N/m")
     variants = {}  # each racket built once (its modes and flexibility computed once)
     combos = []
-    for sp, ks, freq, sup, (label, b) in itertools.product(*grid.values()):
-        if (ks, freq, sup) not in variants:
-            variants[ks, freq, sup] = _variant(racket, ks, freq, sup)
-        combos.append((sp, variants[ks, freq, sup], label, b))
-    runs = [(variant, b, positions, sp, offset, swing) for sp, variant, _, b in combos]
+    for sp, ks, tn, freq, sup, (label, b) in itertools.product(*grid.values()):
+        if (ks, tn, freq, sup) not in variants:
+            variants[ks, tn, freq, sup] = _variant(racket, ks, tn, freq, sup)
+        combos.append((sp, variants[ks, tn, freq, sup], label, b, tn))
+    runs = [(variant, b, positions, sp, offset, swing) for sp, variant, _, b, _ in combos]
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         if executor is None:
@@ -195,7 +214,7 @@ def sweep(
             parts = (f.result() for f in [executor.submit(_impact_columns, *r) for r in runs])
         columns = {name: [] for name in COLUMNS}
         labels = {name: [] for name in varying}
-        for (sp, variant, label, _), part in zip(
+        for (sp, variant, label, _, tn), part in zip(
             combos, _progress(parts, len(combos), progress), strict=True
         ):
             for name in COLUMNS:
@@ -203,6 +222,7 @@ def sweep(
             values = {
                 "speed": sp,
                 "string_stiffness": variant.strings.stiffness,
+                "tension": tn,
                 "f1": variant.beam.modes.frequencies[0],
                 "support": variant.support,
                 "ball": label,
@@ -251,6 +271,7 @@ def compare(
     speed: float = 10.0,
     points: int = 101,
     swing: Swing | None = None,
+    tension: float | None = None,
 ) -> pd.DataFrame:
     """Impacts across the string bed of each racket: one sweep table, a ``racket`` column.
 
@@ -264,7 +285,12 @@ def compare(
         Impact points across each racket's string bed, in [2, 100000].
     swing : Swing, optional
         The same swing for every racket (as in :func:`sweep`).
+    tension : float, optional
+        Every racket strung at this tension [N], in [89, 356] (as in :func:`sweep`).
     """
+    if tension is not None:
+        tension = in_range("tension", tension, *TENSION_RANGE, "N")
+        rackets = {label: with_tension(r, tension) for label, r in rackets.items()}
     points = in_range("points", points, 2, 100_000)
     if points != int(points):
         raise ValueError(f"points must be a whole number, got {points:g}")

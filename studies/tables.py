@@ -18,6 +18,7 @@ def impact_table(result: Impact) -> pd.DataFrame:
 def impact_columns(result: Impact) -> dict:
     """The columns of :func:`impact_table` as a dict of 1-D arrays."""
     columns = {
+        "position_from_butt_cm": 100 * np.asarray(result.position_from_butt),
         "position_from_tip_m": result.position,
         "offset_m": 0.0 * result.position if result.offset is None else result.offset,
         "e": result.e,

@@ -15,6 +15,15 @@ stiffness of 3e4 N/m (the paper, Sec. VIII)."""
 _HEAD_CELLS = 24  # piecewise-constant cells resolving the hoop's mass along the head
 
 
+def with_tension(racket, tension_n: float):
+    """``racket`` strung at ``tension_n`` [N]: its string bed's (centre) stiffness from the
+    membrane model (:func:`string_bed_stiffness`) on its string bed's area."""
+    from dataclasses import replace
+
+    stiffness = string_bed_stiffness(tension_n, racket.strings.area)
+    return replace(racket, strings=replace(racket.strings, stiffness=stiffness))
+
+
 def string_bed_stiffness(tension_n: float, head_area_m2: float) -> float:
     """String-plane stiffness [N/m] from the string tension and the head area.
 

@@ -1,0 +1,186 @@
+"""What the hand feels: the handle's motion at the grip after an impact, and its spectrum.
+
+:func:`hand_feel` takes the contact force of an impact (the solver's history) and drives the
+racket's linear dynamics with it (the same real 2x2 blocks, each stepped exactly for a force
+varying linearly over a step, :meth:`racket.system.BlockSystem.step`), on past the moment
+the ball leaves, for ``duration``: the velocity and acceleration of the handle at the middle
+of the hand against time, their peaks and spectrum, the twist rate there for an impact off
+the axis, and, for a hand-held racket, the energy the hand's dashpot takes out of the frame
+(what reaches the hand) beside the frame's vibration energy left at the end.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from common.checks import in_range
+from racket.racket import Racket
+from racket.solver import impact
+
+
+@dataclass(frozen=True)
+class HandFeel:
+    """The handle's motion at the grip after one impact (built by :func:`hand_feel`).
+
+    Attributes
+    ----------
+    t : (T,) ndarray
+        Time since first contact [s].
+    force : (T,) ndarray
+        Contact force on the strings [N] (0 once the ball has left).
+    velocity, acceleration : (T,) ndarray
+        Velocity [m/s] and acceleration [m/s^2] of the handle at ``grip`` along the ball's
+        path (rigid-body motion included).
+    twist_rate : (T,) ndarray or None
+        The handle's angular velocity about the long axis [rad/s] (impacts off the axis).
+    frequencies, spectrum : ndarray
+        The acceleration's amplitude spectrum [m/s^2] (Hann window) against frequency [Hz].
+    peak_velocity, peak_acceleration : float
+        Largest magnitudes [m/s] and [m/s^2].
+    hand_energy : float
+        Energy the hand's dashpot took out of the racket over ``t`` [J] (0 for a free
+        racket): the racket's recoil and its vibration.
+    hand_vibration_energy : float
+        The part of it from the frame's vibration alone (the dashpot's dissipation of the
+        bending and torsion modes' velocities) [J]: the vibration that reached the hand.
+    vibration_energy_end : float
+        The energy left in the frame's bending and torsion modes at the end [J].
+    grip : float
+        Where the handle is read [m from the tip].
+    grip_from_butt : float
+        The same [m from the butt].
+    contact_time : float
+        [s].
+    """
+
+    t: np.ndarray
+    force: np.ndarray
+    velocity: np.ndarray
+    acceleration: np.ndarray
+    twist_rate: np.ndarray | None
+    frequencies: np.ndarray
+    spectrum: np.ndarray
+    peak_velocity: float
+    peak_acceleration: float
+    hand_energy: float
+    hand_vibration_energy: float
+    vibration_energy_end: float
+    grip: float
+    grip_from_butt: float
+    contact_time: float
+
+    def to_frame(self):
+        """The histories as a table (pandas), one row per time step."""
+        import pandas as pd
+
+        columns = {
+            "t_s": self.t,
+            "force_N": self.force,
+            "handle_velocity_m_s": self.velocity,
+            "handle_acceleration_m_s2": self.acceleration,
+        }
+        if self.twist_rate is not None:
+            columns["handle_twist_rate_rad_s"] = self.twist_rate
+        return pd.DataFrame(columns)
+
+
+def hand_feel(
+    racket: Racket,
+    ball,
+    position: float,
+    speed: float,
+    *,
+    offset: float | None = None,
+    duration: float = 0.05,
+) -> HandFeel:
+    """The handle's motion at the middle of the hand after one impact.
+
+    Parameters
+    ----------
+    racket : Racket
+        A free or hand-held racket (the hand's grip, :class:`racket.Hand`, says where the
+        handle is read: the middle of the grip).
+    ball : Ball
+    position : float
+        Impact point [m from the tip].
+    speed : float
+        Ball speed [m/s].
+    offset : float, optional
+        Impact point's distance from the long axis [m] (:func:`racket.impact`).
+    duration : float
+        How long after first contact to follow the racket [s], in [0.005, 1].
+
+    Returns
+    -------
+    HandFeel
+    """
+    if racket.support == "clamped-head":
+        raise ValueError("support must be 'free' or 'hand-held' for the feel at the hand")
+    duration = in_range("duration", duration, 0.005, 1.0, "s")
+    hit = impact(racket, ball, position, speed, offset=offset, histories=True)
+    dt = hit.t[1] - hit.t[0]
+    force = np.nan_to_num(np.atleast_1d(hit.force), nan=0.0)
+    steps = int(np.ceil(duration / dt)) + 1
+    force = np.concatenate([force, np.zeros(max(steps - force.size, 0))])[:steps]
+    y = None if offset is None else np.atleast_1d(float(offset))
+    system, phi, face = racket.point_dynamics(position, y)
+    grip = racket.beam.length - 0.5 * racket.hand.grip_length
+    _, phi_grip, _ = racket.point_dynamics(grip, None if y is None else np.zeros(1))
+    n = system.count
+    trans, g0, g1 = system.step(dt)
+    unit = system.inputs(phi)[0]  # (nb, 2): a unit force at the impact point
+    states = np.empty((steps, *unit.shape))
+    s = np.zeros(unit.shape)
+    states[0] = s
+    for k in range(1, steps):  # exact for a force linear over each step
+        s = (
+            np.einsum("bij,bj->bi", trans, s)
+            + np.einsum("bij,bj->bi", g0, unit) * force[k - 1]
+            + np.einsum("bij,bj->bi", g1, unit) * force[k]
+        )
+        states[k] = s
+    q, qd = system.modal_state(states)
+    qdd = -q @ system.stiffness.T - qd @ system.damping.T + force[:, None] * phi[0]
+    velocity = qd @ phi_grip[0]
+    acceleration = qdd @ phi_grip[0]
+    twist = None
+    if face:
+        nb = min(n, racket.beam.modes.count)
+        twist = qd[:, nb:] @ racket.beam.roll_modes.twist(grip)[:, 0]
+    # The hand's dashpot: the system's damping less the modes' own (2 zeta omega).
+    modal = [racket.beam.modes] + ([racket.beam.roll_modes] if face else [])
+    own = np.concatenate([2.0 * m.damping * m.omega for m in modal])[:n]
+    c_hand = system.damping - np.diag(own)
+    elastic = np.setdiff1d(np.arange(n), system.rigid)  # bending and torsion coordinates
+
+    def absorbed(v, c):
+        power = np.einsum("ti,ij,tj->t", v, c, v)
+        return float(np.sum(0.5 * (power[1:] + power[:-1])) * dt)
+
+    hand_energy = absorbed(qd, c_hand)
+    hand_vibration = absorbed(qd[:, elastic], c_hand[np.ix_(elastic, elastic)])
+    omega = np.concatenate([m.omega for m in modal])[:n]
+    vibration_end = 0.5 * float(
+        np.sum(qd[-1, elastic] ** 2 + (omega[elastic] * q[-1, elastic]) ** 2)
+    )
+    window = np.hanning(steps)
+    spectrum = 2.0 * np.abs(np.fft.rfft(acceleration * window)) / window.sum()
+    return HandFeel(
+        t=np.arange(steps) * dt,
+        force=force,
+        velocity=velocity,
+        acceleration=acceleration,
+        twist_rate=twist,
+        frequencies=np.fft.rfftfreq(steps, dt),
+        spectrum=spectrum,
+        peak_velocity=float(np.abs(velocity).max()),
+        peak_acceleration=float(np.abs(acceleration).max()),
+        hand_energy=hand_energy,
+        hand_vibration_energy=hand_vibration,
+        vibration_energy_end=vibration_end,
+        grip=grip,
+        grip_from_butt=racket.beam.length - grip,
+        contact_time=float(hit.contact_time),
+    )
