@@ -497,6 +497,17 @@ def cmd_specs(args) -> int:
     return 0
 
 
+def cmd_app(args) -> int:
+    port = int(_count("--port", args.port, 1024, 65535))
+    try:
+        from studies.app import run
+    except ImportError:
+        raise ValueError("the page needs Shiny: pip install 'racket-impact[app]'") from None
+    print(f"racket-impact: the page is at http://{args.host}:{port} (Ctrl-C stops it)")
+    run(args.host, port)
+    return 0
+
+
 def cmd_rerun(args) -> int:
     from studies.provenance import rerun_argv, temporary_directory
 
@@ -909,6 +920,11 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--out", metavar="FILE", help="effective-mass table: .csv, .json, .parquet")
     p.add_argument("--plot", metavar="FILE", help="mode shapes (.png, .svg, .pdf)")
     p.set_defaults(func=cmd_specs)
+
+    p = sub.add_parser("app", help="the interactive page, served on this machine")
+    p.add_argument("--host", default="127.0.0.1", help="address to serve on (default 127.0.0.1)")
+    p.add_argument("--port", type=int, default=8000, help="port (default 8000)")
+    p.set_defaults(func=cmd_app)
 
     p = sub.add_parser("rerun", help="make a table again from its sidecar (*.meta.json)")
     p.add_argument("sidecar", metavar="FILE", help="a table's sidecar, or the table itself")

@@ -1,0 +1,139 @@
+"""What the interactive page shows, computed apart from the page (so that it is tested
+without a browser): a racket (a catalogue preset or a spec sheet, lead tape by clock
+position, a tension), a ball and a swing in; e, e_A and exit speed along the racket, the face
+map, the sweet spots and the serve out.
+"""
+
+from __future__ import annotations
+
+import warnings
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from common.units import LB, MPH
+from racket import CATALOG, Swing, from_specs, impact
+from racket.specs.strings import with_tension
+from studies.config import BALLS
+from studies.landmarks import sweet_spots
+from studies.maps import face_map
+from studies.serve import serve_table
+from studies.tables import impact_table
+
+MY_SHEET = "my spec sheet"
+"""The racket choice that fits the page's spec-sheet fields."""
+
+
+@dataclass(frozen=True)
+class PageInputs:
+    """The page's controls, in the units a player types.
+
+    Parameters
+    ----------
+    racket : str
+        A catalogue name (:data:`racket.CATALOG`) or :data:`MY_SHEET`.
+    mass_g, balance_cm, swingweight_kgcm2, head_size_in2, f1_hz : float
+        The spec sheet used with :data:`MY_SHEET` [g, cm from the butt, kg cm^2, in^2, Hz].
+    lead_g : float
+        Lead tape per side [g] (0 for none).
+    lead_at : str
+        Its clock position ("12", "3 and 9", ...).
+    ball : str
+        A ball preset (:data:`studies.config.BALLS`).
+    tension_lb : float
+        String tension [lb].
+    ball_speed : float
+        Incoming ball speed [m/s] (racket at rest, and the groundstroke).
+    swing_mph : float
+        Racket-head speed of the swing [mph] (the serve and the groundstroke).
+    pivot_cm_from_butt : float
+        The swing's pivot [cm from the butt, negative beyond it].
+    """
+
+    racket: str = "pure-drive-2021"
+    mass_g: float = 300.0
+    balance_cm: float = 33.0
+    swingweight_kgcm2: float = 315.0
+    head_size_in2: float = 100.0
+    f1_hz: float = 150.0
+    lead_g: float = 0.0
+    lead_at: str = "3 and 9"
+    ball: str = "tennis"
+    tension_lb: float = 55.0
+    ball_speed: float = 16.5
+    swing_mph: float = 60.0
+    pivot_cm_from_butt: float = -5.0
+
+
+@dataclass(frozen=True)
+class PageResults:
+    """What the page shows (built by :func:`page_results`)."""
+
+    racket: object
+    along: object
+    face: object
+    spots: object
+    serve: object
+    summary: dict
+    warnings: tuple = ()
+
+
+def page_racket(inputs: PageInputs):
+    """The racket the controls describe."""
+    if inputs.racket == MY_SHEET:
+        racket = from_specs(
+            mass_kg=inputs.mass_g / 1e3,
+            balance_cm=inputs.balance_cm,
+            swingweight_kgcm2=inputs.swingweight_kgcm2,
+            head_size_in2=inputs.head_size_in2,
+            f1_hz=inputs.f1_hz,
+            tension_lb=inputs.tension_lb,
+        )
+    elif inputs.racket in CATALOG:
+        racket = with_tension(CATALOG[inputs.racket].racket(), inputs.tension_lb * LB)
+    else:
+        raise ValueError(f"racket must be one of {[*CATALOG, MY_SHEET]}, got {inputs.racket!r}")
+    if inputs.lead_g > 0:
+        racket = racket.with_lead_tape(inputs.lead_g / 1e3, inputs.lead_at)
+    return racket
+
+
+def page_results(inputs: PageInputs, points: int = 61) -> PageResults:
+    """Everything the page shows for ``inputs`` (the warnings on the way, e.g. a ball
+    squashed beyond its radius, collected for the page: one of each)."""
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        results = _page_results(inputs, points)
+    seen = dict.fromkeys(str(w.message) for w in caught)
+    return replace(results, warnings=tuple(seen))
+
+
+def _page_results(inputs: PageInputs, points: int) -> PageResults:
+    if inputs.ball not in BALLS:
+        raise ValueError(f"ball must be one of {list(BALLS)}, got {inputs.ball!r}")
+    racket, ball = page_racket(inputs), BALLS[inputs.ball]()
+    swing = Swing(inputs.swing_mph * MPH, inputs.pivot_cm_from_butt / 100)
+    x = np.linspace(*racket.strings.extent, points)
+    along = impact_table(impact(racket, ball, x, inputs.ball_speed))
+    hit = impact(racket, ball, x, inputs.ball_speed, **swing.impact_kwargs(racket, x))
+    along["exit_speed_swung_mph"] = hit.ball_rebound / MPH
+    face = face_map(racket, ball, inputs.ball_speed)
+    spots = sweet_spots(racket, ball, inputs.ball_speed, swing)
+    centre = racket.strings.center
+    serve = serve_table(racket, ball, [centre, centre - 0.05], swing.head_speed,
+                        swing.pivot_from_butt, zero_cor=False)  # fmt: skip
+    best = int(np.argmax(along["e_A"]))
+    summary = {
+        "mass_g": 1e3 * racket.beam.mass,
+        "balance_cm": 100 * racket.beam.balance,
+        "swingweight_kgcm2": racket.beam.swingweight_kgcm2,
+        "twistweight_kgcm2": racket.beam.twistweight_kgcm2,
+        "e_A_centre": face.e_A_centre,
+        "e_A_3_oclock": face.e_A_side,
+        "largest_e_A": float(along["e_A"].iloc[best]),
+        "largest_e_A_from_butt_cm": float(along["position_from_butt_cm"].iloc[best]),
+        "sweet_area_cm2": face.sweet_area_cm2,
+        "serve_centre_mph": float(serve["serve_simulated_mph"].iloc[0]),
+        "serve_tipward_mph": float(serve["serve_simulated_mph"].iloc[1]),
+    }
+    return PageResults(racket, along, face, spots, serve, summary)
