@@ -26,6 +26,7 @@ from ball.laws import (
     SineLaw,
 )
 from ball.series import series_force
+from common.version import __version__
 
 __all__ = [
     "WALL",
@@ -39,6 +40,7 @@ __all__ = [
     "PowerLawHysteresis",
     "SineLaw",
     "Wall",
+    "__version__",
     "collide",
     "energy_loss_fraction",
     "energy_loss_fraction_lab",

@@ -62,7 +62,17 @@ WALL = Wall()
 def warn_if_squashed(ball: Ball, compression, stacklevel: int = 3) -> None:
     """Warn once (UserWarning) if any ``compression`` [m] of ``ball`` exceeds its radius (its
     force law is then used far beyond the deformations it describes), or the largest
-    compression its law was calibrated to (``law.calibrated_to``, where it has one)."""
+    compression its law was calibrated to (``law.calibrated_to``, where it has one).
+
+    Parameters
+    ----------
+    ball : Ball
+        The ball whose radius and force law set the limits.
+    compression : float or array_like
+        Ball compression(s) to check [m]; only the largest matters.
+    stacklevel : int, optional
+        Passed to :func:`warnings.warn`, so the warning points at the caller's caller.
+    """
     largest = float(np.max(compression))
     if ball.radius is not None and largest > ball.radius:
         warnings.warn(

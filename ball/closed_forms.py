@@ -14,7 +14,13 @@ from common.checks import in_range, non_negative, positive
 
 
 def energy_loss_fraction(e: float) -> float:
-    """Fractional kinetic-energy loss in the centre-of-mass frame, f = 1 - e**2 (Eq. 4)."""
+    """Fractional kinetic-energy loss in the centre-of-mass frame, f = 1 - e**2 (Eq. 4).
+
+    Parameters
+    ----------
+    e : float
+        Coefficient of restitution, 0 <= e <= 1.
+    """
     e = in_range("e", e, 0.0, 1.0)
     return 1.0 - e**2
 
@@ -41,6 +47,13 @@ def unhappy_cor(k0: float, k2: float) -> float:
     e = (pi k0 - k2) / (pi k0 + k2).
 
     Negative for k2 > pi k0, where the analytic solution no longer applies.
+
+    Parameters
+    ----------
+    k0 : float
+        The unhappy ball's Fo / Xo [N/m], > 0.
+    k2 : float
+        Stiffness of the happy ball [N/m], > 0.
     """
     k0 = positive("k0", k0, "N/m")
     k2 = positive("k2", k2, "N/m")
@@ -50,7 +63,29 @@ def unhappy_cor(k0: float, k2: float) -> float:
 @dataclass(frozen=True)
 class UnhappySolution:
     """Eqs. 12-15 evaluated at times ``t`` (arrays, SI): ball positions x and y, the unhappy
-    ball's compression X, the happy ball's Y, the force F, and the constants omega, Xo, Fo."""
+    ball's compression X, the happy ball's Y, the force F, and the constants omega, Xo, Fo.
+
+    Parameters
+    ----------
+    t : ndarray
+        Times since first touch [s].
+    x : ndarray
+        Displacement of the unhappy ball's centre, x of Eq. 14 [m].
+    y : ndarray
+        Displacement of the happy ball's centre, y of Eq. 15 [m].
+    compression_unhappy : ndarray
+        Compression X of the unhappy ball (Eq. 12) [m].
+    compression_happy : ndarray
+        Compression Y of the happy ball [m].
+    force : ndarray
+        Contact force F [N].
+    omega : float
+        Angular frequency of Eq. 13 [rad/s].
+    x_o : float
+        Largest compression Xo of the unhappy ball [m].
+    f_o : float
+        Largest force Fo = k0 Xo [N].
+    """
 
     t: np.ndarray
     x: np.ndarray
@@ -71,6 +106,21 @@ def unhappy_solution(t, m1: float, m2: float, k0: float, k2: float, v1: float) -
     Eq. 12 the unhappy ball compresses at the constant rate dX/dt = Xo omega / pi, and
     dX/dt + dY/dt = v1 at first touch with Y = Fo sin(omega t) / k2, so
     Xo = v1 / (omega (1/pi + k0/k2)) and Fo = k0 Xo.
+
+    Parameters
+    ----------
+    t : float or array_like
+        Times since first touch [s].
+    m1 : float
+        Mass of the unhappy ball [kg], > 0.
+    m2 : float
+        Mass of the happy ball [kg], > 0.
+    k0 : float
+        The unhappy ball's Fo / Xo [N/m], > 0.
+    k2 : float
+        Stiffness of the happy ball [N/m], > 0.
+    v1 : float
+        Speed of the unhappy ball at first touch [m/s], > 0.
     """
     m1, m2 = positive("m1", m1, "kg"), positive("m2", m2, "kg")
     k0, k2 = positive("k0", k0, "N/m"), positive("k2", k2, "N/m")
@@ -97,7 +147,19 @@ def unhappy_solution(t, m1: float, m2: float, k0: float, k2: float, v1: float) -
 
 def serve_speed(e: float, m1: float, m2: float, v2: float) -> float:
     """Ball speed after a racket of effective mass ``m2`` at ``v2`` hits a ball (``m1``) at
-    rest (Eq. 22): V1 = (1 + e) m2 v2 / (m1 + m2).  Masses [kg], speeds [m/s]."""
+    rest (Eq. 22): V1 = (1 + e) m2 v2 / (m1 + m2).  Masses [kg], speeds [m/s].
+
+    Parameters
+    ----------
+    e : float
+        Coefficient of restitution, 0 <= e <= 1.
+    m1 : float
+        Ball mass [kg], > 0.
+    m2 : float
+        Effective mass of the racket at the impact point [kg], > 0.
+    v2 : float
+        Racket speed before the impact [m/s], >= 0.
+    """
     e = in_range("e", e, 0.0, 1.0)
     m1, m2 = positive("m1", m1, "kg"), positive("m2", m2, "kg")
     v2 = non_negative("v2", v2, "m/s")
@@ -111,6 +173,19 @@ def energy_loss_fraction_lab(e: float, m1: float, m2: float, v1: float, v2: floa
 
     With e = 0 it is the fraction turned into elastic energy at the moment of closest
     approach.  Speeds are magnitudes [m/s], at least one > 0.
+
+    Parameters
+    ----------
+    e : float
+        Coefficient of restitution, 0 <= e <= 1.
+    m1 : float
+        Ball mass [kg], > 0.
+    m2 : float
+        Effective mass of the racket [kg], > 0.
+    v1 : float
+        Ball speed before the impact [m/s], >= 0.
+    v2 : float
+        Racket speed before the impact [m/s], >= 0.
     """
     e = in_range("e", e, 0.0, 1.0)
     m1, m2 = positive("m1", m1, "kg"), positive("m2", m2, "kg")

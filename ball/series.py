@@ -22,6 +22,15 @@ def series_compression(laws: Sequence[MonotoneLaw], f, f_max):
     """Total compression [m] of ``laws`` in series at force ``f`` [N], largest force ``f_max`` [N].
 
     ``f`` above ``f_max`` is on the loading curve; below it, on the unloading curves.
+
+    Parameters
+    ----------
+    laws : sequence of MonotoneLaw
+        The force laws in series.
+    f : float or array_like
+        Force they carry [N], >= 0.
+    f_max : float or array_like
+        Largest force reached so far [N]; broadcasts with ``f``.
     """
     f = np.asarray(f, dtype=float)
     branch_max = np.maximum(f, f_max)
@@ -29,7 +38,17 @@ def series_compression(laws: Sequence[MonotoneLaw], f, f_max):
 
 
 def series_compliance(laws: Sequence[MonotoneLaw], f, f_max):
-    """d(total compression)/d(force) [m/N] of ``laws`` in series at ``f``, ``f_max``."""
+    """d(total compression)/d(force) [m/N] of ``laws`` in series at ``f``, ``f_max``.
+
+    Parameters
+    ----------
+    laws : sequence of MonotoneLaw
+        The force laws in series.
+    f : float or array_like
+        Force they carry [N], >= 0.
+    f_max : float or array_like
+        Largest force reached so far [N]; broadcasts with ``f``.
+    """
     f = np.asarray(f, dtype=float)
     branch_max = np.maximum(f, f_max)
     return sum(law.compliance(f, branch_max) for law in laws)
@@ -40,6 +59,17 @@ def series_force(laws: Sequence[MonotoneLaw], z, f_max, rtol: float = 1e-14):
 
     Returns 0 where ``z`` is at or below the compression left at zero force (the contact
     is open).  ``z`` and ``f_max`` broadcast.
+
+    Parameters
+    ----------
+    laws : sequence of MonotoneLaw
+        The force laws in series.
+    z : float or array_like
+        Total compression [m].
+    f_max : float or array_like
+        Largest force reached so far [N].
+    rtol : float, optional
+        Relative tolerance on the force at which Newton's method stops.
     """
     if np.ndim(z) == 0 and np.ndim(f_max) == 0:
         return _scalar_force(laws, float(z), float(f_max), rtol)

@@ -6,5 +6,13 @@ Public API: :class:`Beam` (profile, mass properties, effective mass of Eq. 20, m
 
 from beam.beam import DEFAULT_DAMPING, DEFAULT_MODES, SWINGWEIGHT_AXIS, Beam
 from beam.modes import Modes
+from common.version import __version__
 
-__all__ = ["DEFAULT_DAMPING", "DEFAULT_MODES", "SWINGWEIGHT_AXIS", "Beam", "Modes"]
+__all__ = [
+    "DEFAULT_DAMPING",
+    "DEFAULT_MODES",
+    "SWINGWEIGHT_AXIS",
+    "Beam",
+    "Modes",
+    "__version__",
+]

@@ -18,7 +18,15 @@ import numpy as np
 
 
 def hermite(s: np.ndarray, length: np.ndarray) -> np.ndarray:
-    """Cubic Hermite shape functions at local coordinate s in [0, 1]: array (4, len(s))."""
+    """Cubic Hermite shape functions at local coordinate s in [0, 1]: array (4, len(s)).
+
+    Parameters
+    ----------
+    s : ndarray
+        Local coordinate along each element, 0 at its start and 1 at its end.
+    length : ndarray
+        Length of the element at each ``s`` [m] (scales the slope functions).
+    """
     return np.array(
         [
             1 - 3 * s**2 + 2 * s**3,
@@ -31,7 +39,15 @@ def hermite(s: np.ndarray, length: np.ndarray) -> np.ndarray:
 
 def element_shapes(nodes: np.ndarray, x):
     """The element holding each x [m from the tip] and its Hermite shape functions there:
-    (element index (len(x),), values (4, len(x)))."""
+    (element index (len(x),), values (4, len(x))).
+
+    Parameters
+    ----------
+    nodes : ndarray
+        Mesh nodes [m from the tip], increasing.
+    x : float or array_like
+        Positions to evaluate at [m from the tip].
+    """
     x = np.asarray(x, dtype=float)
     lengths = np.diff(nodes)
     e = np.clip(np.searchsorted(nodes, x, side="right") - 1, 0, lengths.size - 1)
@@ -43,7 +59,17 @@ def mesh(stations: np.ndarray, extra_points: np.ndarray, elements: int) -> np.nd
 
     Points closer than 1e-9 L to the one before are merged with it: an element of rounding
     length would make the stiffness matrix singular (a point mass placed at a station
-    computed another way lands there)."""
+    computed another way lands there).
+
+    Parameters
+    ----------
+    stations : ndarray
+        Segment boundaries [m from the tip].
+    extra_points : ndarray
+        Further positions that must be nodes, e.g. point masses [m from the tip].
+    elements : int
+        About how many elements along the beam.
+    """
     knots = np.unique(np.concatenate([stations, extra_points]))
     tol = 1e-9 * (stations[-1] - stations[0])
     keep = np.r_[True, np.diff(knots) > tol]
@@ -60,7 +86,17 @@ def mesh(stations: np.ndarray, extra_points: np.ndarray, elements: int) -> np.nd
 
 
 def element_properties(stations, mass_per_length, bending_stiffness, nodes):
-    """Length, mass per length and EI of each element between ``nodes``."""
+    """Length, mass per length and EI of each element between ``nodes``.
+
+    Parameters
+    ----------
+    stations : array (S + 1,)
+        Segment boundaries [m from the tip].
+    mass_per_length, bending_stiffness : array (S,)
+        Per segment [kg/m] and [N m^2].
+    nodes : ndarray
+        Mesh nodes [m from the tip].
+    """
     lengths = np.diff(nodes)
     mid = 0.5 * (nodes[:-1] + nodes[1:])
     seg = np.clip(np.searchsorted(stations, mid) - 1, 0, len(mass_per_length) - 1)
@@ -125,7 +161,21 @@ def bending_modes(
     stations, mass_per_length, bending_stiffness, point_masses, n_modes: int, elements: int
 ):
     """Angular frequencies [rad/s] and a shape evaluator of the first ``n_modes`` bending modes
-    (arguments as in :func:`assemble`)."""
+    (arguments as in :func:`assemble`).
+
+    Parameters
+    ----------
+    stations : array (S + 1,)
+        Segment boundaries [m from the tip].
+    mass_per_length, bending_stiffness : array (S,)
+        Per segment [kg/m] and [N m^2].
+    point_masses : array (P, 2)
+        Rows (position [m from the tip], mass [kg]).
+    n_modes : int
+        Bending modes to keep.
+    elements : int
+        About how many elements along the beam.
+    """
     from scipy.linalg import eigh  # scipy loads on first use (import time)
 
     nodes, k, m = assemble(stations, mass_per_length, bending_stiffness, point_masses, elements)
@@ -187,6 +237,17 @@ def static_flexibility(stations, mass_per_length, bending_stiffness, point_masse
 
     K_c^-1 the propped beam's flexibility (A is the same for any statically determinate
     props).  Arguments as in :func:`assemble`.
+
+    Parameters
+    ----------
+    stations : array (S + 1,)
+        Segment boundaries [m from the tip].
+    mass_per_length, bending_stiffness : array (S,)
+        Per segment [kg/m] and [N m^2].
+    point_masses : array (P, 2)
+        Rows (position [m from the tip], mass [kg]).
+    elements : int
+        About how many elements along the beam.
     """
     nodes, k, m = assemble(stations, mass_per_length, bending_stiffness, point_masses, elements)
     n_dof = k.shape[0]

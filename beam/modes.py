@@ -27,6 +27,9 @@ class Modes:
         Total mass [kg], centre of mass [m from the tip], moment of inertia about it [kg m^2].
     length : float
         Beam length [m].
+    bending_shapes : callable
+        Maps positions x [m from the tip] to the bending-mode shapes there, array
+        (count - 2, len(x)) [1/sqrt(kg)].
     """
 
     omega: np.ndarray
@@ -48,7 +51,13 @@ class Modes:
         return self.omega[2:] / (2.0 * np.pi)
 
     def shape(self, x) -> np.ndarray:
-        """Mode shapes at ``x`` [m from the tip]: array (count, len(x)) [1/sqrt(kg)]."""
+        """Mode shapes at ``x`` [m from the tip]: array (count, len(x)) [1/sqrt(kg)].
+
+        Parameters
+        ----------
+        x : float or array_like
+            Positions [m from the tip].
+        """
         x = np.atleast_1d(np.asarray(x, dtype=float))
         rigid = np.vstack(
             [
@@ -59,7 +68,13 @@ class Modes:
         return np.vstack([rigid, self.bending_shapes(x)])
 
     def nodes(self, mode: int = 1) -> np.ndarray:
-        """Zeros [m from the tip] of bending mode ``mode`` (1 = fundamental) on the beam."""
+        """Zeros [m from the tip] of bending mode ``mode`` (1 = fundamental) on the beam.
+
+        Parameters
+        ----------
+        mode : int, optional
+            The bending mode, 1 (the fundamental) to ``count - 2``.
+        """
         from scipy.optimize import brentq  # scipy loads on first use (import time)
 
         if not 1 <= mode <= self.count - 2:

@@ -25,6 +25,11 @@ def free_free_roots(n: int) -> np.ndarray:
     k = 1, 2, ... (and is well scaled there, unlike cos cosh - 1), from that start; it
     converges to round-off in a few iterations (numpy only: no scipy import on the way
     to a uniform beam's modes).
+
+    Parameters
+    ----------
+    n : int
+        Number of roots wanted.
     """
     x = (np.arange(1, n + 1) + 0.5) * np.pi
     for _ in range(50):
@@ -39,6 +44,13 @@ def shapes(beta_l: np.ndarray, xi) -> np.ndarray:
     """Normalised shapes Phi_n at fractional positions ``xi`` = x / L (from either end).
 
     Returns an array of shape (len(beta_l), len(xi)) with (1/L) int Phi**2 dx = 1.
+
+    Parameters
+    ----------
+    beta_l : ndarray
+        Roots bL of the modes wanted (see :func:`free_free_roots`).
+    xi : float or array_like
+        Fractional positions x / L along the beam, in [0, 1].
     """
     bl = np.asarray(beta_l, dtype=float)[:, None]
     u = bl * np.atleast_1d(np.asarray(xi, dtype=float))[None, :]

@@ -24,7 +24,13 @@ def _unit(unit: str) -> str:
 
 
 def shown(value) -> str:
-    """``value`` as a message quotes it: a number plainly (0.325, not np.float64(0.325))."""
+    """``value`` as a message quotes it: a number plainly (0.325, not np.float64(0.325)).
+
+    Parameters
+    ----------
+    value : object
+        The value to quote.
+    """
     if isinstance(value, bool | np.bool_):
         return repr(bool(value))
     if isinstance(value, numbers.Integral):
@@ -36,7 +42,17 @@ def shown(value) -> str:
 
 
 def finite(name: str, value, unit: str = "") -> float:
-    """Return ``value`` as a float; raise ``ValueError`` if it is not a finite real number."""
+    """Return ``value`` as a float; raise ``ValueError`` if it is not a finite real number.
+
+    Parameters
+    ----------
+    name : str
+        The argument's name, as the message quotes it.
+    value : object
+        The value to check, in ``unit``.
+    unit : str, optional
+        Its unit, as the message quotes it (e.g. ``"m/s"``); "" for none.
+    """
     if isinstance(value, bool | np.bool_ | str):
         raise ValueError(f"{name} must be a finite number{_unit(unit)}, got {shown(value)}")
     try:
@@ -51,7 +67,17 @@ def finite(name: str, value, unit: str = "") -> float:
 
 
 def positive(name: str, value, unit: str = "") -> float:
-    """Return ``value`` as a float; raise ``ValueError`` unless it is finite and > 0."""
+    """Return ``value`` as a float; raise ``ValueError`` unless it is finite and > 0.
+
+    Parameters
+    ----------
+    name : str
+        The argument's name, as the message quotes it.
+    value : object
+        The value to check, in ``unit``.
+    unit : str, optional
+        Its unit, as the message quotes it (e.g. ``"m/s"``); "" for none.
+    """
     x = finite(name, value, unit)
     if x <= 0.0:
         raise ValueError(f"{name} must be > 0{_unit(unit)}, got {shown(value)}")
@@ -59,7 +85,17 @@ def positive(name: str, value, unit: str = "") -> float:
 
 
 def non_negative(name: str, value, unit: str = "") -> float:
-    """Return ``value`` as a float; raise ``ValueError`` unless it is finite and >= 0."""
+    """Return ``value`` as a float; raise ``ValueError`` unless it is finite and >= 0.
+
+    Parameters
+    ----------
+    name : str
+        The argument's name, as the message quotes it.
+    value : object
+        The value to check, in ``unit``.
+    unit : str, optional
+        Its unit, as the message quotes it (e.g. ``"m/s"``); "" for none.
+    """
     x = finite(name, value, unit)
     if x < 0.0:
         raise ValueError(f"{name} must be >= 0{_unit(unit)}, got {shown(value)}")
@@ -68,7 +104,21 @@ def non_negative(name: str, value, unit: str = "") -> float:
 
 def in_range(name: str, value, low: float, high: float, unit: str = "", hint: str = "") -> float:
     """Return ``value`` as a float; raise ``ValueError`` unless ``low <= value <= high``
-    (``hint`` is appended to the message, e.g. a likely cause)."""
+    (``hint`` is appended to the message, e.g. a likely cause).
+
+    Parameters
+    ----------
+    name : str
+        The argument's name, as the message quotes it.
+    value : object
+        The value to check, in ``unit``.
+    low, high : float
+        The bounds, inclusive, in ``unit``.
+    unit : str, optional
+        Its unit, as the message quotes it (e.g. ``"m/s"``); "" for none.
+    hint : str, optional
+        Appended to the message, e.g. a likely cause.
+    """
     x = finite(name, value, unit)
     if not low <= x <= high:
         raise ValueError(
@@ -78,7 +128,17 @@ def in_range(name: str, value, low: float, high: float, unit: str = "", hint: st
 
 
 def speed(name: str, value, allow_zero: bool = False) -> float:
-    """A speed [m/s] in :data:`SPEED_RANGE` (or 0 if ``allow_zero``), as a float."""
+    """A speed [m/s] in :data:`SPEED_RANGE` (or 0 if ``allow_zero``), as a float.
+
+    Parameters
+    ----------
+    name : str
+        The argument's name, as the message quotes it.
+    value : object
+        The speed [m/s].
+    allow_zero : bool, optional
+        Accept 0 m/s too.
+    """
     x = finite(name, value, "m/s")
     if allow_zero and x == 0.0:
         return x
@@ -86,7 +146,17 @@ def speed(name: str, value, allow_zero: bool = False) -> float:
 
 
 def finite_array(name: str, values, unit: str = "") -> np.ndarray:
-    """Return ``values`` as a float array; raise ``ValueError`` on NaN, inf or non-numbers."""
+    """Return ``values`` as a float array; raise ``ValueError`` on NaN, inf or non-numbers.
+
+    Parameters
+    ----------
+    name : str
+        The argument's name, as the message quotes it.
+    values : array_like
+        The values to check, in ``unit``.
+    unit : str, optional
+        Its unit, as the message quotes it (e.g. ``"m/s"``); "" for none.
+    """
     try:
         a = np.asarray(values, dtype=float)
     except (TypeError, ValueError, OverflowError):

@@ -7,6 +7,7 @@ Public API: :class:`Racket`, :class:`StringBed`, :class:`Hand`, :func:`impact` a
 test (:func:`flex_test_stiffness`).
 """
 
+from common.version import __version__
 from racket.presets import TENNIS_BALL_MASS, TENNIS_BALL_RADIUS, paper_racket, tennis_ball
 from racket.racket import SUPPORTS, Hand, Racket, StringBed
 from racket.solver import Impact, impact
@@ -25,6 +26,7 @@ __all__ = [
     "Racket",
     "StringBed",
     "Swing",
+    "__version__",
     "flex_test_stiffness",
     "from_specs",
     "impact",

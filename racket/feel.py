@@ -43,10 +43,12 @@ class HandFeel:
         Energy the hand's dashpot took out of the racket over ``t`` [J] (0 for a free
         racket): the racket's recoil and its vibration.
     hand_vibration_energy : float
-        The part of it from the frame's vibration alone (the dashpot's dissipation of the
-        bending and torsion modes' velocities) [J]: the vibration that reached the hand.
+        The part of it from the frame's vibration alone: the dashpot's dissipation of the
+        bending and torsion coordinates' velocities, the cross terms with the rigid-body
+        motion left out (so an estimate, not an exact share) [J].
     vibration_energy_end : float
-        The energy left in the frame's bending and torsion modes at the end [J].
+        The energy left at the end in the frame's own bending and torsion modes (their
+        free-free modal coordinates and frequencies; the hand's spring excluded) [J].
     grip : float
         Where the handle is read [m from the tip].
     grip_from_butt : float
@@ -120,6 +122,11 @@ def hand_feel(
         raise ValueError("support must be 'free' or 'hand-held' for the feel at the hand")
     duration = in_range("duration", duration, 0.005, 1.0, "s")
     hit = impact(racket, ball, position, speed, offset=offset, histories=True)
+    if duration <= hit.contact_time:
+        raise ValueError(
+            f"duration must be longer than the contact, {1e3 * hit.contact_time:.3g} ms here, "
+            f"got {1e3 * duration:g} ms"
+        )
     dt = hit.t[1] - hit.t[0]
     force = np.nan_to_num(np.atleast_1d(hit.force), nan=0.0)
     steps = int(np.ceil(duration / dt)) + 1

@@ -43,7 +43,13 @@ class Hoop:
 
     def at_angle(self, angle) -> tuple[np.ndarray, np.ndarray]:
         """Points (x [m from the tip], y [m]) of the hoop seen from its centre at the polar
-        ``angle`` [rad], measured clockwise from 12 o'clock (the tip) on the face."""
+        ``angle`` [rad], measured clockwise from 12 o'clock (the tip) on the face.
+
+        Parameters
+        ----------
+        angle : float or array_like
+            Polar angle [rad], clockwise from 12 o'clock (the tip).
+        """
         angle = np.asarray(angle, dtype=float)
         a, b = self.center, self.half_width
         r = a * b / np.hypot(b * np.cos(angle), a * np.sin(angle))
@@ -57,6 +63,11 @@ class Hoop:
         mirrored pair ``"H and K"`` with H + K = 12 (``"3 and 9"``, ``"2 and 10"``, ...); the
         hours are the directions of a clock face laid over the head, from its centre.  One
         side alone (``"3"``) is refused: the model is symmetric about the long axis.
+
+        Parameters
+        ----------
+        at : str
+            The clock position: ``"12"``, ``"6"`` or a mirrored pair such as ``"3 and 9"``.
         """
         match = _CLOCK.match(at) if isinstance(at, str) else None
         hours = [int(h) for h in match.groups() if h is not None] if match else []
@@ -76,6 +87,14 @@ class Hoop:
 
 def ellipse_axes(area: float, aspect: float = HEAD_ASPECT) -> tuple[float, float]:
     """Semi-axes (along, across) [m] of an ellipse of ``area`` [m^2] and length / width
-    ``aspect``."""
+    ``aspect``.
+
+    Parameters
+    ----------
+    area : float
+        Area of the ellipse [m^2].
+    aspect : float, optional
+        Length / width of the ellipse.
+    """
     along = np.sqrt(area * aspect / np.pi)
     return float(along), float(along / aspect)

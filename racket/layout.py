@@ -19,13 +19,20 @@ class Frame(NamedTuple):
     """The racket's linear dynamics in real 2x2 blocks (:mod:`racket.system`), the same for
     every impact point.
 
-    blocks : (nb, 2, 2) the blocks: s' = blocks s (+ the force's input).
-    trans, g0, g1 : (nb, 2, 2) exact step of each block, s_next = trans s + g0 u_start +
-        g1 u_end, for a block input u varying linearly over the step.
-    metric : (nb, 2) sqrt(metric . s**2) bounds a block's future amplitude.
-    damp_blocks, damp_rows : (R, K) int, (R, K, 2) dissipated power = sum_r (sum_k
-        damp_rows[r, k] . s[damp_blocks[r, k]])**2, the K blocks of each row that can be
-        non-zero (one for a free racket's diagonal damping).
+    Attributes
+    ----------
+    blocks : ndarray (nb, 2, 2)
+        The blocks: s' = blocks s (+ the force's input) [1/s].
+    trans, g0, g1 : ndarray (nb, 2, 2)
+        Exact step of each block, s_next = trans s + g0 u_start + g1 u_end, for a block
+        input u varying linearly over the step.
+    metric : ndarray (nb, 2)
+        sqrt(metric . s**2) bounds a block's future amplitude.
+    damp_blocks : ndarray (R, K) of int
+        The K blocks of each row r that can be non-zero (one for a free racket's diagonal
+        damping).
+    damp_rows : ndarray (R, K, 2)
+        Dissipated power [W] = sum_r (sum_k damp_rows[r, k] . s[damp_blocks[r, k]])**2.
     """
 
     blocks: np.ndarray
@@ -40,18 +47,27 @@ class Frame(NamedTuple):
 class Points(NamedTuple):
     """What differs between impacts: arrays whose first axis runs over them (P).
 
-    unit : (P, nb, 2) each block's input from a unit contact force at the impact point.
-    out_d, out_v, out_dc : (P, nb, 2) rows giving the impact point's displacement, velocity
-        and dc (rigid-body) velocity from the block states.
-    reach_w : (P, nb) size of each block's share of the point's displacement (0 for dc).
-    series : (P,) compliance in series with the ball [m/N]: the string bed's, plus the
-        residual flexibility of the bending (and torsion) modes left out (static
-        correction).
-    inv_ks : (P,) 1 / string-bed stiffness at the impact point [m/N] (for the string
-        deflection history).
-    ball_velocity : (P,) ball velocity at first touch [m/s], towards the racket positive.
-    state0 : (P, nb, 2) block states at first touch (a swung racket's rigid-body motion).
-    x_o : (P,) the sine law's Xo [m] (ignored by the other laws).
+    Attributes
+    ----------
+    unit : ndarray (P, nb, 2)
+        Each block's input from a unit contact force at the impact point.
+    out_d, out_v, out_dc : ndarray (P, nb, 2)
+        Rows giving the impact point's displacement [m], velocity [m/s] and dc (rigid-body)
+        velocity [m/s] from the block states.
+    reach_w : ndarray (P, nb)
+        Size of each block's share of the point's displacement (0 for dc).
+    series : ndarray (P,)
+        Compliance in series with the ball [m/N]: the string bed's, plus the residual
+        flexibility of the bending (and torsion) modes left out (static correction).
+    inv_ks : ndarray (P,)
+        1 / string-bed stiffness at the impact point [m/N] (for the string deflection
+        history).
+    ball_velocity : ndarray (P,)
+        Ball velocity at first touch [m/s], towards the racket positive.
+    state0 : ndarray (P, nb, 2)
+        Block states at first touch (a swung racket's rigid-body motion).
+    x_o : ndarray (P,)
+        The sine law's Xo [m] (ignored by the other laws).
     """
 
     unit: np.ndarray
@@ -71,8 +87,16 @@ class BallModel(NamedTuple):
     step (force -F on it), and its law (``law``, ``params`` from
     :attr:`ball.laws.MonotoneLaw.kernel_law`).
 
-    trans : (2, 2); g0, g1 : (2,) as for a block.
-    law : int (LINEAR, POWER, SINE or GROWING); params : (4,) the law's numbers.
+    Attributes
+    ----------
+    trans : ndarray (2, 2)
+        Exact step of the ball's state (displacement [m], velocity [m/s]), as for a block.
+    g0, g1 : ndarray (2,)
+        Input of the force at the start and at the end of the step, as for a block.
+    law : int
+        The law's code: LINEAR, POWER, SINE or GROWING.
+    params : ndarray (4,)
+        The law's numbers (SI).
     """
 
     trans: np.ndarray
@@ -85,13 +109,24 @@ class BallModel(NamedTuple):
 class Controls(NamedTuple):
     """How to step.
 
-    dt : time step [s].  max_steps, extra_steps : most steps in all; steps to go on after
-    the ball has left for good.  force_tol : a sine-law contact approaching a common speed
-    without a fold ends when its force has fallen to this fraction of its peak and the
-    relative speed to this fraction of the closing speed.  cross_tol : a sine-law ball
-    closer than this times Xo to its fold's maximum may cross the fold.  stop_on_snap :
-    stop an impact at its first snap (an Xo search needs no more).  record : fill the
-    histories (as far as they reach).
+    Attributes
+    ----------
+    dt : float
+        Time step [s].
+    max_steps : int
+        Most steps in all.
+    extra_steps : int
+        Steps to go on after the ball has left for good.
+    force_tol : float
+        A sine-law contact approaching a common speed without a fold ends when its force
+        has fallen to this fraction of its peak and the relative speed to this fraction of
+        the closing speed.
+    cross_tol : float
+        A sine-law ball closer than this times Xo to its fold's maximum may cross the fold.
+    stop_on_snap : bool
+        Stop an impact at its first snap (an Xo search needs no more).
+    record : bool
+        Fill the histories (as far as they reach).
     """
 
     dt: float
@@ -106,7 +141,19 @@ class Controls(NamedTuple):
 class Outputs(NamedTuple):
     """Filled by the kernel: ball (P, 2) and block (P, nb, 2) states when the ball finally
     left, the summary (P, N_SUMMARY) and the histories (N_HISTORY, P, T) of the first T
-    steps (if recorded)."""
+    steps (if recorded).
+
+    Attributes
+    ----------
+    ball : ndarray (P, 2)
+        Ball state (displacement [m], velocity [m/s]) when the ball finally left.
+    state : ndarray (P, nb, 2)
+        Block states when the ball finally left.
+    summary : ndarray (P, N_SUMMARY)
+        Per-impact summary, columns T_END, T_CONTACT, ... (SI).
+    history : ndarray (N_HISTORY, P, T)
+        Histories of the first T steps, rows H_FORCE, H_BALL_COMP, ... (SI).
+    """
 
     ball: np.ndarray
     state: np.ndarray

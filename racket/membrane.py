@@ -34,7 +34,15 @@ patch of a tennis ball on strings is about 5 cm across at 20-30 m/s)."""
 def stiffness_ratio(rho2, radius: float) -> np.ndarray:
     """k / k_centre of a membrane of ``radius`` [m] (a circle of the bed's area) at the
     squared elliptical radius ``rho2`` (0 at the centre, 1 at the frame); see the module
-    docstring."""
+    docstring.
+
+    Parameters
+    ----------
+    rho2 : float or array_like
+        Squared elliptical radius, 0 at the centre and 1 at the frame (clipped to [0, 1]).
+    radius : float
+        Radius of the circle of the bed's area [m].
+    """
     rho2 = np.clip(np.asarray(rho2, dtype=float), 0.0, 1.0)
     centre = np.log(radius / CONTACT_RADIUS)
     near = np.log(np.maximum(radius * (1.0 - rho2), 2.0 * CONTACT_RADIUS) / CONTACT_RADIUS)

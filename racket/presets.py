@@ -23,7 +23,14 @@ the type 2 ball; the middle of that range)."""
 
 
 def paper_racket(support: str = "free") -> Racket:
-    """The paper's racket (see the module docstring)."""
+    """The paper's racket (see the module docstring).
+
+    Parameters
+    ----------
+    support : str, optional
+        ``"free"``, ``"clamped-head"`` or ``"hand-held"`` (with the default
+        :class:`~racket.Hand`), as for :class:`~racket.Racket`.
+    """
     return Racket(
         Beam.uniform(length=0.68, mass=0.34, f1=120.0),
         StringBed(stiffness=4e4, extent=(0.0, 0.32)),

@@ -125,7 +125,17 @@ _HISTORY_ROWS = {
 
 def contact_time_scale(ball: Ball, string_stiffness: float, closing_speed: float) -> float:
     """Half-period [s] of the ball on immovable strings, treating the ball as linear with
-    its secant stiffness at this speed: sets the time step."""
+    its secant stiffness at this speed: sets the time step.
+
+    Parameters
+    ----------
+    ball : Ball
+        The ball.
+    string_stiffness : float
+        String-plane stiffness [N/m].
+    closing_speed : float
+        Ball speed relative to the impact point [m/s].
+    """
     k = ball.law.secant_stiffness(ball.mass, closing_speed)
     k_series = 1.0 / (1.0 / k + 1.0 / string_stiffness)
     return np.pi * np.sqrt(ball.mass / k_series)
@@ -147,41 +157,64 @@ class Impact:
         impacts on the axis without the roll and torsion modes (the paper's 1-D model).
     speed : float
         Ball speed towards the strings before impact [m/s].
-    swing_speed : racket (impact-point) speed towards the ball before impact [m/s].
-    e : COR from the dc (rigid-body) motion, Eq. 21 / Eq. 1.
-    e_A : apparent COR V1 / v1 of a racket at rest; for a swung racket (impact point at v2
+    swing_speed : float or ndarray
+        Racket (impact-point) speed towards the ball before impact [m/s].
+    e : float or ndarray
+        COR from the dc (rigid-body) motion, Eq. 21 / Eq. 1.
+    e_A : float or ndarray
+        Apparent COR V1 / v1 of a racket at rest; for a swung racket (impact point at v2
         towards the ball) the same in the frame of the swing, (V1 - v2) / (v1 + v2), which
         equals the racket at rest's at the closing speed v1 + v2 (the swing superposes).
-    e_van_zandt : COR with the vibration at separation wrongly included.
-    effective_mass : racket effective mass at the impact point [kg] (Eq. 20 for the free
-        racket, also quoted for a hand-held one; inf clamped).
-    ball_rebound : V1, ball speed after, away from the strings [m/s].
-    v_cm : racket centre-of-mass velocity after [m/s] (along the ball's incoming path).
-    omega : racket angular velocity after [rad/s]; the point at x moves at
-        v_cm + (x_cm - x) omega.
-    roll_rate : racket's angular velocity about its long axis after [rad/s] (the twist
-        rate; the point at offset y moves at y roll_rate more; 0 without offsets).
-    point_velocity_dc : V2 = v_cm + b omega (+ y roll_rate), dc velocity of the impact
-        point after [m/s] (Eq. 21).
-    contact_time : [s].  peak_force : [N].
-    vibration_energy : the racket's mechanical energy beyond its rigid-body kinetic energy
-        when the ball leaves [J]: the bending modes, and for a hand-held racket also the
+    e_van_zandt : float or ndarray
+        COR with the vibration at separation wrongly included (Sec. VII).
+    effective_mass : float or ndarray
+        Racket effective mass at the impact point [kg] (Eq. 20, with y^2 / I_roll off the
+        axis; for the free racket, also quoted for a hand-held one; inf clamped).
+    ball_rebound : float or ndarray
+        V1, the ball's speed after, away from the strings [m/s] (its exit speed).
+    v_cm : float or ndarray
+        Racket centre-of-mass velocity after [m/s] (along the ball's incoming path).
+    omega : float or ndarray
+        Racket angular velocity after [rad/s]; the point at x moves at v_cm + (x_cm - x)
+        omega.
+    roll_rate : float or ndarray
+        Racket's angular velocity about its long axis after [rad/s] (the twist rate; the
+        point at offset y moves at y roll_rate more; 0 without offsets).
+    point_velocity_dc : float or ndarray
+        V2 = v_cm + b omega (+ y roll_rate), dc velocity of the impact point after [m/s]
+        (Eq. 21).
+    contact_time : float or ndarray
+        Duration of the contact [s].
+    peak_force : float or ndarray
+        Largest contact force [N].
+    vibration_energy : float or ndarray
+        The racket's mechanical energy beyond its rigid-body kinetic energy when the ball
+        leaves [J]: the bending (and torsion) modes, and for a hand-held racket also the
         energy in the hand's spring.
-    mode_energy : (..., n_bending) energy of each free-free bending mode when the ball
-        leaves [J].
-    energy_initial, ball_energy, racket_energy, ball_loss, damping_loss, energy_residual :
+    mode_energy : ndarray
+        (..., n_bending) energy of each free-free bending mode when the ball leaves [J].
+    energy_initial, ball_energy, racket_energy, ball_loss, damping_loss, energy_residual : \
+float or ndarray
         Energy budget [J]: initial kinetic energy = ball_energy + racket_energy (rigid
         body) + vibration_energy + ball_loss + damping_loss + energy_residual; the residual
         is the integration error.
-    x_o : the unhappy ball's Xo [m], the smallest that does not snap (NaN for other laws).
-    self_consistent : (bool) the unhappy ball's compression at separation equals Xo (to
+    closing_energy : float or ndarray
+        The ball's kinetic energy in the frame of the racket's swing, m (v1 + v2)^2 / 2 [J]
+        (energy_initial for a racket at rest): what the impact has to share out.
+    x_o : float or ndarray
+        The unhappy ball's Xo [m], the smallest that does not snap (NaN for other laws).
+    self_consistent : bool or ndarray
+        The unhappy ball's compression at separation equals Xo (to
         ``SELF_CONSISTENT_TOL``); always True for other laws.
-    recontacts : (int) times the frame caught the ball again after it had left.
-    t : (T,) time since first touch [s] of the histories (None unless ``histories``).
-    force, ball_compression, string_deflection, ball_velocity, point_velocity,
-    point_velocity_dc_history : (..., T) histories (NaN after the ball has left; None unless
-        ``histories``); the impact point's velocity is split into its dc part and the rest
-        (ac = total - dc).
+    recontacts : int or ndarray
+        Times the frame caught the ball again after it had left.
+    t : ndarray or None
+        (T,) time since first touch [s] of the histories (None unless ``histories``).
+    force, ball_compression, string_deflection, ball_velocity, point_velocity, \
+point_velocity_dc_history : ndarray or None
+        (..., T) histories [N, m, m, m/s, m/s, m/s] (NaN after the ball has left; None
+        unless ``histories``); the impact point's velocity is split into its dc part and
+        the rest (ac = total - dc).
     """
 
     position: np.ndarray
@@ -203,6 +236,7 @@ class Impact:
     vibration_energy: np.ndarray
     mode_energy: np.ndarray
     energy_initial: np.ndarray
+    closing_energy: np.ndarray
     ball_energy: np.ndarray
     racket_energy: np.ndarray
     ball_loss: np.ndarray
@@ -505,6 +539,7 @@ def _solve(
         vibration_energy=vibration,
         mode_energy=mode_energy,
         energy_initial=energy_initial,
+        closing_energy=0.5 * ball.mass * closing**2,
         ball_energy=ball_energy,
         racket_energy=racket_energy,
         ball_loss=np.asarray(ball_loss, dtype=float),

@@ -72,6 +72,11 @@ class BlockSystem:
         Returns T, G0, G1, each (nb, 2, 2): s1 = T s0 + G0 u0 + G1 u1 for the block input
         u (a 2-vector) going linearly from u0 to u1.  The last few are kept (a linear ball
         has the same step at every speed).
+
+        Parameters
+        ----------
+        dt : float
+            Time step [s].
         """
         if dt not in self._steps:
             if len(self._steps) >= 8:
@@ -89,16 +94,34 @@ class BlockSystem:
         return np.ascontiguousarray(np.linalg.inv(self.basis).T)
 
     def state(self, z: np.ndarray) -> np.ndarray:
-        """Block states (P, nb, 2) of modal states z = (q, q') (P, 2N)."""
+        """Block states (P, nb, 2) of modal states z = (q, q') (P, 2N).
+
+        Parameters
+        ----------
+        z : ndarray (P, 2N)
+            Modal displacements q [sqrt(kg) m] and velocities q' [sqrt(kg) m/s].
+        """
         return self._blocks_of(z @ self._to_blocks if self.count else z)
 
     def inputs(self, phi: np.ndarray) -> np.ndarray:
-        """Block inputs (P, nb, 2) of a unit force at points with mode shapes phi (P, N)."""
+        """Block inputs (P, nb, 2) of a unit force at points with mode shapes phi (P, N).
+
+        Parameters
+        ----------
+        phi : ndarray (P, N)
+            Mode shapes at the points [1/sqrt(kg)].
+        """
         return self.state(np.hstack([np.zeros_like(phi), phi]))
 
     def outputs(self, phi: np.ndarray):
         """Rows (P, nb, 2) giving the displacement, the velocity and the dc (rigid-body)
-        velocity of points with mode shapes phi (P, N) from the block states."""
+        velocity of points with mode shapes phi (P, N) from the block states.
+
+        Parameters
+        ----------
+        phi : ndarray (P, N)
+            Mode shapes at the points [1/sqrt(kg)].
+        """
         n, rigid = self.count, list(self.rigid)
         disp = self._blocks_of(phi @ self.basis[:n])
         vel = self._blocks_of(phi @ self.basis[n:])
@@ -128,7 +151,13 @@ class BlockSystem:
         return blocks, values
 
     def modal_state(self, s: np.ndarray):
-        """Modal displacements and velocities (P, N) from block states (P, nb, 2)."""
+        """Modal displacements and velocities (P, N) from block states (P, nb, 2).
+
+        Parameters
+        ----------
+        s : ndarray (P, nb, 2)
+            Block states.
+        """
         z = s.reshape(s.shape[0], 2 * self.count) @ self.basis.T
         return z[:, : self.count], z[:, self.count :]
 
@@ -139,6 +168,13 @@ def block_steps(blocks: np.ndarray, dt: float):
     From the exponential of the augmented system (state, input, input rate), compiled
     (:func:`racket.kernel.augmented_steps`): no BLAS call, so no BLAS worker thread
     competes with the time-stepper's threads for the cores.
+
+    Parameters
+    ----------
+    blocks : ndarray (n, 2, 2)
+        The 2x2 blocks of s' = blocks s [1/s].
+    dt : float
+        Time step [s].
     """
     from racket.kernel import augmented_steps  # numba loads on first use (import time)
 
@@ -151,7 +187,13 @@ def block_steps(blocks: np.ndarray, dt: float):
 
 
 def free_system(modes: Modes) -> BlockSystem:
-    """The free racket: block i is mode i, (q_i, q_i')."""
+    """The free racket: block i is mode i, (q_i, q_i').
+
+    Parameters
+    ----------
+    modes : Modes
+        The frame's free-free modes.
+    """
     return _free_blocks(modes.omega, modes.damping, (0, 1))
 
 
@@ -185,7 +227,15 @@ def _grip_overlap(shapes, length: float, hand: Hand) -> np.ndarray:
 
 
 def hand_matrices(modes: Modes, hand: Hand):
-    """K_h and C_h (N, N) of the hand over the grip (see the module docstring)."""
+    """K_h and C_h (N, N) of the hand over the grip (see the module docstring).
+
+    Parameters
+    ----------
+    modes : Modes
+        The frame's free-free modes.
+    hand : Hand
+        The hand: its total stiffness [N/m] and damping [N s/m], spread over the grip.
+    """
     overlap = _grip_overlap(modes.shape, modes.length, hand)
     return hand.stiffness * overlap, hand.damping * overlap
 
@@ -223,7 +273,15 @@ def _held_blocks(omega, zeta, k_h, c_h, slow: float, rigid: tuple) -> BlockSyste
 def held_system(modes: Modes, hand: Hand) -> BlockSystem:
     """The hand-held racket in real blocks (see the module docstring).  Blocks of the
     racket rocking on the hand, slower than half the first bending mode, are its dc
-    motion."""
+    motion.
+
+    Parameters
+    ----------
+    modes : Modes
+        The frame's free-free modes.
+    hand : Hand
+        The hand holding the grip.
+    """
     k_h, c_h = hand_matrices(modes, hand)
     return _held_blocks(modes.omega, modes.damping, k_h, c_h, 0.5 * modes.omega[2], (0, 1))
 
@@ -232,7 +290,17 @@ def held_roll_system(roll: RollModes, length: float, hand: Hand) -> BlockSystem:
     """The roll and torsion modes of a hand-held racket in real blocks.  The hand's
     springs act at the handle's surface, :data:`GRIP_RADIUS` from the axis, so it resists
     twist with k r**2 (and c r**2) per unit length; blocks slower than half the first
-    torsion mode (the racket rolling in the hand) are the dc motion."""
+    torsion mode (the racket rolling in the hand) are the dc motion.
+
+    Parameters
+    ----------
+    roll : RollModes
+        The frame's roll and torsion modes.
+    length : float
+        Racket length [m] (the grip ends at the butt).
+    hand : Hand
+        The hand holding the grip.
+    """
     overlap = _grip_overlap(roll.twist, length, hand) * GRIP_RADIUS**2
     slow = 0.5 * roll.omega[1] if roll.count > 1 else np.inf
     return _held_blocks(
@@ -242,7 +310,15 @@ def held_roll_system(roll: RollModes, length: float, hand: Hand) -> BlockSystem:
 
 def face_system(bending: BlockSystem, roll: BlockSystem) -> BlockSystem:
     """The bending and the roll systems side by side (uncoupled: the frame is symmetric
-    about its long axis, see :mod:`beam.torsion`); modal coordinates (q_bending, q_roll)."""
+    about its long axis, see :mod:`beam.torsion`); modal coordinates (q_bending, q_roll).
+
+    Parameters
+    ----------
+    bending : BlockSystem
+        The bending (and rigid-body) modes' system.
+    roll : BlockSystem
+        The roll and torsion modes' system.
+    """
     nb, nr = bending.count, roll.count
     n = nb + nr
     # rows of z = (q_b, q_r, q_b', q_r') from those of (q_b, q_b') and (q_r, q_r')
@@ -263,7 +339,13 @@ def face_system(bending: BlockSystem, roll: BlockSystem) -> BlockSystem:
 
 
 def block_diag(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    """[[a, 0], [0, b]]."""
+    """[[a, 0], [0, b]].
+
+    Parameters
+    ----------
+    a, b : ndarray
+        The two 2-D blocks of the diagonal.
+    """
     out = np.zeros((a.shape[0] + b.shape[0], a.shape[1] + b.shape[1]))
     out[: a.shape[0], : a.shape[1]] = a
     out[a.shape[0] :, a.shape[1] :] = b
@@ -279,14 +361,36 @@ def clamped_system() -> BlockSystem:
 
 
 def racket_system(modes: Modes, support: str, hand: Hand) -> BlockSystem:
-    """The block system of a free, hand-held or clamped-head racket."""
+    """The block system of a free, hand-held or clamped-head racket.
+
+    Parameters
+    ----------
+    modes : Modes
+        The frame's free-free modes.
+    support : str
+        ``"free"``, ``"hand-held"`` or ``"clamped-head"``.
+    hand : Hand
+        The hand of a hand-held racket (ignored otherwise).
+    """
     if support == "clamped-head":
         return clamped_system()
     return held_system(modes, hand) if support == "hand-held" else free_system(modes)
 
 
 def roll_system(roll: RollModes, length: float, support: str, hand: Hand) -> BlockSystem:
-    """The block system of the roll and torsion modes of a free or hand-held racket."""
+    """The block system of the roll and torsion modes of a free or hand-held racket.
+
+    Parameters
+    ----------
+    roll : RollModes
+        The frame's roll and torsion modes.
+    length : float
+        Racket length [m].
+    support : str
+        ``"free"`` or ``"hand-held"`` (anything else is treated as free).
+    hand : Hand
+        The hand of a hand-held racket (ignored otherwise).
+    """
     if support == "hand-held":
         return held_roll_system(roll, length, hand)
     return _free_blocks(roll.omega, roll.damping, (0,))

@@ -114,7 +114,10 @@ def _sidecar(path) -> None:
     if _RUN:
         from studies.provenance import describe, write_sidecar
 
-        write_sidecar(path, describe(_RUN["argv"], _RUN["command"], _RUN["options"]))
+        write_sidecar(
+            path,
+            describe(_RUN["argv"], _RUN["command"], _RUN["options"], _RUN.get("originals")),
+        )
 
 
 def save_plot(axes, path: str) -> None:
@@ -254,7 +257,7 @@ def cmd_sweep(args) -> int:
         np.linspace(*ends, points),
         speeds,
         string_stiffness=args.string_stiffness,
-        tension=None if args.tension_lb is None else [_tension(t) for t in args.tension_lb],
+        tension=_tensions(args),
         f1=args.f1,
         support=args.support,
         offset=args.offset,
@@ -302,7 +305,13 @@ def cmd_serve(args) -> int:
         in_range("--position", x, *racket.strings.extent, "m from the tip")
     pivot = in_range("--pivot-cm-from-butt", args.pivot_cm_from_butt, -100.0, 30.0, "cm") / 100
     mph = args.racket_speed_mph is not None or args.target_ball_speed_mph is not None
-    if args.target_ball_speed is not None or args.target_ball_speed_mph is not None:
+    target_given = args.target_ball_speed is not None or args.target_ball_speed_mph is not None
+    if target_given and (getattr(args, "_seen_racket_speed", False) or args.racket_speed_mph):
+        raise ValueError(
+            "give --racket-speed[-mph] or --target-ball-speed[-mph], not both (the target "
+            "solves for the racket speed)"
+        )
+    if target_given:
         target = _speed(args, "target_ball_speed")
         head = head_speed_for(racket, ball, target, positions[0], pivot)
         print(
@@ -509,12 +518,19 @@ def cmd_app(args) -> int:
 
 
 def cmd_rerun(args) -> int:
+    import shlex
+
     from studies.provenance import rerun_argv, temporary_directory
 
     with temporary_directory() as workdir:
-        argv = rerun_argv(args.sidecar, workdir)
-        print("racket-impact " + " ".join(argv), file=sys.stderr)
-        return main(argv)
+        argv, originals = rerun_argv(args.sidecar, workdir)
+        shown_argv = [shlex.quote(w) for w in argv]
+        print("racket-impact " + " ".join(shown_argv), file=sys.stderr)
+        _RUN["originals"] = originals
+        try:
+            return main(argv)
+        finally:
+            _RUN.pop("originals", None)
 
 
 def cmd_feel(args) -> int:
@@ -637,6 +653,15 @@ def cmd_map(args) -> int:
     return 0
 
 
+def _tensions(args):
+    """``--tension-lb`` values in N (a list), None if not given; not with the stiffness."""
+    if args.tension_lb is None:
+        return None
+    if args.string_stiffness is not None:
+        raise ValueError("give --string-stiffness or --tension-lb, not both")
+    return [_tension(t) for t in args.tension_lb]
+
+
 def _tension(value_lb: float) -> float:
     """``--tension-lb`` [lb] checked in lb (20-80) and given in N."""
     from common.units import LB
@@ -662,6 +687,8 @@ def _swing(args):
     from racket import Swing
 
     if args.swing_speed is None and args.swing_speed_mph is None:
+        if getattr(args, "_seen_pivot_cm_from_butt", False):
+            raise ValueError("--pivot-cm-from-butt needs --swing-speed (or --swing-speed-mph)")
         return None
     pivot = in_range("--pivot-cm-from-butt", args.pivot_cm_from_butt, -100.0, 30.0, "cm")
     return Swing(_speed(args, "swing_speed"), pivot / 100)
@@ -739,6 +766,7 @@ def _pivot_option(p):
     p.add_argument(
         "--pivot-cm-from-butt",
         type=float,
+        action=_Once,
         default=-5.0,
         metavar="CM",
         help="swing pivot [cm from the butt, negative beyond it] (default -5, the wrist)",

@@ -173,7 +173,13 @@ def _preset(name: str, presets: dict, kind: str):
 
 
 def read_toml(path: str | Path) -> dict:
-    """The TOML file as a dict; ValueError naming the file if it cannot be read."""
+    """The TOML file as a dict; ValueError naming the file if it cannot be read.
+
+    Parameters
+    ----------
+    path : str or Path
+        The TOML file.
+    """
     try:
         with open(path, "rb") as f:
             return tomllib.load(f)
@@ -194,7 +200,13 @@ def _list(table: dict, key: str, where: str) -> list:
 
 
 def racket_from_table(table: dict) -> Racket:
-    """A racket from a ``[racket]`` table (see the module docstring)."""
+    """A racket from a ``[racket]`` table (see the module docstring).
+
+    Parameters
+    ----------
+    table : dict
+        The ``[racket]`` table, in SI unless a key names its unit.
+    """
     _check_keys(table, _RACKET_KEYS, "racket")
     uniform = {"length", "mass", "f1"} & set(table)
     profile = {"stations", "mass_per_length", "bending_stiffness"} & set(table)
@@ -284,7 +296,13 @@ def _with_lead_tape(racket: Racket, tape) -> Racket:
 
 
 def ball_from_table(table: dict) -> Ball:
-    """A ball from a ``[ball]`` table (see the module docstring)."""
+    """A ball from a ``[ball]`` table (see the module docstring).
+
+    Parameters
+    ----------
+    table : dict
+        The ``[ball]`` table: a preset, or the mass [kg], the law and its parameters (SI).
+    """
     _check_keys(table, _BALL_KEYS, "ball")
     if "preset" in table:
         extra = sorted(set(table) - {"preset"})
@@ -329,18 +347,36 @@ def _load(spec: str, presets: dict, kind: str, from_table):
 
 
 def load_racket(spec: str) -> Racket:
-    """A racket from a preset name or a TOML file with a ``[racket]`` table."""
+    """A racket from a preset name or a TOML file with a ``[racket]`` table.
+
+    Parameters
+    ----------
+    spec : str
+        A key of :data:`RACKETS`, or the path of a ``.toml`` file.
+    """
     return _load(spec, RACKETS, "racket", racket_from_table)
 
 
 def load_ball(spec: str) -> Ball:
-    """A ball from a preset name or a TOML file with a ``[ball]`` table."""
+    """A ball from a preset name or a TOML file with a ``[ball]`` table.
+
+    Parameters
+    ----------
+    spec : str
+        A key of :data:`BALLS`, or the path of a ``.toml`` file.
+    """
     return _load(spec, BALLS, "ball", ball_from_table)
 
 
 def racket_specs(spec: str) -> tuple[dict | None, dict | None]:
     """The spec sheet a racket preset or TOML file was built from, and the sources of its
-    numbers (catalogue presets only); (None, None) for a racket not built from one."""
+    numbers (catalogue presets only); (None, None) for a racket not built from one.
+
+    Parameters
+    ----------
+    spec : str
+        A key of :data:`RACKETS`, or the path of a ``.toml`` file.
+    """
     if spec in CATALOG:
         return dict(CATALOG[spec].specs), dict(CATALOG[spec].sources)
     if spec in RACKETS or not spec.endswith(".toml"):

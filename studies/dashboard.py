@@ -67,7 +67,26 @@ class PageInputs:
 
 @dataclass(frozen=True)
 class PageResults:
-    """What the page shows (built by :func:`page_results`)."""
+    """What the page shows (built by :func:`page_results`).
+
+    Attributes
+    ----------
+    racket : Racket
+        The racket the controls describe.
+    along : DataFrame
+        Impacts along the racket at rest (:func:`studies.tables.impact_table`) with the
+        swung exit speed ``exit_speed_swung_mph``.
+    face : FaceMap
+        The face map (:func:`studies.maps.face_map`).
+    spots : DataFrame
+        The sweet spots (:func:`studies.landmarks.sweet_spots`).
+    serve : DataFrame
+        The serve at the centre and 5 cm towards the tip (:func:`studies.serve.serve_table`).
+    summary : dict
+        The page's headline numbers (g, cm, kg cm^2, e_A, cm^2, mph).
+    warnings : tuple of str
+        The simulation's warnings, one of each.
+    """
 
     racket: object
     along: object
@@ -79,7 +98,13 @@ class PageResults:
 
 
 def page_racket(inputs: PageInputs):
-    """The racket the controls describe."""
+    """The racket the controls describe.
+
+    Parameters
+    ----------
+    inputs : PageInputs
+        The page's controls.
+    """
     if inputs.racket == MY_SHEET:
         racket = from_specs(
             mass_kg=inputs.mass_g / 1e3,
@@ -100,7 +125,15 @@ def page_racket(inputs: PageInputs):
 
 def page_results(inputs: PageInputs, points: int = 61) -> PageResults:
     """Everything the page shows for ``inputs`` (the warnings on the way, e.g. a ball
-    squashed beyond its radius, collected for the page: one of each)."""
+    squashed beyond its radius, collected for the page: one of each).
+
+    Parameters
+    ----------
+    inputs : PageInputs
+        The page's controls.
+    points : int
+        Impact points along the racket.
+    """
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         results = _page_results(inputs, points)

@@ -10,8 +10,16 @@ HAND_FROM_BUTT = 0.07
 
 
 def center_of_percussion(racket: Racket, pivot: float) -> float:
-    """Centre of percussion [m from the tip] for a pivot at ``pivot`` [m from the tip]: an
-    impact there leaves the pivot at rest (no jar to the hand)."""
+    """Centre of percussion [m from the tip]: an impact there leaves the pivot at rest (no
+    jar to the hand).
+
+    Parameters
+    ----------
+    racket : Racket
+        The racket (its rigid-body mass properties count).
+    pivot : float
+        The pivot, e.g. the hand [m from the tip].
+    """
     beam = racket.beam
     d = pivot - beam.center_of_mass
     return pivot - (beam.inertia_cm + beam.mass * d**2) / (beam.mass * d)

@@ -169,9 +169,19 @@ class FaceMap:
 
 
 def face_points(racket: Racket, grid=MAP_GRID, margin: float = 0.0):
-    """The grid over the string bed shrunk by ``margin`` [m]: rows ``positions`` (nx,)
-    [m from the tip], evenly spaced, and in each row ``offsets`` (nx, ny) [m] evenly spaced
-    across its chord; also the half width of the shrunk bed [m]."""
+    """The grid over the string bed shrunk by ``margin``: rows ``positions`` (nx,) [m from
+    the tip], evenly spaced, and in each row ``offsets`` (nx, ny) [m] evenly spaced across
+    its chord; also the half width of the shrunk bed [m].
+
+    Parameters
+    ----------
+    racket : Racket
+        The racket (its string bed).
+    grid : (int, int)
+        Points along and across, each in [4, 1000].
+    margin : float
+        How far inside the bed's edge the points stay [m].
+    """
     nx, ny = (int(in_range(f"grid[{i}]", n, 4, 1000)) for i, n in enumerate(grid))
     strings = racket.strings
     half_length = 0.5 * (strings.extent[1] - strings.extent[0]) - margin

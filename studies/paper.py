@@ -13,7 +13,13 @@ UNHAPPY = Ball(0.0103, SineLaw(k0=2e4))
 
 
 def happy(k2: float) -> Ball:
-    """The paper's happy ball: 10.3 g, elastic, stiffness ``k2`` [N/m]."""
+    """The paper's happy ball: 10.3 g, elastic, stiffness ``k2`` [N/m].
+
+    Parameters
+    ----------
+    k2 : float
+        Stiffness of the ball [N/m], > 0.
+    """
     return Ball(0.0103, LinearSpring(k2))
 
 

@@ -62,7 +62,19 @@ def _sorted(label, x, e, e_a, flagged):
 
 
 def draw_racket(racket: Racket, ax, y0: float, height: float):
-    """Draw the racket to scale along x (cm from the tip), in the band [y0, y0 + height]."""
+    """Draw the racket to scale along x (cm from the tip), in the band [y0, y0 + height].
+
+    Parameters
+    ----------
+    racket : Racket
+        The racket to draw.
+    ax : Axes
+        The Axes to draw on (x in cm from the tip).
+    y0 : float
+        Bottom of the band, in the Axes' y data units.
+    height : float
+        Height of the band, in the Axes' y data units.
+    """
     length = racket.beam.length * 100
     start, end = (100 * v for v in racket.strings.extent)
     mid = y0 + 0.5 * height
@@ -112,6 +124,11 @@ def plot_cor_along_racket(result, racket: Racket, ax=None, pivot: float | None =
         An :func:`racket.impact` over many positions, or a :func:`studies.sweep` table.
     racket : Racket
         The racket the result is for.
+    ax : Axes, optional
+        The Axes to draw on; None: a new figure's.
+    pivot : float, optional
+        Pivot of the centre of percussion [m from the tip]; None: the hand,
+        :data:`HAND_FROM_BUTT` from the butt.
     """
     ax = _axes(ax, 1)
     curves = list(_curves(result))
@@ -165,6 +182,8 @@ def plot_cor_comparison(results, ax=None, show_apparent: bool = True):
     results : mapping label -> Impact or DataFrame
         For each racket, an :func:`racket.impact` over many positions or a
         :func:`studies.sweep` table (e.g. from :func:`studies.sweeps.compare`).
+    ax : Axes, optional
+        The Axes to draw on; None: a new figure's.
     show_apparent : bool
         Also draw e_A (dashed, same colour).
     """
@@ -197,7 +216,15 @@ def plot_cor_comparison(results, ax=None, show_apparent: bool = True):
 
 def plot_impact(result, ax=None):
     """Force, compressions and velocities of one impact against time (three panels); the
-    impact point's velocity is split into its dc (rigid-body) and ac (vibration) parts."""
+    impact point's velocity is split into its dc (rigid-body) and ac (vibration) parts.
+
+    Parameters
+    ----------
+    result : Impact
+        An :func:`racket.impact` at one position with ``histories=True`` (SI).
+    ax : sequence of 3 Axes, optional
+        The Axes of the three panels; None: a new figure's.
+    """
     if result.t is None:
         raise ValueError("plot_impact needs the histories: impact(..., histories=True)")
     axes = _axes(ax, 3)
@@ -236,7 +263,17 @@ def plot_impact(result, ax=None):
 
 def plot_modes(racket: Racket, ax=None, count: int = 4):
     """The first ``count`` bending-mode shapes along the racket, frequencies in the legend
-    and nodes marked."""
+    and nodes marked.
+
+    Parameters
+    ----------
+    racket : Racket
+        The racket whose modes to draw.
+    ax : Axes, optional
+        The Axes to draw on; None: a new figure's.
+    count : int, optional
+        Bending modes to draw (at most as many as the beam has).
+    """
     ax = _axes(ax, 1)
     modes = racket.beam.modes
     count = min(count, modes.count - 2)
@@ -263,7 +300,17 @@ def plot_modes(racket: Racket, ax=None, count: int = 4):
 
 def plot_collision(collision, ax=None, title: str | None = None):
     """A two-ball collision against time, as in the paper's Figs. 2-4: force; compressions
-    X, Y and X_T = X + Y; velocities of both balls."""
+    X, Y and X_T = X + Y; velocities of both balls.
+
+    Parameters
+    ----------
+    collision : Collision
+        A :func:`ball.collide` result (SI).
+    ax : sequence of 3 Axes, optional
+        The Axes of the three panels; None: a new figure's.
+    title : str, optional
+        Title of the top panel; None: the COR.
+    """
     axes = _axes(ax, 3)
     h = collision.history
     t = 1e3 * h.t
@@ -287,7 +334,21 @@ def plot_cor_vs_stiffness(
     ax=None, k0: float = 2e4, ratios=None, mass: float = 0.0103, speed: float = 4.0
 ):
     """e of an unhappy ball (k0) on happy balls against k2/k0: the integration (markers)
-    and Eq. 16 (line)."""
+    and Eq. 16 (line).
+
+    Parameters
+    ----------
+    ax : Axes, optional
+        The Axes to draw on; None: a new figure's.
+    k0 : float, optional
+        The unhappy ball's Fo / Xo [N/m].
+    ratios : array_like, optional
+        Values of k2 / k0 to integrate; None: 16 from 0.05 to 10, spaced geometrically.
+    mass : float, optional
+        Mass of each ball [kg].
+    speed : float, optional
+        Speed of the unhappy ball at first touch, the happy ball at rest [m/s].
+    """
     ax = _axes(ax, 1)
     ratios = np.geomspace(0.05, 10, 16) if ratios is None else np.asarray(ratios)
     unhappy = Ball(mass, SineLaw(k0))
@@ -310,7 +371,15 @@ def plot_cor_vs_stiffness(
 
 def plot_serve_what_if(table, ax=None):
     """Serve-speed reduction of a zero-COR ball against string and ball stiffness (the
-    table of :func:`studies.serve.serve_what_if`)."""
+    table of :func:`studies.serve.serve_what_if`).
+
+    Parameters
+    ----------
+    table : DataFrame
+        The table of :func:`studies.serve.serve_what_if` (stiffness values [N/m]).
+    ax : Axes, optional
+        The Axes to draw on; None: a new figure's.
+    """
     ax = _axes(ax, 1)
     for (varied, group), marker in zip(table.groupby("varied", sort=False), "os", strict=False):
         label = "string-bed stiffness" if varied == "string_stiffness" else "ball stiffness"
@@ -325,7 +394,17 @@ def plot_serve_what_if(table, ax=None):
 def plot_rigid_bounce(table, ax=None, radius: float | None = None):
     """A ball's rigid-surface bounce against impact speed (:func:`studies.bounce.
     rigid_bounce_table`): COR, contact time [ms] and peak compression [mm], with the ITF
-    type 2 rebound band at the drop test's speed and, if given, the ball's ``radius`` [m]."""
+    type 2 rebound band at the drop test's speed and, if given, the ball's ``radius`` [m].
+
+    Parameters
+    ----------
+    table : DataFrame
+        The table of :func:`studies.bounce.rigid_bounce_table` (SI columns).
+    ax : sequence of 3 Axes, optional
+        The Axes of the three panels; None: a new figure's.
+    radius : float, optional
+        Ball radius [m], drawn on the compression panel; None: not drawn.
+    """
     from studies.bounce import ITF_DROP_SPEED, ITF_TYPE2_COR
 
     ax = _axes(ax, 3)
@@ -431,7 +510,15 @@ _FIELD_LABELS = {
 def plot_hand_feel(feel, ax=None):
     """What the hand feels (:class:`racket.feel.HandFeel`): the handle's velocity and
     acceleration at the grip against time (the contact shaded), and the acceleration's
-    spectrum.  ``ax``: two Axes, or None for a new figure; returns them."""
+    spectrum.  ``ax``: two Axes, or None for a new figure; returns them.
+
+    Parameters
+    ----------
+    feel : HandFeel
+        What the hand feels (:class:`racket.feel.HandFeel`, SI).
+    ax : sequence of 2 Axes, optional
+        The Axes of the time and frequency panels; None: a new figure's.
+    """
     if ax is None:
         import matplotlib.pyplot as plt
 

@@ -25,7 +25,13 @@ _INPUT_FLAGS = ("--racket", "--ball", "--a", "--b")
 
 
 def sidecar_path(table_path) -> Path:
-    """The sidecar of the table at ``table_path``."""
+    """The sidecar of a table.
+
+    Parameters
+    ----------
+    table_path : str or Path
+        The table's file.
+    """
     return Path(f"{table_path}{SIDECAR_SUFFIX}")
 
 
@@ -40,21 +46,30 @@ def versions() -> dict:
     return found
 
 
-def _input(spec: str) -> dict:
-    """What a ``--racket``/``--ball`` value names: a preset, or a TOML file and its text."""
+def _restored(word: str, originals: dict) -> str:
+    """``word`` with any rerun copy's path put back to the path first given."""
+    for copy, original in originals.items():
+        word = word.replace(copy, original)
+    return word
+
+
+def _input(spec: str, originals: dict | None = None) -> dict:
+    """What a ``--racket``/``--ball`` value names: a preset, or a TOML file and its text
+    (read from the rerun's copy, ``originals`` mapping copies to the paths first given)."""
+    copies = {original: copy for copy, original in (originals or {}).items()}
     from studies.config import racket_specs
 
     label, sep, rest = spec.partition("=")  # LABEL=PRESET_OR_TOML, as compare takes it
     target = rest if sep and label and not Path(spec).exists() else spec
     entry = {"given": spec}
-    path = Path(target)
+    path = Path(copies.get(target, target))
     if target.endswith(".toml") and path.is_file():
-        entry["toml_file"] = str(path)
+        entry["toml_file"] = target
         entry["toml"] = path.read_text()
     else:
         entry["preset"] = target
     try:
-        sheet, sources = racket_specs(target)
+        sheet, sources = racket_specs(str(path))
     except (ValueError, OSError):
         sheet, sources = None, None
     if sheet is not None:
@@ -64,13 +79,31 @@ def _input(spec: str) -> dict:
     return entry
 
 
-def describe(argv: list[str], command: str, options: dict | None = None) -> dict:
-    """The sidecar's content for a run of ``racket-impact`` with ``argv``: also every
-    option's value, defaults included (``options``), and what its racket and ball name."""
+def describe(
+    argv: list[str], command: str, options: dict | None = None, originals: dict | None = None
+) -> dict:
+    """The sidecar's content for a run of ``racket-impact``.
+
+    Parameters
+    ----------
+    argv : list of str
+        The command's arguments, as typed.
+    command : str
+        The subcommand.
+    options : dict, optional
+        Every option's value, defaults included (recorded too).
+    originals : dict, optional
+        For a rerun: the recorded TOML copies' paths -> the paths first given, so that the
+        new sidecar names the user's files, not the rerun's temporary copies.
+    """
+    originals = originals or {}
+    argv = [_restored(word, originals) for word in argv]
     inputs = {}
     for i, word in enumerate(argv):
-        if word in _INPUT_FLAGS and i + 1 < len(argv):
-            inputs.setdefault(word.lstrip("-"), []).append(_input(argv[i + 1]))
+        flag, eq, value = word.partition("=")  # --racket=FILE as well as --racket FILE
+        if flag in _INPUT_FLAGS and (eq or i + 1 < len(argv)):
+            given = value if eq else argv[i + 1]
+            inputs.setdefault(flag.lstrip("-"), []).append(_input(given, originals))
     if command in ("specs", "sweetspots") and len(argv) > 1 and not argv[1].startswith("-"):
         inputs.setdefault("racket", []).append(_input(argv[1]))
     for name in ("racket", "ball"):  # the defaults, when not typed
@@ -88,16 +121,33 @@ def describe(argv: list[str], command: str, options: dict | None = None) -> dict
 
 
 def write_sidecar(table_path, description: dict) -> Path:
-    """Write ``description`` beside the table at ``table_path``; returns the sidecar's path."""
+    """Write a sidecar beside a table; returns the sidecar's path.
+
+    Parameters
+    ----------
+    table_path : str or Path
+        The table's file.
+    description : dict
+        What :func:`describe` returned.
+    """
     path = sidecar_path(table_path)
     path.write_text(json.dumps({**description, "table": Path(table_path).name}, indent=2))
     return path
 
 
-def rerun_argv(sidecar, workdir) -> list[str]:
-    """The command recorded in ``sidecar`` (a sidecar file, or the table it describes), its
-    TOML inputs written to ``workdir`` from the recorded text wherever the file is gone or
-    now differs.  ValueError for a file that is not a racket-impact sidecar."""
+def rerun_argv(sidecar, workdir) -> tuple[list[str], dict]:
+    """The command recorded in a sidecar, its TOML inputs written to ``workdir`` from the
+    recorded text wherever the file is gone or now differs, and the map from those copies'
+    paths to the paths first given (for :func:`describe`).  ValueError for a file that is
+    not a racket-impact sidecar.
+
+    Parameters
+    ----------
+    sidecar : str or Path
+        A sidecar file, or the table it describes.
+    workdir : str or Path
+        Where to write the recorded TOML inputs.
+    """
     path = Path(sidecar)
     if not path.name.endswith(SIDECAR_SUFFIX):
         path = sidecar_path(path)
@@ -119,10 +169,12 @@ def rerun_argv(sidecar, workdir) -> list[str]:
             current = Path(name)
             if current.is_file() and current.read_text() == entry["toml"]:
                 continue
-            copy = Path(workdir) / f"{len(replaced)}_{current.name}"
+            copy = Path(workdir) / str(len(replaced)) / current.name
+            copy.parent.mkdir()
             copy.write_text(entry["toml"])
-            replaced[entry["given"]] = entry["given"].replace(name, str(copy))
-    return [replaced.get(word, word) for word in argv]
+            replaced[str(copy)] = name
+    to_copies = {name: copy for copy, name in replaced.items()}
+    return [_restored(word, to_copies) for word in argv], replaced
 
 
 def temporary_directory():

@@ -21,7 +21,27 @@ from studies.landmarks import HAND_FROM_BUTT, center_of_percussion, sweet_spots
 
 @dataclass(frozen=True)
 class SpecReport:
-    """Tables describing a racket model (each a DataFrame)."""
+    """Tables describing a racket model (each a DataFrame).
+
+    Each table's columns name their units.
+
+    Parameters
+    ----------
+    fit : DataFrame
+        The spec sheet against the fitted model (empty without a spec sheet).
+    properties : DataFrame
+        Mass properties, centre of percussion, string bed and flex-test stiffness.
+    modes : DataFrame
+        Free-free bending modes and the hand-held racket's coupled modes [Hz].
+    effective_mass : DataFrame
+        Effective mass [kg] along the strings.
+    parts : DataFrame
+        Fitted part masses [g] beside their plausible ranges (empty without a spec sheet).
+    sweet_spots : DataFrame
+        The sweet spots (:func:`studies.landmarks.sweet_spots`).
+    warnings : tuple of str, optional
+        A warning for each fitted part at the edge of its range.
+    """
 
     fit: pd.DataFrame
     properties: pd.DataFrame
@@ -154,6 +174,16 @@ def spec_report(racket: Racket, specs: dict | None = None, count: int = 4) -> Sp
     The modes table lists the free-free bending modes and, for the racket held by its
     :class:`racket.Hand`, the coupled modes (frequency and damping ratio), including the
     slow modes of the racket rocking on the hand.
+
+    Parameters
+    ----------
+    racket : Racket
+        The racket model.
+    specs : dict, optional
+        The spec sheet it was fitted to, as keywords of :func:`racket.from_specs` (units in
+        their names); None: no fit tables.
+    count : int, optional
+        Bending modes to list.
     """
     x = np.linspace(*racket.strings.extent, 9)
     effective = pd.DataFrame(

@@ -42,8 +42,16 @@ from racket.swing import WRIST_BEYOND_BUTT
 
 def zero_cor_ball(ball: Ball, speed: float) -> Ball:
     """The paper's what-if ball (Sec. VIII): the same ball with a sine law (COR 0) whose k0
-    is the ball's secant stiffness on a rigid surface at ``speed`` [m/s] (k for a linear
-    ball); a sine-law ball is returned as it is."""
+    is the ball's secant stiffness on a rigid surface at ``speed`` (k for a linear ball); a
+    sine-law ball is returned as it is.
+
+    Parameters
+    ----------
+    ball : Ball
+        The real ball.
+    speed : float
+        Impact speed at which its stiffness is taken [m/s].
+    """
     if isinstance(ball.law, SineLaw):
         return ball
     return replace(ball, law=SineLaw(k0=ball.law.secant_stiffness(ball.mass, speed)))
@@ -150,12 +158,27 @@ def head_speed_for(
     pivot_from_butt: float = -WRIST_BEYOND_BUTT,
 ) -> float:
     """The racket-head speed [m/s] whose swing sends ``ball`` (at rest) off at ``target``
-    [m/s] from ``position`` [m from the tip; default the string centre] (the simulated serve,
-    solved by Brent's method to 1e-9 m/s)."""
+    (the simulated serve, solved by Brent's method to 1e-9 m/s).
+
+    Parameters
+    ----------
+    racket : Racket
+        A free racket.
+    ball : Ball
+        The ball, at rest before the impact.
+    target : float
+        Serve (ball exit) speed to reach [m/s].
+    position : float, optional
+        Impact point [m from the tip]; default the centre of the strings.
+    pivot_from_butt : float
+        The swing's pivot [m from the butt, - beyond it]; default the wrist.
+    """
     from scipy.optimize import brentq
 
     position = racket.strings.center if position is None else float(position)
-    low, high = 0.1, 250.0
+    # the impact point moves at most 250 m/s (it moves faster than the head towards the tip)
+    ratio = float(Swing(1.0, pivot_from_butt).point_speeds(racket, position))
+    low, high = 0.1, 250.0 / max(ratio, 1.0)
 
     def miss(head):
         return (
@@ -168,8 +191,9 @@ def head_speed_for(
         reach = miss(low) + target, miss(high) + target
         if not reach[0] < target < reach[1]:
             raise ValueError(
-                f"target ball speed must be in ({reach[0]:.4g}, {reach[1]:.4g}) m/s for head "
-                f"speeds of {low:g}-{high:g} m/s, got {target:g}"
+                f"target ball speed must be in ({reach[0]:.4g}, {reach[1]:.4g}) m/s at "
+                f"{100 * (racket.beam.length - position):.1f} cm from the butt (head speeds of "
+                f"{low:g}-{high:.4g} m/s), got {target:.4g}"
             )
         return float(brentq(miss, low, high, xtol=1e-9))
 

@@ -11,12 +11,24 @@ from racket import Impact
 
 
 def impact_table(result: Impact) -> pd.DataFrame:
-    """One row per impact of an :func:`racket.impact` result, with the summary numbers."""
+    """One row per impact of an :func:`racket.impact` result, with the summary numbers.
+
+    Parameters
+    ----------
+    result : Impact
+        The result of :func:`racket.impact` (SI).
+    """
     return pd.DataFrame(impact_columns(result))
 
 
 def impact_columns(result: Impact) -> dict:
-    """The columns of :func:`impact_table` as a dict of 1-D arrays."""
+    """The columns of :func:`impact_table` as a dict of 1-D arrays.
+
+    Parameters
+    ----------
+    result : Impact
+        The result of :func:`racket.impact` (SI).
+    """
     columns = {
         "position_from_butt_cm": 100 * np.asarray(result.position_from_butt),
         "position_from_tip_m": result.position,
@@ -30,7 +42,7 @@ def impact_columns(result: Impact) -> dict:
         "swing_speed_m_s": np.broadcast_to(result.swing_speed, np.shape(result.position)),
         "ball_rebound_m_s": result.ball_rebound,
         "exit_speed_mph": np.asarray(result.ball_rebound) / MPH,
-        "vibration_energy_fraction": np.divide(result.vibration_energy, result.energy_initial),
+        "vibration_energy_fraction": np.divide(result.vibration_energy, result.closing_energy),
         "contact_time_s": result.contact_time,
         "peak_force_N": result.peak_force,
         "e_van_zandt": result.e_van_zandt,
@@ -41,7 +53,13 @@ def impact_columns(result: Impact) -> dict:
 
 
 def history_table(history: CollisionHistory) -> pd.DataFrame:
-    """A two-ball collision's history, one row per time sample."""
+    """A two-ball collision's history, one row per time sample.
+
+    Parameters
+    ----------
+    history : CollisionHistory
+        The ``history`` of a :func:`ball.collide` result (SI).
+    """
     return pd.DataFrame(
         {
             "t_s": history.t,

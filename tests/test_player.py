@@ -126,5 +126,11 @@ def test_tables_describe_themselves_and_rerun_from_the_sidecar(tmp_path, capsys,
     (tmp_path / "s.csv").unlink()
     assert main(["rerun", "s.csv.meta.json"]) == 0
     assert (tmp_path / "s.csv").read_text() == first  # ... the rerun uses the recorded one
+    again = json.loads((tmp_path / "s.csv.meta.json").read_text())
+    assert again["command"] == argv  # the user's file, not the rerun's copy
+    assert again["inputs"]["racket"][0]["toml_file"] == "mine.toml"
+    sheet.unlink()  # and a rerun of the rerun, the file gone
+    assert main(["rerun", "s.csv"]) == 0
+    assert (tmp_path / "s.csv").read_text() == first
     assert main(["rerun", "mine.toml"]) == 2
     assert "sidecar" in capsys.readouterr().err

@@ -96,3 +96,51 @@ def test_a_held_racket_is_not_swung(racket):
     held = replace(racket, support="hand-held")
     with pytest.raises(ValueError, match="swing_speed must be 0 for a hand-held racket"):
         sweep(held, tennis_ball(), [0.1, 0.2], 10.0, swing=Swing(30.0), progress=False)
+
+
+def test_the_head_speed_for_a_target_near_the_tip_stays_in_range(racket):
+    """Near the tip the point moves faster than the head: the search keeps it in range."""
+    head = head_speed_for(racket, tennis_ball(), 50 * MPH, racket.strings.extent[0])
+    table = serve_table(racket, tennis_ball(), racket.strings.extent[0], head, zero_cor=False)
+    assert abs(table["serve_simulated_mph"].iloc[0] - 50.0) < 0.01
+    with pytest.raises(ValueError, match=r"target ball speed must be in \("):
+        head_speed_for(racket, tennis_ball(), 299.0, racket.strings.extent[0])
+
+
+def test_a_swung_sweeps_vibration_fraction_is_the_racket_at_rest(racket):
+    """The vibration's share is of the ball's energy in the swing's frame: the same as the
+    racket at rest hit at the closing speed."""
+    from studies.tables import impact_table
+
+    swing, x = Swing(25.0), np.array([0.05, 0.2])
+    swung = impact_table(impact(racket, tennis_ball(), x, 5.0, **swing.impact_kwargs(racket, x)))
+    v = swing.point_speeds(racket, x)
+    for i in range(x.size):
+        rest = impact_table(impact(racket, tennis_ball(), x[i], 5.0 + v[i]))
+        assert swung["vibration_energy_fraction"].iloc[i] == pytest.approx(
+            rest["vibration_energy_fraction"].iloc[0], rel=1e-9
+        )
+
+
+@pytest.mark.parametrize(
+    "argv, match",
+    [
+        (["serve", "--racket-speed-mph", "100", "--target-ball-speed-mph", "120"], "not both"),
+        (["sweep", "--pivot-cm-from-butt", "-10"], "--pivot-cm-from-butt needs --swing-speed"),
+    ],
+)
+def test_contradicting_or_incomplete_options_are_refused(argv, match, capsys):
+    from studies.cli import main
+
+    assert main(argv) == 2
+    assert match in capsys.readouterr().err
+
+
+def test_the_feel_is_followed_past_the_contact(racket):
+    from dataclasses import replace
+
+    from racket.feel import hand_feel
+
+    soft = replace(racket, strings=replace(racket.strings, stiffness=1e4))
+    with pytest.raises(ValueError, match=r"duration must be longer than the contact, 7"):
+        hand_feel(soft, tennis_ball(), racket.strings.center, 20.0, duration=0.005)

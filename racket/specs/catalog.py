@@ -32,7 +32,23 @@ OUNCE = 0.028349523125
 
 @dataclass(frozen=True)
 class Entry:
-    """A catalogue racket: its name, spec-sheet keywords and their sources."""
+    """A catalogue racket: its name, spec-sheet keywords and their sources.
+
+    Parameters
+    ----------
+    name : str
+        The racket's maker and model, as printed.
+    specs : dict
+        Keyword arguments of :func:`racket.specs.from_specs` (their units are in their
+        names, e.g. ``mass_kg``).
+    sources : dict
+        Where each of ``specs`` comes from, by the same keywords.
+    published_ra : float, optional
+        The RA rating the maker or a test publishes (kept for when the RA scale is
+        calibrated; not used in the fit).
+    notes : str, optional
+        Remarks on the numbers.
+    """
 
     name: str
     specs: dict
@@ -41,7 +57,13 @@ class Entry:
     notes: str = ""
 
     def racket(self, support: str = "free") -> Racket:
-        """The fitted racket (see :func:`racket.specs.from_specs`)."""
+        """The fitted racket (see :func:`racket.specs.from_specs`).
+
+        Parameters
+        ----------
+        support : str, optional
+            ``"free"``, ``"clamped-head"`` or ``"hand-held"``, as for :class:`~racket.Racket`.
+        """
         return from_specs(support=support, **self.specs)
 
 

@@ -101,6 +101,11 @@ def fit_profile(sheet: SpecSheet) -> tuple[Beam, Profile]:
 
     Raises ValueError, naming the quantity and the range plausible rackets reach, when no
     racket with parts in their plausible ranges meets the sheet.
+
+    Parameters
+    ----------
+    sheet : SpecSheet
+        The checked spec sheet, in SI (see :func:`~racket.specs.sheet.spec_sheet`).
     """
     if sheet.ra is not None:
         raise ValueError(RA_UNCALIBRATED)

@@ -53,7 +53,13 @@ def _bounds():
 
 def typical_split(mass: float) -> np.ndarray:
     """The typical part masses [kg] of a racket of ``mass`` [kg]: the frame's parts (hoop,
-    throat, handle) scaled so that the parts add up to ``mass``, then kept in range."""
+    throat, handle) scaled so that the parts add up to ``mass``, then kept in range.
+
+    Parameters
+    ----------
+    mass : float
+        Strung racket mass [kg].
+    """
     low, high = _bounds()
     typical = np.array([p.typical for p in PARTS])
     frame = np.array([p.name in ("hoop", "throat", "handle") for p in PARTS])
@@ -181,7 +187,24 @@ def fit_masses(
     ``swingweight`` [kg m^2] exactly, and ``twistweight`` (roll inertia) [kg m^2] if given
     as closely as the parts allow; ValueError naming the quantity and its reachable range
     when no racket with plausible parts has them (the recoil weight rather than the
-    swingweight if ``recoil_given``: the sheet gave that instead)."""
+    swingweight if ``recoil_given``: the sheet gave that instead).
+
+    Parameters
+    ----------
+    layout : Layout
+        Where the parts sit (:func:`~racket.specs.parts.layout`).
+    mass : float
+        Strung racket mass [kg].
+    balance : float
+        Balance point [m from the butt].
+    swingweight : float
+        Moment of inertia about the swingweight axis, 10 cm from the butt [kg m^2].
+    twistweight : float, optional
+        Moment of inertia about the long axis [kg m^2]; None: not fitted.
+    recoil_given : bool, optional
+        The sheet gave the recoil weight, from which ``swingweight`` was derived: a refusal
+        names the recoil weight.
+    """
     length = float(layout.stations[-1])
     moments = layout.moments()
     target = np.array([mass, mass * (length - balance), swingweight])

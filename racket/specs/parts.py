@@ -213,7 +213,15 @@ def _strings_cells(edges: np.ndarray, center: float, a: float, b: float):
 
 def layout(length: float, head_area: float) -> Layout:
     """The cells and part shapes of a racket ``length`` [m] long with a string bed of
-    ``head_area`` [m^2]; ValueError if the head leaves no room for a throat."""
+    ``head_area`` [m^2]; ValueError if the head leaves no room for a throat.
+
+    Parameters
+    ----------
+    length : float
+        Overall racket length [m].
+    head_area : float
+        Area of the string bed [m^2].
+    """
     a_s, b_s = ellipse_axes(head_area, HEAD_ASPECT)
     hoop = Hoop(a_s + FRAME_INSET, b_s + FRAME_INSET)
     head = 2.0 * hoop.center

@@ -182,7 +182,52 @@ def spec_sheet(
     torsion_hz: float | None = None,
 ) -> SpecSheet:
     """A :class:`SpecSheet` from the units of spec sheets (see :func:`racket.from_specs`);
-    every value is first checked against its range (:data:`SPEC_RANGES`)."""
+    every value is first checked against its range (:data:`SPEC_RANGES`).
+
+    The inputs are in the units of spec sheets, named in each keyword; the result is in SI.
+
+    Parameters
+    ----------
+    length_m : float, optional
+        Overall length [m]; default 0.6858 (27 in).
+    mass_kg : float
+        Strung mass [kg].  Required.
+    swingweight_kgcm2 : float, optional
+        Swingweight [kg cm^2 = 1e-4 kg m^2] about the axis 10 cm from the butt (strung).
+    recoil_weight_kgcm2 : float, optional
+        Recoil weight [kg cm^2], the moment of inertia about the centre of mass: instead of
+        the swingweight, or beside it as a check.  One of the two is required.
+    twistweight_kgcm2 : float, optional
+        Moment of inertia about the long axis [kg cm^2].
+    balance_cm : float, optional
+        Balance point [cm from the butt].
+    balance_pts_hl : float, optional
+        Balance in points head-light (1 pt = 1/8 in = 3.175e-3 m from the middle; negative
+        = head-heavy).  Give exactly one of ``balance_cm`` and ``balance_pts_hl``.
+    f1_hz : float, optional
+        First free-free bending frequency of the strung frame [Hz].
+    ra : float, optional
+        RA rating (dimensionless; refused by the fit until the RA scale is calibrated).
+    flex_deflection_mm : float, optional
+        Tip deflection in a flex test [mm] under ``flex_load_n``.  Give exactly one of
+        ``f1_hz``, ``ra`` and ``flex_deflection_mm``.
+    flex_load_n : float, optional
+        The flex test's tip load [N] (with ``flex_deflection_mm``, and only with it).
+    head_size_in2 : float, optional
+        Head (string-bed) area [in^2 = 6.4516e-4 m^2].
+    head_size_cm2 : float, optional
+        Head (string-bed) area [cm^2].  Give exactly one of the two head sizes.
+    beam_width_mm : float or (float, float, float), optional
+        Frame depth across the string plane [mm]: one value, or the tip, sides and throat.
+    tension_lb : float, optional
+        String tension [lb, a force of 4.448 N].
+    tension_n : float, optional
+        String tension [N].
+    string_stiffness_n_m : float, optional
+        String-plane stiffness [N/m].  Give exactly one of the tensions and the stiffness.
+    torsion_hz : float, optional
+        Measured first torsion frequency of the free frame [Hz].
+    """
     given = {k: v for k, v in locals().items() if v is not None}
     if "mass_kg" not in given:
         raise ValueError("the spec sheet needs mass_kg")

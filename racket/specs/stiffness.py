@@ -79,7 +79,17 @@ TYPICAL_BEAM_WIDTHS = (0.023, 0.024, 0.0225)
 def bending_profile(stations, head_length: float, widths) -> np.ndarray:
     """EI of each cell between ``stations`` [m from the tip], up to a scale (see the module
     docstring): the head ends at ``head_length`` [m], and ``widths`` are the frame's depths
-    (tip, sides, throat) [m]."""
+    (tip, sides, throat) [m].
+
+    Parameters
+    ----------
+    stations : array_like
+        Cell boundaries [m from the tip].
+    head_length : float
+        Length of the head, from the tip to the bottom of the hoop [m].
+    widths : (float, float, float)
+        The frame's depths across the string plane at the tip, the sides and the throat [m].
+    """
     stations = np.asarray(stations, dtype=float)
     mid = 0.5 * (stations[:-1] + stations[1:])
     tip, sides, throat = widths
@@ -114,5 +124,11 @@ def flex_test_stiffness(beam: Beam, throat: float) -> float:
 
 
 def torsional_profile(bending_stiffness) -> np.ndarray:
-    """GJ [N m^2] of each segment from its EI [N m^2] by the tube rule EI / (1 + nu)."""
+    """GJ [N m^2] of each segment from its EI [N m^2] by the tube rule EI / (1 + nu).
+
+    Parameters
+    ----------
+    bending_stiffness : array_like
+        Bending stiffness EI of each segment [N m^2].
+    """
     return np.asarray(bending_stiffness, dtype=float) / (1.0 + POISSON)

@@ -17,7 +17,15 @@ _HEAD_CELLS = 24  # piecewise-constant cells resolving the hoop's mass along the
 
 def with_tension(racket, tension_n: float):
     """``racket`` strung at ``tension_n`` [N]: its string bed's (centre) stiffness from the
-    membrane model (:func:`string_bed_stiffness`) on its string bed's area."""
+    membrane model (:func:`string_bed_stiffness`) on its string bed's area.
+
+    Parameters
+    ----------
+    racket : Racket
+        The racket to restring.
+    tension_n : float
+        String (reference) tension [N].
+    """
     from dataclasses import replace
 
     stiffness = string_bed_stiffness(tension_n, racket.strings.area)

@@ -1,0 +1,85 @@
+"""Every public function and class documents each of its parameters in a numpydoc section
+(as python-control's docstring test does); the checker itself is shown to fail on a
+docstring that lost a parameter (issue 15)."""
+
+import importlib
+import inspect
+import pkgutil
+import warnings
+
+import pytest
+from numpydoc.docscrape import ClassDoc, FunctionDoc
+
+PACKAGES = ("ball", "beam", "racket", "studies", "common")
+SKIP_MODULES = ("studies.app", "studies.cli")  # the page's callbacks and the argparse layer
+
+
+def undocumented(obj) -> list[str]:
+    """The parameters of ``obj``'s signature that its docstring's Parameters, Other
+    Parameters or Attributes sections do not name."""
+    try:
+        signature = inspect.signature(obj)
+    except (TypeError, ValueError):
+        return []
+    names = [
+        name
+        for name, p in signature.parameters.items()
+        if name not in ("self", "cls")
+        and not name.startswith("_")
+        and p.kind not in (p.VAR_KEYWORD, p.VAR_POSITIONAL)
+    ]
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        doc = ClassDoc(obj) if inspect.isclass(obj) else FunctionDoc(obj)
+    documented = {
+        part.strip()
+        for section in ("Parameters", "Other Parameters", "Attributes")
+        for item in doc[section]
+        for part in item.name.split(",")
+    }
+    return [name for name in names if name not in documented]
+
+
+def _public():
+    for package in PACKAGES:
+        root = importlib.import_module(package)
+        for info in pkgutil.walk_packages(root.__path__, f"{package}."):
+            if info.name in SKIP_MODULES:
+                continue
+            module = importlib.import_module(info.name)
+            for name, obj in vars(module).items():
+                public = not name.startswith("_") and getattr(obj, "__module__", "") == info.name
+                if public and (inspect.isfunction(obj) or inspect.isclass(obj)):
+                    yield f"{info.name}.{name}", obj
+
+
+def test_the_checker_catches_a_parameter_missing_from_a_docstring():
+    def documented(mass, speed=1.0):
+        """A fixture.
+
+        Parameters
+        ----------
+        mass : float
+            Ball mass [kg].
+        speed : float
+            Ball speed [m/s].
+        """
+
+    def one_lost(mass, speed=1.0):
+        """A fixture.
+
+        Parameters
+        ----------
+        mass : float
+            Ball mass [kg].
+        """
+
+    assert undocumented(documented) == []
+    assert undocumented(one_lost) == ["speed"]
+
+
+@pytest.mark.parametrize(
+    "name, obj", list(_public()), ids=lambda v: v if isinstance(v, str) else ""
+)
+def test_every_public_parameter_is_documented(name, obj):
+    assert undocumented(obj) == [], f"{name}: parameters missing from the docstring"
