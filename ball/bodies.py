@@ -52,6 +52,7 @@ class Wall:
 
     @property
     def mass(self) -> float:
+        """Zero-size, infinite mass: the wall does not move [kg]."""
         return math.inf
 
 

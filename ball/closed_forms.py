@@ -54,6 +54,17 @@ def unhappy_cor(k0: float, k2: float) -> float:
         The unhappy ball's Fo / Xo [N/m], > 0.
     k2 : float
         Stiffness of the happy ball [N/m], > 0.
+
+    References
+    ----------
+    .. [1] R. Cross, "The coefficient of restitution for collisions of happy balls, unhappy
+       balls, and tennis balls", Am. J. Phys. 68, 1025-1031 (2000),
+       doi:10.1119/1.1285945.
+
+    Examples
+    --------
+    >>> round(unhappy_cor(2e4, 2e4), 4)  # equal stiffness: the collision of Fig. 3
+    0.5171
     """
     k0 = positive("k0", k0, "N/m")
     k2 = positive("k2", k2, "N/m")
@@ -159,6 +170,17 @@ def serve_speed(e: float, m1: float, m2: float, v2: float) -> float:
         Effective mass of the racket at the impact point [kg], > 0.
     v2 : float
         Racket speed before the impact [m/s], >= 0.
+
+    References
+    ----------
+    .. [1] R. Cross, "The coefficient of restitution for collisions of happy balls, unhappy
+       balls, and tennis balls", Am. J. Phys. 68, 1025-1031 (2000),
+       doi:10.1119/1.1285945.
+
+    Examples
+    --------
+    >>> round(serve_speed(0.86, 0.057, 0.171, 40.0), 2)  # m2 = 3 m1: V1 = 1.39 v2
+    55.8
     """
     e = in_range("e", e, 0.0, 1.0)
     m1, m2 = positive("m1", m1, "kg"), positive("m2", m2, "kg")
@@ -186,6 +208,17 @@ def energy_loss_fraction_lab(e: float, m1: float, m2: float, v1: float, v2: floa
         Ball speed before the impact [m/s], >= 0.
     v2 : float
         Racket speed before the impact [m/s], >= 0.
+
+    References
+    ----------
+    .. [1] R. Cross, "The coefficient of restitution for collisions of happy balls, unhappy
+       balls, and tennis balls", Am. J. Phys. 68, 1025-1031 (2000),
+       doi:10.1119/1.1285945.
+
+    Examples
+    --------
+    >>> round(energy_loss_fraction_lab(0.0, 0.057, 0.171, 20.0, 40.0), 3)
+    0.519
     """
     e = in_range("e", e, 0.0, 1.0)
     m1, m2 = positive("m1", m1, "kg"), positive("m2", m2, "kg")

@@ -101,7 +101,7 @@ class Collision:
 
     @property
     def energy_lost_fraction(self) -> float:
-        """f = energy_lost / energy_initial (Eqs. 4 and 23)."""
+        """F = energy_lost / energy_initial (Eqs. 4 and 23)."""
         return self.energy_lost / self.energy_initial
 
 
@@ -127,6 +127,21 @@ def collide(a: Ball, b: Ball | Wall, v_a: float, v_b: float = 0.0, samples: int 
     Returns
     -------
     Collision
+
+    References
+    ----------
+    .. [1] R. Cross, "The coefficient of restitution for collisions of happy balls, unhappy
+       balls, and tennis balls", Am. J. Phys. 68, 1025-1031 (2000),
+       doi:10.1119/1.1285945.
+
+    Examples
+    --------
+    >>> from ball import Ball, LinearSpring, SineLaw
+    >>> unhappy = Ball(0.0103, SineLaw(k0=2e4))
+    >>> happy = Ball(0.0103, LinearSpring(k=2e4))
+    >>> r = collide(unhappy, happy, 4.0)  # Fig. 3
+    >>> round(r.e, 4), round(r.v_b_after, 4)
+    (0.5171, 3.0342)
     """
     if not isinstance(a, Ball):
         raise ValueError(f"a must be a Ball, got {a!r}")

@@ -68,7 +68,8 @@ class MonotoneLaw(ABC):
     @abstractmethod
     def secant_stiffness(self, mass: float, speed: float) -> float:
         """F_max / X_max [N/m] of a ball of ``mass`` [kg] hitting a rigid surface at
-        ``speed`` [m/s]: the linear spring that the ball is, at that speed."""
+        ``speed`` [m/s]: the linear spring that the ball is, at that speed.
+        """
 
     @property
     @abstractmethod
@@ -92,23 +93,29 @@ class LinearSpring(MonotoneLaw):
         object.__setattr__(self, "k", positive("k", self.k, "N/m"))
 
     def compression(self, f, f_max):
+        """See :meth:`MonotoneLaw.compression`."""
         return np.asarray(f, dtype=float) / self.k
 
     def compliance(self, f, f_max):
+        """See :meth:`MonotoneLaw.compliance`."""
         return np.full(np.broadcast(f, f_max).shape, 1.0 / self.k)
 
     def dissipated(self, f_max):
+        """See :meth:`MonotoneLaw.dissipated`."""
         return np.zeros(np.shape(f_max))
 
     @property
     def rigid_cor(self) -> float:
+        """See :meth:`MonotoneLaw.rigid_cor`."""
         return 1.0
 
     def secant_stiffness(self, mass: float, speed: float) -> float:
+        """See :meth:`MonotoneLaw.secant_stiffness`."""
         return self.k
 
     @property
     def kernel_law(self) -> tuple:
+        """See :meth:`MonotoneLaw.kernel_law`."""
         return LINEAR, (self.k, 1.0, 0.0, 0.0)
 
 
@@ -136,26 +143,32 @@ class LinearHysteresis(MonotoneLaw):
         object.__setattr__(self, "e", in_range("e", self.e, 0.0, 1.0))
 
     def compression(self, f, f_max):
+        """See :meth:`MonotoneLaw.compression`."""
         f = np.asarray(f, dtype=float)
         e2 = self.e**2
         return (np.asarray(f_max, dtype=float) * (1.0 - e2) + e2 * f) / self.k
 
     def compliance(self, f, f_max):
+        """See :meth:`MonotoneLaw.compliance`."""
         unloading = np.asarray(f) < np.asarray(f_max)
         return np.where(unloading, self.e**2 / self.k, 1.0 / self.k)
 
     def dissipated(self, f_max):
+        """See :meth:`MonotoneLaw.dissipated`."""
         return (1.0 - self.e**2) * np.asarray(f_max, dtype=float) ** 2 / (2.0 * self.k)
 
     @property
     def rigid_cor(self) -> float:
+        """See :meth:`MonotoneLaw.rigid_cor`."""
         return self.e
 
     def secant_stiffness(self, mass: float, speed: float) -> float:
+        """See :meth:`MonotoneLaw.secant_stiffness`."""
         return self.k
 
     @property
     def kernel_law(self) -> tuple:
+        """See :meth:`MonotoneLaw.kernel_law`."""
         return LINEAR, (self.k, self.e, 0.0, 0.0)
 
 
@@ -163,7 +176,8 @@ class _PowerBranches(MonotoneLaw):
     """Loading F = k X**a, unloading F = F_max (X / X_max)**b from the largest force: the
     branches shared by :class:`PowerLawHysteresis` (b fixed) and
     :class:`GrowingHysteresis` (b set by F_max); the subclass gives ``k``, ``a`` and
-    :meth:`unloading_exponent`."""
+    :meth:`unloading_exponent`.
+    """
 
     k: float
     a: float
@@ -197,7 +211,8 @@ class _PowerBranches(MonotoneLaw):
 
     def peak_compression(self, mass: float, speed: float) -> float:
         """Largest compression [m] of a ball of ``mass`` [kg] hitting a rigid surface at
-        ``speed`` [m/s]: the loading stores k X**(a + 1) / (a + 1) = mass speed**2 / 2."""
+        ``speed`` [m/s]: the loading stores k X**(a + 1) / (a + 1) = mass speed**2 / 2.
+        """
         return ((self.a + 1.0) * mass * speed**2 / (2.0 * self.k)) ** (1.0 / (self.a + 1.0))
 
     def secant_stiffness(self, mass: float, speed: float) -> float:
@@ -248,14 +263,17 @@ class PowerLawHysteresis(_PowerBranches):
         return cls(k=k, a=a, b=max(a, (a + 1.0) / e**2 - 1.0))
 
     def unloading_exponent(self, f_max):
+        """Exponent b of the unloading curve from the largest force ``f_max`` [N]."""
         return np.full(np.shape(f_max), self.b) if np.ndim(f_max) else self.b
 
     @property
     def rigid_cor(self) -> float:
+        """See :meth:`MonotoneLaw.rigid_cor`."""
         return math.sqrt((self.a + 1.0) / (self.b + 1.0))
 
     @property
     def kernel_law(self) -> tuple:
+        """See :meth:`MonotoneLaw.kernel_law`."""
         return POWER, (self.k, self.a, self.b, 0.0)
 
 
@@ -324,17 +342,20 @@ class GrowingHysteresis(_PowerBranches):
         return np.maximum(self.e0 - self.slope * np.asarray(x_max, dtype=float), COR_FLOOR)
 
     def unloading_exponent(self, f_max):
+        """Exponent b of the unloading curve from the largest force ``f_max`` [N]."""
         e = self.cor_at_compression(self._x_max(f_max))
         return (self.a + 1.0) / e**2 - 1.0
 
     @property
     def rigid_cor(self) -> float:
         """e0, the COR of a vanishingly slow bounce (it falls with speed: the rigid-surface
-        COR at speed v is e(X_max(v)), :meth:`peak_compression`)."""
+        COR at speed v is e(X_max(v)), :meth:`peak_compression`).
+        """
         return self.e0
 
     @property
     def kernel_law(self) -> tuple:
+        """See :meth:`MonotoneLaw.kernel_law`."""
         return GROWING, (self.k, self.a, self.e0, self.slope)
 
 
@@ -372,6 +393,7 @@ class SineLaw:
 
     @property
     def rigid_cor(self) -> float:
+        """See :meth:`MonotoneLaw.rigid_cor`."""
         return 0.0
 
     def secant_stiffness(self, mass: float, speed: float) -> float:

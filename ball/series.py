@@ -111,7 +111,8 @@ def _scalar_force(laws, z: float, f_max: float, rtol: float) -> float:
     """:func:`series_force` for one ``z`` and ``f_max`` in Python floats (an ODE's
     right-hand side calls it once per evaluation, where array overhead would dominate):
     Newton's method from the loading line's force, bisection whenever it leaves the
-    bracket."""
+    bracket.
+    """
 
     def resid(f):
         return float(series_compression(laws, f, f_max)) - z

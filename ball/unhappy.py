@@ -64,7 +64,8 @@ _BRACKET_STEPS = 60  # halvings or doublings of Xo when bracketing it
 
 def _clustered(a: float, b: float, n: int = _NODES) -> np.ndarray:
     """Up to n points from a to b, clustered quadratically at both ends; points that
-    coincide in floating point (a tiny interval) are dropped, so the grid strictly rises."""
+    coincide in floating point (a tiny interval) are dropped, so the grid strictly rises.
+    """
     return np.unique(a + (b - a) * 0.5 * (1.0 - np.cos(np.linspace(0.0, np.pi, n))))
 
 
@@ -91,7 +92,8 @@ class _Path:
 
     def power(self, theta):
         """F dH/dtheta [J/rad], the integrand of W; zero where F = 0 even if H' is infinite
-        there (F g'(F) -> 0 as F -> 0 for every monotone law)."""
+        there (F g'(F) -> 0 as F -> 0 for every monotone law).
+        """
         force, _, _, h_prime = self.state(theta)
         with np.errstate(invalid="ignore"):
             return np.where(force > 0, force * h_prime, 0.0)

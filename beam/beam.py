@@ -222,7 +222,8 @@ class Beam:
     @property
     def point_array(self) -> np.ndarray:
         """The point masses as an array (P, 3): position [m from the tip], mass [kg],
-        lateral offset [m]."""
+        lateral offset [m].
+        """
         return np.asarray(self.point_masses, dtype=float).reshape(-1, 3)
 
     @cached_property
@@ -261,7 +262,8 @@ class Beam:
     def roll_inertia(self) -> float | None:
         """Moment of inertia about the long axis [kg m^2] (the 'twistweight'): the
         segments' roll inertia plus m y**2 of each point mass; None when the beam's width is
-        not modelled (``roll_inertia_per_length`` is None)."""
+        not modelled (``roll_inertia_per_length`` is None).
+        """
         if self.roll_inertia_per_length is None:
             return None
         pm = self.point_array
@@ -272,7 +274,8 @@ class Beam:
     def is_mirror_symmetric(self) -> bool:
         """True when the point masses off the long axis come in mirrored pairs (x, m, y)
         and (x, m, -y): the beam is then symmetric about its long axis, and bending and
-        twisting are uncoupled (:mod:`beam.torsion`)."""
+        twisting are uncoupled (:mod:`beam.torsion`).
+        """
         pm = self.point_array
         off = pm[pm[:, 2] != 0.0]
         plus = off[off[:, 2] > 0]
@@ -302,6 +305,18 @@ class Beam:
         """Rigid-body effective mass [kg] at ``x`` [m from the tip] (Eq. 20): 1/m2 = 1/M +
         b**2 / I_cm, with b = x_cm - x the distance from the centre of mass; with an offset
         ``y`` [m from the long axis] the roll adds y**2 / I_roll (needs :attr:`roll_inertia`).
+
+        References
+        ----------
+        .. [1] R. Cross, "The coefficient of restitution for collisions of happy balls, unhappy
+           balls, and tennis balls", Am. J. Phys. 68, 1025-1031 (2000),
+           doi:10.1119/1.1285945.
+
+        Examples
+        --------
+        >>> beam = Beam.uniform(0.68, 0.34, 120.0)
+        >>> round(float(beam.effective_mass(0.16)), 4)  # the paper racket's string centre
+        0.1847
         """
         b = self.center_of_mass - np.asarray(x, dtype=float)
         flexibility = 1.0 / self.mass + b**2 / self.inertia_cm
@@ -315,10 +330,11 @@ class Beam:
         return 1.0 / flexibility
 
     def with_f1(self, f1: float) -> Beam:
-        """This beam with every bending stiffness scaled so its first frequency is ``f1``
+        """A copy of the beam with every bending stiffness scaled so its first frequency is ``f1``
         [Hz].  Frequencies scale as sqrt(EI), so scaling EI by (f1 / f1_now)**2 keeps the
         mode shapes.  The torsional stiffness GJ is left as it is (a spec-sheet fit derives
-        it from EI once, :func:`racket.from_specs`; :meth:`with_torsion_frequency` sets it)."""
+        it from EI once, :func:`racket.from_specs`; :meth:`with_torsion_frequency` sets it).
+        """
         scale = (positive("f1", f1, "Hz") / self.modes.frequencies[0]) ** 2
         beam = replace(self, bending_stiffness=tuple(scale * np.asarray(self.bending_stiffness)))
         # Same shapes, frequencies times sqrt(scale), flexibility over scale: no recomputing.
@@ -332,13 +348,15 @@ class Beam:
         return beam
 
     def with_point_masses(self, *masses) -> Beam:
-        """This beam with more point masses (lead tape): (position [m from the tip],
-        mass [kg]) or (position, mass, lateral offset [m])."""
+        """A copy of the beam with more point masses (lead tape): (position [m from the tip],
+        mass [kg]) or (position, mass, lateral offset [m]).
+        """
         return replace(self, point_masses=(*self.point_masses, *map(tuple, masses)))
 
     def with_torsion_frequency(self, frequency: float) -> Beam:
-        """This beam with every torsional stiffness scaled so that its first torsion mode
-        rings at ``frequency`` [Hz] (frequencies scale as sqrt(GJ); the shapes stay)."""
+        """A copy of the beam with every torsional stiffness scaled so that its first torsion mode
+        rings at ``frequency`` [Hz] (frequencies scale as sqrt(GJ); the shapes stay).
+        """
         modes = self.roll_modes
         if modes is None or modes.count < 2:
             raise ValueError("with_torsion_frequency needs a beam with torsional_stiffness")
@@ -350,8 +368,9 @@ class Beam:
         return beam
 
     def with_torsional_stiffness(self, torsional_stiffness) -> Beam:
-        """This beam with the torsional stiffness GJ [N m^2] of each segment (its bending
-        modes and flexibility are kept, not computed again)."""
+        """A copy of the beam with the torsional stiffness GJ [N m^2] of each segment (its bending
+        modes and flexibility are kept, not computed again).
+        """
         beam = replace(self, torsional_stiffness=tuple(np.ravel(torsional_stiffness)))
         for name in ("modes", "_flexibility"):
             if name in self.__dict__:
@@ -362,7 +381,8 @@ class Beam:
     def roll_modes(self) -> RollModes | None:
         """The rigid roll and the torsion modes about the long axis (:mod:`beam.torsion`);
         None when the roll inertia is not modelled.  Without ``torsional_stiffness`` the
-        rigid roll alone."""
+        rigid roll alone.
+        """
         if self.roll_inertia_per_length is None:
             return None
         return roll_modes(
@@ -402,7 +422,8 @@ class Beam:
 
     def static_flexibility(self, x) -> np.ndarray:
         """Deflection per unit force [m/N] of the free beam's bending at x [m from the tip]
-        for a force at x, all bending modes included: sum_k phi_k(x)**2 / omega_k**2."""
+        for a force at x, all bending modes included: sum_k phi_k(x)**2 / omega_k**2.
+        """
         return self._flexibility(np.atleast_1d(np.asarray(x, dtype=float)))
 
     def residual_flexibility(self, x, shapes=None) -> np.ndarray:
@@ -412,7 +433,8 @@ class Beam:
         ``shapes``, if given, are ``self.modes.shape(x)`` (to spare computing them again).
         The impact solver adds it in series with the strings: the modes left out, far
         above what an impact excites, respond to the force quasi-statically (the static
-        correction, or mode acceleration method)."""
+        correction, or mode acceleration method).
+        """
         modes = self.modes
         phi = modes.shape(x) if shapes is None else shapes
         kept = np.sum(phi[2:] ** 2 / modes.omega[2:, None] ** 2, axis=0)

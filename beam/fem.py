@@ -218,6 +218,7 @@ class FemShapes:
     vectors: np.ndarray
 
     def __call__(self, x) -> np.ndarray:
+        """Values at ``x`` [m from the tip] (see the class docstring)."""
         e, n = element_shapes(self.nodes, x)
         dof = 2 * e[None, :] + np.arange(4)[:, None]  # (4, len(x))
         return np.einsum("kx,mkx->mx", n, self.vectors[dof].transpose(2, 0, 1))
@@ -285,5 +286,6 @@ class FemFlexibility:
     blocks: np.ndarray
 
     def __call__(self, x) -> np.ndarray:
+        """Values at ``x`` [m from the tip] (see the class docstring)."""
         e, n = element_shapes(self.nodes, x)
         return np.einsum("ix,xij,jx->x", n, self.blocks[e], n)

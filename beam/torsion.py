@@ -75,12 +75,14 @@ class RollModes:
 
     def shape(self, x, y) -> np.ndarray:
         """Modal shapes y theta_k(x) of the string plane's normal motion at (``x`` [m from
-        the tip], ``y`` [m from the long axis]): (count, P) [1/sqrt(kg)]."""
+        the tip], ``y`` [m from the long axis]): (count, P) [1/sqrt(kg)].
+        """
         return np.asarray(y, dtype=float) * self.twist(x)
 
     def residual_flexibility(self, x, y) -> np.ndarray:
         """Normal deflection per unit normal force [m/N] at (x, y) from the torsion modes
-        not kept: y**2 theta^T R theta with R = :attr:`residual` (exact on the elements)."""
+        not kept: y**2 theta^T R theta with R = :attr:`residual` (exact on the elements).
+        """
         e, s = self._interpolation(x)
         r = self.residual
         twist2 = (

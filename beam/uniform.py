@@ -88,4 +88,5 @@ class UniformShapes:
     scale: float
 
     def __call__(self, x) -> np.ndarray:
+        """The shapes at ``x`` [m from the tip] (see the class docstring)."""
         return self.scale * shapes(self.beta_l, np.asarray(x) / self.length)

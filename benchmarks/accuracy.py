@@ -40,6 +40,7 @@ def _no_static_correction():
 
 
 def main() -> None:
+    """Print the error frontier (modes x steps) beside the defaults."""
     ball, x = tennis_ball(), np.linspace(0.0, 0.32, 161)
     for support in ("free", "hand-held"):
         ref = impact(_racket(64, support), ball, x, SPEED, steps_per_contact=4800).e

@@ -42,7 +42,7 @@ SPEED = 10.0
 
 
 def baseline_e(racket, ball, position, speed):
-    """e at one impact point by solve_ivp on [u, u', q, q'] (the straightforward way)."""
+    """E at one impact point by solve_ivp on [u, u', q, q'] (the straightforward way)."""
     modes = racket.beam.modes
     phi = modes.shape(position)[:, 0]
     w, zeta = modes.omega, modes.damping
@@ -121,6 +121,7 @@ def _process(args, runs: int = 3, cwd=None) -> float:
 
 
 def main() -> None:
+    """Print every figure beside its target."""
     warnings.simplefilter("ignore")
     racket, ball = paper_racket(), tennis_ball()
     x = np.linspace(0.0, 0.32, POINTS)

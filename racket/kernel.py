@@ -89,7 +89,8 @@ def _power_compression(f, f_max, k, a, b):
 def unloading_exponent(law, params, f_max):
     """Exponent b of a power-law ball's unloading curve from the largest force f_max: fixed
     (POWER: params k, a, b), or set by the largest compression (GROWING: params k, a, e0,
-    slope; b = (a + 1) / e**2 - 1 with e = max(e0 - slope X_max, COR_FLOOR))."""
+    slope; b = (a + 1) / e**2 - 1 with e = max(e0 - slope X_max, COR_FLOOR)).
+    """
     if law == POWER:
         return params[2]
     x_max = (f_max / params[0]) ** (1.0 / params[1]) if f_max > 0.0 else 0.0
@@ -100,7 +101,8 @@ def unloading_exponent(law, params, f_max):
 @njit(cache=True)
 def ball_compression(law, params, f, f_max):
     """Compression of a monotone ball law (code ``law``, numbers ``params``) at force f
-    after largest force f_max."""
+    after largest force f_max.
+    """
     if law == LINEAR:
         k, e = params[0], params[1]
         if f >= f_max:
@@ -113,7 +115,8 @@ def ball_compression(law, params, f, f_max):
 @njit(cache=True)
 def _power_force(target, c, f_lo, f_hi, f_max, k, a, b):
     """Solve g(F) + c F = target for F in [f_lo, f_hi] (g the power law), by safeguarded
-    Newton: g + c F rises with F, and the bracket holds the root."""
+    Newton: g + c F rises with F, and the bracket holds the root.
+    """
     f = 0.5 * (f_lo + f_hi)
     for _ in range(100):
         g = _power_compression(f, f_max, k, a, b)
@@ -138,7 +141,8 @@ def force_coefficients(law, params, a):
     """Numbers of the force solve that stay the same over an impact (``a`` = the series
     compliance plus the step's): for a linear law, 1 / (1/k + a) and 1 / (e**2/k + a),
     the slopes of force against z_pred on loading and unloading, and (1 - e**2) / k, the
-    residual compression per unit of the largest force."""
+    residual compression per unit of the largest force.
+    """
     if law == LINEAR:
         k, e2 = params[0], params[1] * params[1]
         return 1.0 / (1.0 / k + a), 1.0 / (e2 / k + a), (1.0 - e2) / k
@@ -148,7 +152,8 @@ def force_coefficients(law, params, a):
 @njit(cache=True)
 def monotone_force(law, params, coef, a, z_pred, f_max):
     """Force solving g_ball(F) + a F = z_pred (a = 1/k_s + c), 0 if the contact is open;
-    ``coef`` from :func:`force_coefficients`."""
+    ``coef`` from :func:`force_coefficients`.
+    """
     if law == LINEAR:
         f = z_pred * coef[0]  # loading line
         if f >= f_max:
@@ -412,7 +417,8 @@ def _opening_fraction(law, params, series, force, f_peak, z_pred):
     """Fraction of the step at which a monotone-law contact opened: where the approach
     beyond the ball's residual compression, d = z - g(0), went through zero, from ``force``
     at the step's start (d = g(force) - g(0) + series force) to the force-free prediction
-    ``z_pred`` at its end, linearly."""
+    ``z_pred`` at its end, linearly.
+    """
     rest = ball_compression(law, params, 0.0, f_peak)
     d_start = ball_compression(law, params, force, f_peak) - rest + series * force
     d_end = z_pred - rest
@@ -424,7 +430,8 @@ def _opening_fraction(law, params, series, force, f_peak, z_pred):
 @njit(cache=True)
 def _step_back(blocks, s, back, out):
     """Block states ``back`` seconds before ``s`` with no force acting, exp(-A back) s,
-    into ``out``."""
+    into ``out``.
+    """
     for j in range(s.shape[0]):
         m00, m01, m10, m11 = _expm2(
             -back * blocks[j, 0, 0],
@@ -438,9 +445,10 @@ def _step_back(blocks, s, back, out):
 
 @njit(cache=True)
 def _expm2(a, b, c, d):
-    """exp of the 2x2 matrix [[a, b], [c, d]] in closed form: with t the half trace and
+    """Exp of the 2x2 matrix [[a, b], [c, d]] in closed form: with t the half trace and
     N = M - t I, N**2 = delta I, so exp(M) = e**t (C I + S N), C = cosh(sqrt(delta)) and
-    S = sinh(sqrt(delta)) / sqrt(delta) (cos and sin for delta < 0)."""
+    S = sinh(sqrt(delta)) / sqrt(delta) (cos and sin for delta < 0).
+    """
     t = 0.5 * (a + d)
     h = 0.5 * (a - d)
     delta = h * h + b * c
@@ -459,7 +467,8 @@ def _expm2(a, b, c, d):
 @njit(cache=True)
 def _free_step(trans, gin0, out_d, s, force):
     """Advance the block states ``s`` in place over a step with the force going from
-    ``force`` to zero; returns the impact point's displacement then."""
+    ``force`` to zero; returns the impact point's displacement then.
+    """
     z = 0.0
     for j in range(trans.shape[0]):
         s0 = trans[j, 0, 0] * s[j, 0] + trans[j, 0, 1] * s[j, 1] + gin0[j, 0] * force
@@ -495,7 +504,7 @@ def _record(history, p, step, force, compression, string, ball_velocity, velocit
 
 @njit(cache=True)
 def _dot(rows, s):
-    """rows . s over all blocks."""
+    """Rows . s over all blocks."""
     total = 0.0
     for j in range(s.shape[0]):
         total += rows[j, 0] * s[j, 0] + rows[j, 1] * s[j, 1]
@@ -581,7 +590,7 @@ def _expm(m):
 
 @njit(cache=True)
 def _matmul(a, b):
-    """a @ b by loops (numba's @ calls BLAS)."""
+    """A @ b by loops (numba's @ calls BLAS)."""
     n, m, p = a.shape[0], a.shape[1], b.shape[1]
     out = np.zeros((n, p))
     for i in range(n):

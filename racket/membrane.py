@@ -32,7 +32,7 @@ patch of a tennis ball on strings is about 5 cm across at 20-30 m/s)."""
 
 
 def stiffness_ratio(rho2, radius: float) -> np.ndarray:
-    """k / k_centre of a membrane of ``radius`` [m] (a circle of the bed's area) at the
+    """K / k_centre of a membrane of ``radius`` [m] (a circle of the bed's area) at the
     squared elliptical radius ``rho2`` (0 at the centre, 1 at the frame); see the module
     docstring.
 

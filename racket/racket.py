@@ -119,7 +119,8 @@ class StringBed:
 
     def rho2(self, x, y=0.0) -> np.ndarray:
         """Squared elliptical radius of the points (``x`` [m from the tip], ``y`` [m from
-        the long axis]): 0 at the bed's centre, 1 on its edge."""
+        the long axis]): 0 at the bed's centre, 1 on its edge.
+        """
         half_length = 0.5 * (self.extent[1] - self.extent[0])
         dx = (np.asarray(x, dtype=float) - self.center) / half_length
         return dx**2 + (np.asarray(y, dtype=float) / (0.5 * self.full_width)) ** 2
@@ -127,7 +128,8 @@ class StringBed:
     @property
     def stiffest(self) -> float:
         """The largest string-plane stiffness anywhere on the bed [N/m] (the solver's time
-        step follows from it): :attr:`stiffness` for a uniform bed."""
+        step follows from it): :attr:`stiffness` for a uniform bed.
+        """
         if self.profile == "uniform":
             return self.stiffness
         return self.stiffness * float(stiffness_ratio(1.0, self._radius))
@@ -140,7 +142,8 @@ class StringBed:
     def stiffness_at(self, x, y=0.0) -> np.ndarray:
         """String-plane stiffness [N/m] at (``x`` [m from the tip], ``y`` [m from the long
         axis]): :attr:`stiffness` for a uniform bed; the membrane's rise towards the frame
-        (:func:`racket.membrane.stiffness_ratio`) for a ``"membrane"`` one."""
+        (:func:`racket.membrane.stiffness_ratio`) for a ``"membrane"`` one.
+        """
         x, y = np.broadcast_arrays(np.asarray(x, dtype=float), np.asarray(y, dtype=float))
         if self.profile == "uniform":
             return np.full(x.shape, self.stiffness)
@@ -194,7 +197,8 @@ class Racket:
     @cached_property
     def system(self):
         """The racket's linear dynamics in real 2x2 blocks (:mod:`racket.system`), for its
-        support; computed once."""
+        support; computed once.
+        """
         from racket.system import racket_system
 
         return racket_system(self.beam.modes, self.support, self.hand)
@@ -203,7 +207,8 @@ class Racket:
     def face_system(self):
         """The block system with the roll and torsion modes beside the bending ones
         (:func:`racket.system.face_system`), for impacts off the long axis; None when the
-        beam's roll inertia is not modelled.  Computed once."""
+        beam's roll inertia is not modelled.  Computed once.
+        """
         from racket.system import clamped_system, face_system, roll_system
 
         roll = self.beam.roll_modes
@@ -218,7 +223,8 @@ class Racket:
         """The block system for impacts at points (``x`` [m from the tip], ``y`` [m from the
         long axis] or None) and the points' modal shapes: (system, phi (P, N), face) with
         ``face`` True when the roll and torsion modes take part (an offset given on a racket
-        whose roll inertia is modelled), :attr:`face_system` then, else :attr:`system`."""
+        whose roll inertia is modelled), :attr:`face_system` then, else :attr:`system`.
+        """
         x = np.atleast_1d(np.asarray(x, dtype=float))
         face = y is not None and self.face_system is not None
         system = self.face_system if face else self.system
@@ -231,22 +237,25 @@ class Racket:
     @property
     def hoop(self) -> Hoop:
         """The frame's centre line around the head: an ellipse through the tip, as far
-        outside the string bed at its sides as the strings' start is from the tip."""
+        outside the string bed at its sides as the strings' start is from the tip.
+        """
         start = self.strings.extent[0]
         return Hoop(self.strings.center, 0.5 * self.strings.full_width + start)
 
     def with_mass(self, mass_kg: float, position_m: float) -> Racket:
-        """This racket with a point mass (lead tape) of ``mass_kg`` [kg] at ``position_m``
+        """A copy of the racket with a point mass (lead tape) of ``mass_kg`` [kg] at ``position_m``
         [m from the tip] on the long axis; mass, balance, swingweight and modes follow from
-        the new beam."""
+        the new beam.
+        """
         return replace(self, beam=self.beam.with_point_masses((position_m, mass_kg)))
 
     def with_lead_tape(self, mass_kg: float, at: str) -> Racket:
-        """This racket with lead tape of ``mass_kg`` [kg] per side at the clock position
+        """A copy of the racket with lead tape of ``mass_kg`` [kg] per side at the clock position
         ``at`` of the head's hoop (``"12"``, ``"3 and 9"``, ``"2 and 10"``, ...; see
         :meth:`racket.head.Hoop.clock`).  Each piece is a point mass on the hoop: it adds to
         the mass, balance and swingweight by its position along the racket and to the roll
-        inertia by m y**2."""
+        inertia by m y**2.
+        """
         x, y = self.hoop.clock(at)
         mass_kg = positive("lead tape mass", mass_kg, "kg")
         points = [(float(xi), mass_kg, float(yi)) for xi, yi in zip(x, y, strict=True)]
@@ -257,7 +266,8 @@ class Racket:
         long axis, + towards 3 o'clock] broadcast together (offsets None if ``offset`` is
         None).  ValueError as :meth:`check_positions`, for an offset that is not a number or
         puts a point off the elliptical string bed, or for an offset on a racket whose roll
-        inertia is not modelled."""
+        inertia is not modelled.
+        """
         if offset is None:
             return self.check_positions(position), None
         x = finite_array("position", position, "m from the tip")
@@ -296,7 +306,8 @@ class Racket:
 
     def check_positions(self, position) -> np.ndarray:
         """Impact positions [m from the tip] as a 1-D array; ValueError if there are none,
-        if they are not a number or a flat sequence, or if any is off the strings."""
+        if they are not a number or a flat sequence, or if any is off the strings.
+        """
         x = finite_array("position", position, "m from the tip")
         if x.ndim > 1:
             raise ValueError(

@@ -255,8 +255,9 @@ point_velocity_dc_history : ndarray or None
 
     @property
     def point_velocity_ac_history(self) -> np.ndarray:
-        """ac (vibration) part of the impact point's velocity against time [m/s] (None
-        without histories)."""
+        """Ac (vibration) part of the impact point's velocity against time [m/s] (None
+        without histories).
+        """
         if self.point_velocity is None:
             return None
         return self.point_velocity - self.point_velocity_dc_history
@@ -264,7 +265,8 @@ point_velocity_dc_history : ndarray or None
 
 def _swing_velocities(modes, position, swing_speed, pivot):
     """Rigid-mode velocities (P, 2) of a racket whose impact point moves at -swing_speed
-    (P,)."""
+    (P,).
+    """
     if not np.any(swing_speed):
         return np.zeros((position.size, 2))
     if pivot is None:  # pure translation
@@ -339,6 +341,19 @@ def impact(
         For an input out of its range, a frame whose first bending (or, off the axis,
         torsion) mode is below ``F1_MIN`` (20 Hz), or a ball and strings so soft that the
         contact would last more than ``CONTACT_TIME_MAX`` (20 ms).
+
+    References
+    ----------
+    .. [1] R. Cross, "The coefficient of restitution for collisions of happy balls, unhappy
+       balls, and tennis balls", Am. J. Phys. 68, 1025-1031 (2000),
+       doi:10.1119/1.1285945.
+
+    Examples
+    --------
+    >>> from racket import paper_racket, tennis_ball
+    >>> r = impact(paper_racket(), tennis_ball(), 0.16, 10.0)  # the string centre
+    >>> round(r.e, 3), round(r.e_A, 3)
+    (0.887, 0.442)
     """
     if not isinstance(racket, Racket):
         raise ValueError(f"racket must be a Racket, got {racket!r}")
@@ -455,7 +470,8 @@ def _solve(
 ):
     """:func:`impact` at the points ``x`` (offsets ``y`` or None) once its inputs are
     checked: the Impact's fields (and the ball's largest compression, ``compression``) and
-    the histories' times."""
+    the histories' times.
+    """
     stepper = _Stepper(racket, ball, x, y, speed, swing_speed, pivot, steps_per_contact)
     code = stepper.code
     x_o = np.full(x.size, np.nan)
@@ -556,7 +572,8 @@ def _solve(
 
 class _Stepper:
     """The kernel's inputs for one racket, ball and set of impact points, prepared once and
-    run for any Xo (see :func:`racket.kernel.run_impacts`)."""
+    run for any Xo (see :func:`racket.kernel.run_impacts`).
+    """
 
     def __init__(self, racket, ball, x, y, speed, swing_speed, pivot, steps_per_contact):
         # The step follows from the bed's stiffest spot, whatever the points (the shortest
@@ -622,7 +639,8 @@ class _Stepper:
         """Run the impacts (all, or those indexed by ``subset``) with Xo ``x_o`` [m] per
         impact run; returns the kernel's :class:`~racket.layout.Outputs` (ball, block
         states, summary, history), the history over the first ``history_steps`` steps
-        (none if 0)."""
+        (none if 0).
+        """
         points = self.points
         if subset is not None:
             points = layout.Points(*(np.ascontiguousarray(v[subset]) for v in points))
@@ -660,7 +678,8 @@ _BLAS = []  # the threadpoolctl controller, made on first use
 def _one_blas_thread():
     """Keep BLAS (numpy's small matrix products while preparing and reading the kernel's
     arrays) to one thread: its worker threads would compete with the kernel's for the
-    cores."""
+    cores.
+    """
     if not _BLAS:
         from threadpoolctl import ThreadpoolController
 
@@ -672,7 +691,8 @@ def _one_blas_thread():
 @contextmanager
 def _kernel_threads(count: int):
     """Run a batch of ``count`` impacts on one thread per ``IMPACTS_PER_THREAD`` of them
-    (a thread costs more to start than a few impacts take), at most numba's thread count."""
+    (a thread costs more to start than a few impacts take), at most numba's thread count.
+    """
     import numba
 
     before = numba.get_num_threads()
@@ -691,7 +711,8 @@ def _kernel_threads(count: int):
 def _compile_notice(function, after: float = 1.0):
     """Say on stderr that ``function`` (a numba dispatcher) is being compiled (once per
     install: the compiled kernel is cached on disk) if its first call of this process takes
-    more than ``after`` seconds; loading the cached kernel takes well under a second."""
+    more than ``after`` seconds; loading the cached kernel takes well under a second.
+    """
     if id(function) in _READY or getattr(function, "signatures", True):  # compiled / no JIT
         _READY.add(id(function))
         yield
@@ -717,7 +738,8 @@ _READY = set()  # ids of the kernels known to be compiled in this process
 def _x_o_guess(racket: Racket, ball: Ball, x: np.ndarray, closing: float) -> np.ndarray:
     """A first guess of the unhappy ball's Xo [m] per impact: the rigid racket's, the ball
     in series with the strings (Eqs. 12-16 where the strings are softer than pi k0, the
-    rigid wall's energy balance otherwise); only a starting point for the scan."""
+    rigid wall's energy balance otherwise); only a starting point for the scan.
+    """
     k0, k_s = ball.law.k0, racket.strings.stiffness
     m2 = racket.beam.effective_mass(x) if racket.support != "clamped-head" else np.inf
     mu = ball.mass * m2 / (ball.mass + m2) if racket.support != "clamped-head" else ball.mass

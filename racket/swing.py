@@ -35,6 +35,14 @@ class Swing:
     x_p = L - pivot_from_butt the pivot and omega = head_speed / (x_p - x_centre) (small
     rotations during the contact; the rigid-body motion superposes on the collision,
     :mod:`studies.serve`).
+
+    Examples
+    --------
+    >>> from racket import CATALOG
+    >>> racket = CATALOG["pure-drive-2021"].racket()
+    >>> swing = Swing(30.0)  # head speed 30 m/s about the wrist
+    >>> round(float(swing.point_speeds(racket, racket.strings.center - 0.05)), 2)
+    32.67
     """
 
     head_speed: float

@@ -199,7 +199,8 @@ def free_system(modes: Modes) -> BlockSystem:
 
 def _free_blocks(omega, zeta, rigid: tuple) -> BlockSystem:
     """Uncoupled modes ``omega`` [rad/s] with damping ratios ``zeta``: block i is mode i,
-    (q_i, q_i')."""
+    (q_i, q_i').
+    """
     n = omega.size
     w2 = omega**2
     d = 2.0 * zeta * omega
@@ -216,8 +217,9 @@ def _free_blocks(omega, zeta, rigid: tuple) -> BlockSystem:
 
 
 def _grip_overlap(shapes, length: float, hand: Hand) -> np.ndarray:
-    """int phi_i phi_j dx over the grip / grip length, for ``shapes(x)`` (N, len(x)) of a
-    beam ``length`` [m] long (Gauss-Legendre)."""
+    """Int phi_i phi_j dx over the grip / grip length, for ``shapes(x)`` (N, len(x)) of a
+    beam ``length`` [m] long (Gauss-Legendre).
+    """
     nodes, weights = np.polynomial.legendre.leggauss(_GRIP_POINTS)
     start = length - hand.grip_length
     x = start + 0.5 * hand.grip_length * (nodes + 1.0)
@@ -242,7 +244,8 @@ def hand_matrices(modes: Modes, hand: Hand):
 
 def _held_blocks(omega, zeta, k_h, c_h, slow: float, rigid: tuple) -> BlockSystem:
     """Modes ``omega`` [rad/s] with damping ratios ``zeta`` coupled by the hand's K_h and
-    C_h, in real blocks; blocks slower than ``slow`` [rad/s] are the dc motion."""
+    C_h, in real blocks; blocks slower than ``slow`` [rad/s] are the dc motion.
+    """
     n = omega.size
     stiffness = np.diag(omega**2) + k_h
     damping = np.diag(2.0 * zeta * omega) + c_h

@@ -78,6 +78,8 @@ app_ui = ui.page_sidebar(
 
 
 def server(input, output, session):
+    """The page's reactive outputs (Shiny's server function)."""
+
     @render.ui
     def status():
         if not _WARM.is_set():

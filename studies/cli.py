@@ -53,7 +53,8 @@ class _Parser(argparse.ArgumentParser):
 
 def check_outputs(tables=(), plots=(), directories=()) -> None:
     """Check every output path before any work: a known extension, an existing, writable
-    directory, and no file named twice.  ValueError naming the path otherwise."""
+    directory, and no file named twice.  ValueError naming the path otherwise.
+    """
     seen = {}
     for paths, kinds, what in ((tables, TABLE_FORMATS, "table"), (plots, PLOT_FORMATS, "plot")):
         for flag, path in paths:
@@ -91,7 +92,8 @@ _RUN = {}  # the command line being run (main sets it), for the tables' sidecars
 
 def write_table(table: pd.DataFrame, path: str) -> None:
     """Write ``table`` to ``path`` as CSV, JSON (records) or Parquet, by extension, and,
-    when the command line writes it, its sidecar (:mod:`studies.provenance`)."""
+    when the command line writes it, its sidecar (:mod:`studies.provenance`).
+    """
     suffix = Path(path).suffix.lower()
     if suffix not in TABLE_FORMATS:
         raise ValueError(f"table file must end in {', '.join(TABLE_FORMATS)}, got {path!r}")
@@ -135,7 +137,8 @@ def save_plot(axes, path: str) -> None:
 
 def _speed(args, name: str, allow_zero: bool = False, signed: bool = False):
     """The speed option ``--NAME`` [m/s] or ``--NAME-mph`` [mph] in m/s (a list for a
-    many-valued option), each value checked in the unit it was typed in."""
+    many-valued option), each value checked in the unit it was typed in.
+    """
     mph = getattr(args, f"{name}_mph")
     values, unit, scale = (
         (mph, "mph", MPH) if mph is not None else (getattr(args, name), "m/s", 1.0)
@@ -165,6 +168,7 @@ def _print_table(table: pd.DataFrame, floatfmt: str = "{:.4g}") -> None:
 
 # ----- subcommands ------------------------------------------------------------------------
 def cmd_paper(args) -> int:
+    """``racket-impact paper``."""
     from studies.paper import paper_table
 
     check_outputs(directories=[("--out", args.out)])
@@ -235,6 +239,7 @@ def write_paper_figures(out: Path) -> list[Path]:
 
 
 def cmd_sweep(args) -> int:
+    """``racket-impact sweep``."""
     from studies.sweeps import COLUMNS, sweep
 
     check_outputs(
@@ -294,6 +299,7 @@ def cmd_sweep(args) -> int:
 
 
 def cmd_serve(args) -> int:
+    """``racket-impact serve``."""
     from studies.serve import head_speed_for, serve_table, serve_what_if
 
     check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
@@ -354,6 +360,7 @@ def _shown_speed(value: float, mph: bool, digits: int = 1) -> str:
 
 
 def cmd_collide(args) -> int:
+    """``racket-impact collide``."""
     check_outputs(
         tables=[("--out", args.out), ("--history", args.history)], plots=[("--plot", args.plot)]
     )
@@ -398,6 +405,7 @@ def cmd_collide(args) -> int:
 
 
 def cmd_ball(args) -> int:
+    """``racket-impact ball``."""
     from studies.bounce import rigid_bounce_table
 
     check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
@@ -415,6 +423,7 @@ def cmd_ball(args) -> int:
 
 
 def cmd_modes(args) -> int:
+    """``racket-impact modes``."""
     from studies.landmarks import HAND_FROM_BUTT, center_of_percussion
 
     check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
@@ -462,6 +471,7 @@ def cmd_modes(args) -> int:
 
 
 def cmd_specs(args) -> int:
+    """``racket-impact specs``."""
     from studies.report import spec_report
 
     check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
@@ -507,6 +517,7 @@ def cmd_specs(args) -> int:
 
 
 def cmd_app(args) -> int:
+    """``racket-impact app``."""
     port = int(_count("--port", args.port, 1024, 65535))
     try:
         from studies.app import run
@@ -518,6 +529,7 @@ def cmd_app(args) -> int:
 
 
 def cmd_rerun(args) -> int:
+    """``racket-impact rerun``."""
     import shlex
 
     from studies.provenance import rerun_argv, temporary_directory
@@ -534,6 +546,7 @@ def cmd_rerun(args) -> int:
 
 
 def cmd_feel(args) -> int:
+    """``racket-impact feel``."""
     from racket.feel import hand_feel
 
     check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
@@ -576,6 +589,7 @@ def cmd_feel(args) -> int:
 
 
 def cmd_sweetspots(args) -> int:
+    """``racket-impact sweetspots``."""
     from studies.landmarks import sweet_spots
 
     check_outputs(tables=[("--out", args.out)])
@@ -591,6 +605,7 @@ def cmd_sweetspots(args) -> int:
 
 
 def cmd_compare(args) -> int:
+    """``racket-impact compare``."""
     from studies.maps import compare_summary
     from studies.sweeps import compare
 
@@ -622,6 +637,7 @@ def cmd_compare(args) -> int:
 
 
 def cmd_map(args) -> int:
+    """``racket-impact map``."""
     from studies.maps import FIELDS, face_map
 
     check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
@@ -683,7 +699,8 @@ def _tension_option(p, many: bool = False):
 
 def _swing(args):
     """The ``--swing-speed[-mph]`` and ``--pivot-cm-from-butt`` options as a Swing, or None
-    without a swing speed."""
+    without a swing speed.
+    """
     from racket import Swing
 
     if args.swing_speed is None and args.swing_speed_mph is None:
@@ -696,7 +713,8 @@ def _swing(args):
 
 def _labels(names: list[str]) -> list[tuple[str, str]]:
     """(label, preset or file) of each ``--racket``: ``LABEL=SPEC`` as given; otherwise the
-    preset, or the file's name without .toml, or its path where two files share a name."""
+    preset, or the file's name without .toml, or its path where two files share a name.
+    """
     pairs = []
     for name in names:
         label, sep, spec = name.partition("=")
@@ -782,6 +800,7 @@ def _swing_options(p):
 
 
 def build_parser() -> argparse.ArgumentParser:
+    """The ``racket-impact`` argument parser, one subcommand per study."""
     parser = _Parser(prog="racket-impact", description=__doc__.split("\n\n")[0])
     parser.add_argument(
         "--debug", action="store_true", help="show the traceback of an error (for reports)"
@@ -1015,7 +1034,8 @@ def build_parser() -> argparse.ArgumentParser:
 
 def main(argv=None) -> int:
     """Run the CLI; returns the exit status: 0, 1 if ``paper`` finds a claim out of
-    tolerance or on an internal error, 2 for bad input (one line on stderr each)."""
+    tolerance or on an internal error, 2 for bad input (one line on stderr each).
+    """
     argv = sys.argv[1:] if argv is None else list(argv)
     debug = "--debug" in argv  # before or after the subcommand
     args = build_parser().parse_args([a for a in argv if a != "--debug"])

@@ -278,7 +278,8 @@ def racket_from_table(table: dict) -> Racket:
 
 def _with_lead_tape(racket: Racket, tape) -> Racket:
     """``racket`` with one ``lead_tape`` entry: ``mass_g`` and either ``from_butt_cm`` (on the
-    long axis) or ``at`` (a clock position of the head, ``mass_g`` per side)."""
+    long axis) or ``at`` (a clock position of the head, ``mass_g`` per side).
+    """
     _check_keys(tape, _LEAD_KEYS, "racket.lead_tape")
     if "mass_g" not in tape or len(set(tape) & {"from_butt_cm", "at"}) != 1:
         raise ValueError(

@@ -1,5 +1,6 @@
 """Landmarks on a racket that players and coaches ask about: where the hand is, and the
-centre of percussion."""
+centre of percussion.
+"""
 
 from __future__ import annotations
 

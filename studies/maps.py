@@ -134,7 +134,8 @@ class FaceMap:
 
     def summary(self) -> list[str]:
         """The map in a few lines: where e_A is largest, the sweet area, e_A at the centre
-        and at 3 o'clock near the frame, the node line and the centre of percussion."""
+        and at 3 o'clock near the frame, the node line and the centre of percussion.
+        """
         i, j = np.unravel_index(np.argmax(self.e_A), self.e_A.shape)
 
         def butt(x):
@@ -227,6 +228,13 @@ def face_map(
     Returns
     -------
     FaceMap
+
+    Examples
+    --------
+    >>> from racket import CATALOG, tennis_ball
+    >>> face = face_map(CATALOG["pure-drive-2021"].racket(), tennis_ball())
+    >>> face.e_A.shape, round(face.sweet_area_cm2)
+    ((15, 9), 34)
     """
     speed = check_speed("speed", speed)
     if swing is not None and racket.support != "free":
@@ -283,13 +291,24 @@ def face_map(
 
 
 def _sweet_area(positions, half_width, values) -> tuple[float, float]:
-    """The sweet area's threshold ((1 - :data:`SWEET_FRACTION`) times the largest value) and
-    the area [cm^2] of the face at or above it, from ``values`` on the :func:`face_points`
-    grid.  The grid is regular in (x, s = y / half chord): a bicubic spline through it is
-    evaluated on a grid :data:`_FINE` times finer, and each fine point counts dx ds times its
-    half chord (of an ellipse ``half_width`` [m] wide), with trapezoidal weights.  (Bilinear
-    interpolation of the peaked e_A is 12 % low on a 15 x 9 grid; the spline is within 0.1 %
-    of a 113 x 65 grid.)"""
+    """The sweet area's threshold and the area [cm^2] of the face at or above it.
+
+    The threshold is (1 - :data:`SWEET_FRACTION`) times the largest value, from ``values``
+    on the :func:`face_points` grid.  The grid is regular in (x, s = y / half chord): a
+    bicubic spline through it is evaluated on a grid :data:`_FINE` times finer, and each
+    fine point counts dx ds times its half chord (of an ellipse ``half_width`` [m] wide),
+    with trapezoidal weights.  (Bilinear interpolation of the peaked e_A is 12 % low on a
+    15 x 9 grid; the spline is within 0.5 % of a 113 x 65 grid.)
+
+    Parameters
+    ----------
+    positions : ndarray
+        The grid's rows [m from the tip].
+    half_width : float
+        Half width of the (shrunk) bed [m].
+    values : ndarray
+        e_A on the grid (nx, ny).
+    """
     from scipy.interpolate import RectBivariateSpline
 
     s = np.linspace(-1.0, 1.0, values.shape[1])

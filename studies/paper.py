@@ -25,7 +25,8 @@ def happy(k2: float) -> Ball:
 
 def _stored_fraction(mass_ratio: float, ball_speed: float, racket_speed: float) -> float:
     """Fraction of the lab-frame kinetic energy stored elastically at closest approach, from
-    a collision of an elastic ball (m1) and an elastic racket of mass ``mass_ratio`` m1."""
+    a collision of an elastic ball (m1) and an elastic racket of mass ``mass_ratio`` m1.
+    """
     m1 = TENNIS_BALL_MASS
     racket = Ball(mass_ratio * m1, LinearSpring(4e4))
     ball = Ball(m1, LinearSpring(4e4))

@@ -31,7 +31,8 @@ def _axes(ax, count: int):
 def _curves(result):
     """(label, position, e, e_A, not self-consistent) per grid point of a sweep table (its
     parameter columns, :data:`studies.sweeps.PARAMETERS`), or the one of an Impact; each
-    sorted along the racket."""
+    sorted along the racket.
+    """
     if hasattr(result, "columns"):
         keys = [c for c in PARAMETERS.values() if c in result.columns]
         groups = result.groupby(keys, sort=False) if keys else [((), result)]
@@ -111,7 +112,7 @@ def draw_racket(racket: Racket, ax, y0: float, height: float):
 
 
 def plot_cor_along_racket(result, racket: Racket, ax=None, pivot: float | None = None):
-    """e and e_A along the racket, with the racket drawn to scale below the curves.
+    """E and e_A along the racket, with the racket drawn to scale below the curves.
 
     Marks the mode-1 node, the centre of percussion for a pivot at the hand (default
     :data:`HAND_FROM_BUTT` from the butt), the points of largest e and largest e_A, and
@@ -175,7 +176,7 @@ def plot_cor_along_racket(result, racket: Racket, ax=None, pivot: float | None =
 
 
 def plot_cor_comparison(results, ax=None, show_apparent: bool = True):
-    """e along the strings for several rackets on one Axes.
+    """E along the strings for several rackets on one Axes.
 
     Parameters
     ----------
@@ -333,7 +334,7 @@ def plot_collision(collision, ax=None, title: str | None = None):
 def plot_cor_vs_stiffness(
     ax=None, k0: float = 2e4, ratios=None, mass: float = 0.0103, speed: float = 4.0
 ):
-    """e of an unhappy ball (k0) on happy balls against k2/k0: the integration (markers)
+    """E of an unhappy ball (k0) on happy balls against k2/k0: the integration (markers)
     and Eq. 16 (line).
 
     Parameters

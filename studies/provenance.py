@@ -55,7 +55,8 @@ def _restored(word: str, originals: dict) -> str:
 
 def _input(spec: str, originals: dict | None = None) -> dict:
     """What a ``--racket``/``--ball`` value names: a preset, or a TOML file and its text
-    (read from the rerun's copy, ``originals`` mapping copies to the paths first given)."""
+    (read from the rerun's copy, ``originals`` mapping copies to the paths first given).
+    """
     copies = {original: copy for copy, original in (originals or {}).items()}
     from studies.config import racket_specs
 

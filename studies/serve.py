@@ -1,4 +1,4 @@
-"""Serve what-ifs (paper Sec. VIII): how fast does a racket send a ball, normal or zero-COR?
+"""Serve what-ifs (paper Sec. VIII): how fast a racket sends a ball, normal or zero-COR.
 
 Two ways, side by side:
 

@@ -249,7 +249,8 @@ def sweep(
 
 def _first_of_each_kind(caught) -> None:
     """Emit again the first of the warnings ``caught`` of each kind (the same text but for
-    its numbers): a grid would repeat a warning once per grid point."""
+    its numbers): a grid would repeat a warning once per grid point.
+    """
     seen = set()
     for w in caught:
         kind = (w.category, re.sub(r"[-+0-9.e]+", "#", str(w.message)))
@@ -260,7 +261,8 @@ def _first_of_each_kind(caught) -> None:
 
 def _impact_columns(racket, ball, positions, speed, offset, swing) -> dict:
     """The table columns of one grid point (module level, so that an executor can pickle
-    it)."""
+    it).
+    """
     moved = {} if swing is None else swing.impact_kwargs(racket, positions)
     return impact_columns(impact(racket, ball, positions, speed, offset=offset, **moved))
 

@@ -41,3 +41,25 @@ def test_every_example_file_runs(example, tmp_path, capsys):
         argv = ["ball", str(example), "--speeds", "5", "10", "--out", str(tmp_path / "b.csv")]
     assert main(argv) == 0, capsys.readouterr().err
     assert (tmp_path / argv[-1].split("/")[-1]).stat().st_size > 0
+
+
+@pytest.mark.parametrize(
+    "module",
+    [
+        "ball.closed_forms",
+        "ball.collision",
+        "beam.beam",
+        "racket.solver",
+        "racket.specs.fit",
+        "racket.swing",
+        "studies.maps",
+    ],
+)
+def test_docstring_examples_run(module):
+    """The Examples sections of the docstrings are doctests."""
+    import doctest
+    import importlib
+
+    flags = doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE
+    result = doctest.testmod(importlib.import_module(module), optionflags=flags)
+    assert result.attempted > 0 and result.failed == 0

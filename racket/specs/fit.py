@@ -81,7 +81,8 @@ class Profile:
 
     def warnings(self) -> list[str]:
         """:meth:`at_edge`, and a given recoil weight or twistweight that the fit misses by
-        more than :data:`MISMATCH_KGCM2`."""
+        more than :data:`MISMATCH_KGCM2`.
+        """
         out = self.at_edge()
         for name, residual, why in (
             ("recoil_weight_kgcm2", self.recoil_weight_residual, "contradicts the swingweight"),
@@ -209,6 +210,13 @@ def from_specs(*, support: str = "free", **specs) -> Racket:
     ValueError
         For a missing, doubled or out-of-range spec, or a sheet no racket with plausible
         parts can meet (naming the quantity and the range such rackets reach).
+
+    Examples
+    --------
+    >>> racket = from_specs(mass_kg=0.321, balance_cm=33.0, swingweight_kgcm2=325, f1_hz=150,
+    ...                     head_size_in2=100, tension_lb=55)
+    >>> round(racket.beam.swingweight_kgcm2, 6), round(racket.beam.twistweight_kgcm2, 1)
+    (325.0, 14.8)
     """
     sheet = spec_sheet(**specs)
     beam, profile = fit_profile(sheet)

@@ -85,7 +85,8 @@ def _reachable(row, a_eq, b_eq) -> tuple[float, float] | None:
 
 def _interval(lo: float, hi: float, got: float, digits: int = 0) -> tuple[str, str]:
     """``"(lo, hi)"`` and ``got`` printed with the fewest decimals (at least ``digits``) that
-    show ``got`` outside the interval; one value when the interval is a point."""
+    show ``got`` outside the interval; one value when the interval is a point.
+    """
     for d in range(digits, 7):
         r_lo, r_hi, r_got = (round(v, d) for v in (lo, hi, got))
         if not r_lo <= r_got <= r_hi:
@@ -104,7 +105,8 @@ def _refusal(
 ) -> str:
     """Why no racket with plausible parts meets the sheet: the first of mass, balance and
     swingweight (or recoil weight, if the sheet gave that instead) that cannot be met,
-    with the range that can."""
+    with the range that can.
+    """
     mass, first = target[0], target[1]
     low, high = _bounds()
     parts = "with every part in its plausible range (racket.specs.parts.PARTS)"
@@ -134,7 +136,8 @@ def _refusal(
 
 def _least_distance(a_eq, b_eq, typical, soft=None) -> np.ndarray:
     """Parts in range closest to ``typical`` with ``a_eq m = b_eq`` (and ``soft = (row,
-    value)`` met as closely as possible), in scaled variables z = (m - low) / (high - low)."""
+    value)`` met as closely as possible), in scaled variables z = (m - low) / (high - low).
+    """
     from scipy.optimize import minimize
 
     low, high = _bounds()

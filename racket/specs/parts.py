@@ -166,7 +166,8 @@ class Layout:
     def moments(self) -> np.ndarray:
         """Per unit mass of each part (columns): mass, first moment about the tip,
         moment of inertia about the swingweight axis, and roll inertia (rows), computed as
-        :class:`~beam.Beam` computes them for its uniform cells."""
+        :class:`~beam.Beam` computes them for its uniform cells.
+        """
         st = self.stations
         widths = np.diff(st)
         mid = 0.5 * (st[:-1] + st[1:])
@@ -184,7 +185,8 @@ class Layout:
 
 def _hoop_cells(edges: np.ndarray, hoop: Hoop, t_max: float = np.pi):
     """Arc length and integral of y**2 ds of the hoop within each cell, for its parametric
-    angle t in [0, t_max] (x = a (1 - cos t), y = b sin t; both sides)."""
+    angle t in [0, t_max] (x = a (1 - cos t), y = b sin t; both sides).
+    """
     a, b = hoop.center, hoop.half_width
     t_edges = np.minimum(np.arccos(np.clip(1.0 - edges / a, -1.0, 1.0)), t_max)
     nodes, weights = _GAUSS
@@ -199,7 +201,8 @@ def _hoop_cells(edges: np.ndarray, hoop: Hoop, t_max: float = np.pi):
 
 def _strings_cells(edges: np.ndarray, center: float, a: float, b: float):
     """Area and integral of w**3 / 12 dx (w the chord width) of the string bed's ellipse
-    within each cell."""
+    within each cell.
+    """
     u = np.clip((edges - center) / a, -1.0, 1.0)
     primitive = a * b * (u * np.sqrt(1.0 - u**2) + np.arcsin(u))
     nodes, weights = _GAUSS

@@ -127,7 +127,8 @@ rest (recoil weight 50-300 and twistweight 5-40 kg cm^2, f1 60-400 Hz, torsion
 
 def _check_spec(name: str, value) -> float:
     """A spec-sheet value in its range (:data:`SPEC_RANGES`), with a hint at a likely slip
-    of unit (grams typed as kg, cm as m)."""
+    of unit (grams typed as kg, cm as m).
+    """
     low, high, unit = SPEC_RANGES[name]
     x = finite(name, value, unit)
     hint = ""
