@@ -77,6 +77,8 @@ class Beam:
         Torsion modes kept beyond the rigid roll, in [1, :data:`MAX_MODES`]; default
         :data:`DEFAULT_TORSION_MODES`.
 
+    Notes
+    -----
     A tabulated profile is given as many short segments.  Uniform beams without point
     masses use the analytic modes (:mod:`beam.uniform`), others finite elements
     (:mod:`beam.fem`).

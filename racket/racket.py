@@ -35,6 +35,8 @@ class Hand:
     grip_length : float
         Length of handle the hand covers, from the butt [m].
 
+    Notes
+    -----
     The defaults (1e4 N/m, 10 N s/m over 0.10 m, a palm's width) are this project's
     order-of-magnitude choice, not a measurement: the hand-arm system is usually described
     by lumped masses, springs and dashpots (ISO 10068, the driving-point impedance of the

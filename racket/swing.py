@@ -31,6 +31,8 @@ class Swing:
         The pivot [m from the butt, + towards the tip, - beyond it], in [-1, 0.3]; default
         -0.05, the wrist (:data:`WRIST_BEYOND_BUTT`).
 
+    Notes
+    -----
     The racket's speed at an impact point x [m from the tip] is omega (x_p - x), with
     x_p = L - pivot_from_butt the pivot and omega = head_speed / (x_p - x_centre) (small
     rotations during the contact; the rigid-body motion superposes on the collision,

@@ -9,19 +9,41 @@ import pytest
 from studies.cli import main
 
 ROOT = Path(__file__).resolve().parent.parent
-README = (ROOT / "README.md").read_text()
-BLOCKS = re.findall(r"```python\n(.*?)```", README, re.S)
+DOCUMENTS = [ROOT / "README.md", *sorted((ROOT / "docs").rglob("*.md"))]
+BLOCKS = [
+    (path.relative_to(ROOT), block)
+    for path in DOCUMENTS
+    if "generated" not in path.parts
+    for block in re.findall(r"```python\n(.*?)```", path.read_text(), re.S)
+]
 EXAMPLES = sorted((ROOT / "examples").glob("*.toml"))
+GALLERY = sorted((ROOT / "examples" / "gallery").glob("plot_*.py"))
 
 
-def test_the_readme_has_code_to_run():
-    assert len(BLOCKS) >= 4
+def test_the_readme_and_the_docs_have_code_to_run():
+    assert len(BLOCKS) >= 10
 
 
-@pytest.mark.parametrize("index", range(len(BLOCKS)))
-def test_readme_python_block_runs(index, tmp_path, monkeypatch):
+@pytest.mark.parametrize(
+    "index", range(len(BLOCKS)), ids=[f"{p}-{i}" for i, (p, _) in enumerate(BLOCKS)]
+)
+def test_documentation_python_block_runs(index, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
-    exec(compile(BLOCKS[index], f"README.md python block {index + 1}", "exec"), {})
+    path, block = BLOCKS[index]
+    exec(compile(block, f"{path} python block", "exec"), {})
+
+
+@pytest.mark.parametrize("script", GALLERY, ids=[p.name for p in GALLERY])
+def test_gallery_script_draws_its_figure(script, tmp_path, monkeypatch):
+    import runpy
+
+    import matplotlib.pyplot as plt
+
+    monkeypatch.chdir(tmp_path)
+    plt.close("all")
+    runpy.run_path(str(script), run_name="__main__")
+    assert plt.get_fignums(), f"{script.name} drew no figure"
+    plt.close("all")
 
 
 @pytest.mark.parametrize("example", EXAMPLES, ids=[p.name for p in EXAMPLES])
