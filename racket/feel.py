@@ -73,20 +73,6 @@ class HandFeel:
     grip_from_butt: float
     contact_time: float
 
-    def to_frame(self):
-        """The histories as a table (pandas), one row per time step."""
-        import pandas as pd
-
-        columns = {
-            "t_s": self.t,
-            "force_N": self.force,
-            "handle_velocity_m_s": self.velocity,
-            "handle_acceleration_m_s2": self.acceleration,
-        }
-        if self.twist_rate is not None:
-            columns["handle_twist_rate_rad_s"] = self.twist_rate
-        return pd.DataFrame(columns)
-
 
 def hand_feel(
     racket: Racket,

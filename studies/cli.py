@@ -580,7 +580,9 @@ def cmd_feel(args) -> int:
     )
     print(f"vibration left in the frame  {1e3 * feel.vibration_energy_end:.2f} mJ")
     if args.out:
-        write_table(feel.to_frame(), args.out)
+        from studies.tables import feel_table
+
+        write_table(feel_table(feel), args.out)
     if args.plot:
         from studies.plots import plot_hand_feel
 

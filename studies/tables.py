@@ -52,6 +52,25 @@ def impact_columns(result: Impact) -> dict:
     return {name: np.atleast_1d(value) for name, value in columns.items()}
 
 
+def feel_table(feel) -> pd.DataFrame:
+    """The histories of :func:`racket.feel.hand_feel`, one row per time step.
+
+    Parameters
+    ----------
+    feel : HandFeel
+        The handle's motion after an impact.
+    """
+    columns = {
+        "t_s": feel.t,
+        "force_N": feel.force,
+        "handle_velocity_m_s": feel.velocity,
+        "handle_acceleration_m_s2": feel.acceleration,
+    }
+    if feel.twist_rate is not None:
+        columns["handle_twist_rate_rad_s"] = feel.twist_rate
+    return pd.DataFrame(columns)
+
+
 def history_table(history: CollisionHistory) -> pd.DataFrame:
     """A two-ball collision's history, one row per time sample.
 
