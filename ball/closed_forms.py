@@ -19,7 +19,7 @@ def energy_loss_fraction(e: float) -> float:
     Parameters
     ----------
     e : float
-        Coefficient of restitution, 0 <= e <= 1.
+        Coefficient of restitution [-], 0 <= e <= 1.
     """
     e = in_range("e", e, 0.0, 1.0)
     return 1.0 - e**2
@@ -32,7 +32,7 @@ def series_cor(e1: float, k1: float, k2: float) -> float:
     Parameters
     ----------
     e1 : float
-        The ball's COR on a rigid surface.
+        The ball's COR on a rigid surface [-].
     k1, k2 : float
         Stiffness of the ball and of the lossless partner [N/m].
     """
@@ -163,7 +163,7 @@ def serve_speed(e: float, m1: float, m2: float, v2: float) -> float:
     Parameters
     ----------
     e : float
-        Coefficient of restitution, 0 <= e <= 1.
+        Coefficient of restitution [-], 0 <= e <= 1.
     m1 : float
         Ball mass [kg], > 0.
     m2 : float
@@ -199,7 +199,7 @@ def energy_loss_fraction_lab(e: float, m1: float, m2: float, v1: float, v2: floa
     Parameters
     ----------
     e : float
-        Coefficient of restitution, 0 <= e <= 1.
+        Coefficient of restitution [-], 0 <= e <= 1.
     m1 : float
         Ball mass [kg], > 0.
     m2 : float

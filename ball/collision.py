@@ -64,7 +64,7 @@ class Collision:
     v_a_after, v_b_after : float
         Velocities after [m/s].
     e : float
-        Coefficient of restitution (Eq. 1): relative speed after / relative speed before.
+        Coefficient of restitution [-] (Eq. 1): relative speed after / relative speed before.
     contact_time : float
         Duration of the contact [s].
     peak_force : float

@@ -132,7 +132,7 @@ class LinearHysteresis(MonotoneLaw):
     k : float
         Loading stiffness [N/m], > 0.  Paper Sec. III: about 4e4 N/m for a tennis ball.
     e : float
-        COR of the ball on a rigid surface, 0 <= e <= 1 (0.75 for a tennis ball on concrete).
+        COR of the ball on a rigid surface [-], 0 <= e <= 1 (0.75 for a tennis ball on concrete).
     """
 
     k: float
@@ -199,7 +199,7 @@ class _PowerBranches(MonotoneLaw):
     def compliance(self, f, f_max):
         f = np.asarray(f, dtype=float)
         exponent = np.where(f < np.asarray(f_max), self.unloading_exponent(f_max), self.a)
-        with np.errstate(divide="ignore", invalid="ignore"):
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
             c = self.compression(f, f_max) / (exponent * f)
         return np.where(f > 0, c, np.inf)
 
@@ -307,7 +307,7 @@ class GrowingHysteresis(_PowerBranches):
     a : float
         Loading exponent, in [1, 3].
     e0 : float
-        COR of a vanishingly slow bounce on a rigid surface, in (COR_FLOOR, 1].
+        COR of a vanishingly slow bounce on a rigid surface [-], in (COR_FLOOR, 1].
     slope : float
         Fall of the rigid-surface COR per metre of peak compression [1/m], >= 0.
     calibrated_to : float, optional

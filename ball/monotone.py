@@ -57,8 +57,11 @@ def monotone_contact(
     t_ref = np.pi * np.sqrt(mu / k_ref)
     atol = [1e-14 * closing_speed * t_ref, 1e-14 * closing_speed]
 
+    last = [0.0]  # the last force: the next evaluation's starting guess
+
     def loading(_t, s):
-        return [s[1], -float(series_force(laws, s[0], 0.0)) / mu]
+        last[0] = series_force(laws, s[0], 0.0, guess=last[0])
+        return [s[1], -last[0] / mu]
 
     def turning(_t, s):
         return s[1]
@@ -86,9 +89,11 @@ def monotone_contact(
     t_end, speed_end = t1, 0.0
     travel = z_max - z_open
     if travel > _STEEP * z_max:
+        last[0] = f_max
 
         def unloading(_t, s):
-            return [s[1], -float(series_force(laws, s[0], f_max)) / mu]
+            last[0] = series_force(laws, s[0], f_max, guess=last[0])
+            return [s[1], -last[0] / mu]
 
         def opened(_t, s):
             return s[0] - z_open

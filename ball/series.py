@@ -17,6 +17,11 @@ import numpy as np
 
 from ball.laws import MonotoneLaw
 
+_ITERATIONS = 2300
+"""Newton-bisection steps at most: enough to double from the smallest float to the largest
+(2100) and then bisect to one float, where a very steep unloading curve puts the force
+(e.g. 1e-310 N on a ball whose COR is near zero)."""
+
 
 def series_compression(laws: Sequence[MonotoneLaw], f, f_max):
     """Total compression [m] of ``laws`` in series at force ``f`` [N], largest force ``f_max`` [N].
@@ -54,7 +59,7 @@ def series_compliance(laws: Sequence[MonotoneLaw], f, f_max):
     return sum(law.compliance(f, branch_max) for law in laws)
 
 
-def series_force(laws: Sequence[MonotoneLaw], z, f_max, rtol: float = 1e-14):
+def series_force(laws: Sequence[MonotoneLaw], z, f_max, rtol: float = 1e-14, guess=None):
     """Force [N] in ``laws`` in series compressed by a total ``z`` [m] after a largest ``f_max``.
 
     Returns 0 where ``z`` is at or below the compression left at zero force (the contact
@@ -69,10 +74,14 @@ def series_force(laws: Sequence[MonotoneLaw], z, f_max, rtol: float = 1e-14):
     f_max : float or array_like
         Largest force reached so far [N].
     rtol : float, optional
-        Relative tolerance on the force at which Newton's method stops.
+        Relative tolerance [-] on the force at which Newton's method stops.
+    guess : float, optional
+        A force near the answer [N] for a scalar ``z`` (an ODE's right-hand side passes the
+        last one): Newton's method starts there, a few steps instead of about twenty.  The
+        answer is the same to ``rtol``.
     """
     if np.ndim(z) == 0 and np.ndim(f_max) == 0:
-        return _scalar_force(laws, float(z), float(f_max), rtol)
+        return _scalar_force(laws, float(z), float(f_max), rtol, guess)
     z, f_max = np.broadcast_arrays(np.asarray(z, dtype=float), np.asarray(f_max, dtype=float))
     z = z.astype(float, copy=True)
     force = np.zeros(z.shape)
@@ -92,26 +101,32 @@ def series_force(laws: Sequence[MonotoneLaw], z, f_max, rtol: float = 1e-14):
     else:
         raise RuntimeError("no finite force compresses the laws by z")
     f = hi
-    for _ in range(200):
+    for _ in range(_ITERATIONS):
         resid = series_compression(laws, f, fm_a) - z_a
         lo = np.where(resid < 0, f, lo)
         hi = np.where(resid >= 0, f, hi)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            newton = f - resid / series_compliance(laws, f, fm_a)
-        converged = (resid == 0) | (np.abs(newton - f) <= rtol * np.abs(newton))
-        inside = np.isfinite(newton) & (newton > lo) & (newton < hi)
-        f = np.where(inside | converged, newton, 0.5 * (lo + hi))
-        if np.all(converged):
+        slope = series_compliance(laws, f, fm_a)
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+            # No Newton step on a vertical or undefined branch.
+            newton = np.where((slope > 0) & np.isfinite(slope), f - resid / slope, np.nan)
+        stepped = np.abs(newton - f) <= rtol * np.abs(newton)  # Newton converged
+        # Bracketed to rtol, or to one float (z's rounding, in force): f stays.
+        stays = (resid == 0) | (~stepped & ((hi - lo <= rtol * hi) | (np.nextafter(lo, hi) == hi)))
+        inside = (newton > lo) & (newton < hi)
+        f = np.where(stays, f, np.where(inside | stepped, newton, 0.5 * (lo + hi)))
+        if np.all(stays | stepped):
             break
+    else:
+        raise RuntimeError("Newton's method did not converge on the series force")
     force[active] = f
     return force[()] if force.ndim == 0 else force
 
 
-def _scalar_force(laws, z: float, f_max: float, rtol: float) -> float:
+def _scalar_force(laws, z: float, f_max: float, rtol: float, guess=None) -> float:
     """:func:`series_force` for one ``z`` and ``f_max`` in Python floats (an ODE's
     right-hand side calls it once per evaluation, where array overhead would dominate):
-    Newton's method from the loading line's force, bisection whenever it leaves the
-    bracket.
+    Newton's method from ``guess`` (or the loading line's force), doubling the force until
+    the root is bracketed and bisecting whenever a step would leave the bracket.
     """
 
     def resid(f):
@@ -119,18 +134,28 @@ def _scalar_force(laws, z: float, f_max: float, rtol: float) -> float:
 
     if resid(0.0) >= 0.0:
         return 0.0
-    lo, hi = 0.0, max(f_max, z / float(series_compression(laws, 1.0, 1.0)))
-    for _ in range(2100):  # grow the bracket until it holds the root
-        if resid(hi) >= 0.0:
-            break
-        lo, hi = hi, 2.0 * hi
-    f = hi
-    for _ in range(200):
+    lo, hi = 0.0, math.inf
+    if guess is not None and guess > 0.0 and math.isfinite(guess):
+        f = float(guess)
+    else:
+        f = max(f_max, z / float(series_compression(laws, 1.0, 1.0)))
+    for _ in range(_ITERATIONS):
         r = resid(f)
+        if r == 0.0:
+            return f
         lo, hi = (f, hi) if r < 0.0 else (lo, f)
         slope = float(series_compliance(laws, f, f_max))
-        f_new = f - r / slope if slope > 0.0 and math.isfinite(slope) else lo
-        if r == 0.0 or abs(f_new - f) <= rtol * abs(f_new):
-            return f_new
-        f = f_new if lo < f_new < hi else 0.5 * (lo + hi)
-    return f
+        f_new = math.nan  # no Newton step on a vertical or undefined branch
+        if slope > 0.0 and math.isfinite(slope):
+            f_new = f - r / slope
+            if abs(f_new - f) <= rtol * abs(f_new):
+                return f_new
+        if hi < math.inf and (hi - lo <= rtol * hi or math.nextafter(lo, hi) == hi):
+            return f  # bracketed to rtol, or to one float (z's rounding, in force)
+        if lo < f_new < hi:
+            f = f_new
+        elif math.isinf(hi):
+            f = 2.0 * f
+        else:
+            f = 0.5 * (lo + hi)
+    raise RuntimeError(f"no force compresses the laws by z = {z!r} m")

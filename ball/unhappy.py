@@ -179,7 +179,7 @@ def unhappy_contact(
         History points returned.
     force_tol : float
         Without a fold the force decays to zero only as t -> infinity; stop when it has
-        fallen to this fraction of its peak.
+        fallen to this fraction [-] of its peak.
 
     Returns
     -------

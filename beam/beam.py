@@ -59,7 +59,7 @@ class Beam:
         lateral offset from the long axis [m] (default 0; it counts only in the roll
         inertia, the bending modes are of the long axis).
     damping : float or sequence of float
-        Modal damping ratio of each bending mode, in [0, 1): one value for all, or one per
+        Modal damping ratio [-] of each bending mode, in [0, 1): one value for all, or one per
         mode.  Default :data:`DEFAULT_DAMPING`.
     n_modes : int
         Number of bending modes, in [1, :data:`MAX_MODES`].  Default :data:`DEFAULT_MODES`.

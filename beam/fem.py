@@ -23,7 +23,7 @@ def hermite(s: np.ndarray, length: np.ndarray) -> np.ndarray:
     Parameters
     ----------
     s : ndarray
-        Local coordinate along each element, 0 at its start and 1 at its end.
+        Local coordinate [-] along each element, 0 at its start and 1 at its end.
     length : ndarray
         Length of the element at each ``s`` [m] (scales the slope functions).
     """
@@ -147,10 +147,10 @@ def assemble(stations, mass_per_length, bending_stiffness, point_masses, element
     dofs = 2 * np.arange(l.size)[:, None] + np.arange(4)[None, :]
     rows = np.repeat(dofs, 4, axis=1).ravel()
     cols = np.tile(dofs, (1, 4)).ravel()
-    k = np.zeros((n_dof, n_dof))
-    m = np.zeros((n_dof, n_dof))
-    np.add.at(k, (rows, cols), k_e.ravel())
-    np.add.at(m, (rows, cols), m_e.ravel())
+    # Sum the element matrices into the global ones (bincount: np.add.at is ten times slower).
+    flat = rows * n_dof + cols
+    k = np.bincount(flat, k_e.ravel(), n_dof * n_dof).reshape(n_dof, n_dof)
+    m = np.bincount(flat, m_e.ravel(), n_dof * n_dof).reshape(n_dof, n_dof)
     for x_p, m_p in point_masses:
         i = 2 * int(np.argmin(np.abs(nodes - x_p)))
         m[i, i] += m_p
@@ -211,7 +211,8 @@ class FemShapes:
     nodes : ndarray
         Mesh nodes [m from the tip].
     vectors : ndarray
-        (2 nodes, modes) mass-normalised eigenvectors (deflection, slope per node).
+        (2 nodes, modes) mass-normalised eigenvectors (deflection [1/sqrt(kg)],
+        slope [1/(sqrt(kg) m)] per node).
     """
 
     nodes: np.ndarray
@@ -279,7 +280,7 @@ class FemFlexibility:
         Mesh nodes [m from the tip].
     blocks : ndarray
         (elements, 4, 4) the flexibility matrix's block between each element's degrees of
-        freedom (deflection and slope at both ends), all that a point inside it needs.
+        freedom (deflection and slope at both ends) [SI], all that a point inside it needs.
     """
 
     nodes: np.ndarray

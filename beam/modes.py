@@ -22,7 +22,7 @@ class Modes:
     omega : ndarray
         Angular frequency of each mode [rad/s] (0 for the two rigid-body modes).
     damping : ndarray
-        Modal damping ratio of each mode (0 for the rigid-body modes).
+        Modal damping ratio [-] of each mode (0 for the rigid-body modes).
     mass, center_of_mass, inertia_cm : float
         Total mass [kg], centre of mass [m from the tip], moment of inertia about it [kg m^2].
     length : float

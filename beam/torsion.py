@@ -33,7 +33,7 @@ class RollModes:
     omega : ndarray
         Angular frequency of each mode [rad/s]: 0 for the rigid roll, then the torsion modes.
     damping : ndarray
-        Modal damping ratio of each mode (0 for the rigid roll).
+        Modal damping ratio [-] of each mode (0 for the rigid roll).
     roll_inertia : float
         Moment of inertia about the long axis [kg m^2].
     nodes : ndarray
@@ -115,7 +115,7 @@ def roll_modes(
     n_modes : int
         Torsion modes to keep (beyond the rigid roll).
     damping : float
-        Modal damping ratio of every torsion mode.
+        Modal damping ratio [-] of every torsion mode.
     elements : int
         Elements along the beam (about).
     """

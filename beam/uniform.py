@@ -48,7 +48,7 @@ def shapes(beta_l: np.ndarray, xi) -> np.ndarray:
     Parameters
     ----------
     beta_l : ndarray
-        Roots bL of the modes wanted (see :func:`free_free_roots`).
+        Roots bL [-] of the modes wanted (see :func:`free_free_roots`).
     xi : float or array_like
         Fractional positions x / L along the beam, in [0, 1].
     """
@@ -76,7 +76,7 @@ class UniformShapes:
     Parameters
     ----------
     beta_l : ndarray
-        Roots bL of the modes kept.
+        Roots bL [-] of the modes kept.
     length : float
         Beam length [m].
     scale : float

@@ -113,7 +113,7 @@ def in_range(name: str, value, low: float, high: float, unit: str = "", hint: st
     value : object
         The value to check, in ``unit``.
     low, high : float
-        The bounds, inclusive, in ``unit``.
+        The bounds [``unit``], inclusive, in ``unit``.
     unit : str, optional
         Its unit, as the message quotes it (e.g. ``"m/s"``); "" for none.
     hint : str, optional
@@ -153,7 +153,7 @@ def finite_array(name: str, values, unit: str = "") -> np.ndarray:
     name : str
         The argument's name, as the message quotes it.
     values : array_like
-        The values to check, in ``unit``.
+        The values to check [``unit``], in ``unit``.
     unit : str, optional
         Its unit, as the message quotes it (e.g. ``"m/s"``); "" for none.
     """

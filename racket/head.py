@@ -94,7 +94,7 @@ def ellipse_axes(area: float, aspect: float = HEAD_ASPECT) -> tuple[float, float
     area : float
         Area of the ellipse [m^2].
     aspect : float, optional
-        Length / width of the ellipse.
+        Length / width of the ellipse [-].
     """
     along = np.sqrt(area * aspect / np.pi)
     return float(along), float(along / aspect)

@@ -49,7 +49,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit, prange
+from numba import njit
 
 from ball.laws import COR_FLOOR
 from racket.layout import (
@@ -233,9 +233,9 @@ def sine_step(k0, x_o, a, z_pred, x_n, cross_tol):
     return 0.0, x_o, -math.inf  # force back to zero at X = Xo: the contact opens
 
 
-@njit(cache=True, parallel=True)
-def run_impacts(frame, points, ball, controls, out):
-    """Advance P impacts from first touch until the ball has left for good.
+@njit(cache=True, nogil=True)
+def run_impacts(frame, points, ball, controls, out, start, stop):
+    """Advance impacts ``start`` to ``stop`` of P from first touch until the ball has left for good.
 
     The racket is a linear system in real 2x2 blocks (:mod:`racket.system`).  The outputs
     are the states at the final separation (see the module docstring).
@@ -253,8 +253,11 @@ def run_impacts(frame, points, ball, controls, out):
     out : racket.layout.Outputs
         Filled: ball and block states at the final separation, summary numbers and
         histories of the first T steps (if recorded).
+    start, stop : int
+        The slice of the P impacts to run (compiled with ``nogil``, so that threads can run
+        slices at once: :func:`racket.solver._run_on_threads`).
     """
-    for p in prange(points.ball_velocity.size):
+    for p in range(start, stop):
         _one_impact(frame, points, ball, controls, out, p)
 
 
@@ -398,7 +401,9 @@ def _one_impact(frame, points, ball, controls, out, p):
                 stop_at = step + controls.extra_steps
     out.ball[p, 0] = sep_u
     out.ball[p, 1] = sep_ud
-    out.state[p] = sep_s
+    for j in range(nb):  # element by element: a slice copy compiles numba's shape check
+        out.state[p, j, 0] = sep_s[j, 0]
+        out.state[p, j, 1] = sep_s[j, 1]
     summary = out.summary[p]
     summary[T_END] = sep_step * dt
     summary[T_CONTACT] = sep_contact

@@ -24,12 +24,12 @@ class Frame(NamedTuple):
     blocks : ndarray (nb, 2, 2)
         The blocks: s' = blocks s (+ the force's input) [1/s].
     trans, g0, g1 : ndarray (nb, 2, 2)
-        Exact step of each block, s_next = trans s + g0 u_start + g1 u_end, for a block
+        Exact step of each block [SI], s_next = trans s + g0 u_start + g1 u_end, for a block
         input u varying linearly over the step.
     metric : ndarray (nb, 2)
-        sqrt(metric . s**2) bounds a block's future amplitude.
+        sqrt(metric . s**2) bounds a block's future amplitude [SI].
     damp_blocks : ndarray (R, K) of int
-        The K blocks of each row r that can be non-zero (one for a free racket's diagonal
+        The K blocks of each row r that can be non-zero [-] (one for a free racket's diagonal
         damping).
     damp_rows : ndarray (R, K, 2)
         Dissipated power [W] = sum_r (sum_k damp_rows[r, k] . s[damp_blocks[r, k]])**2.
@@ -50,12 +50,12 @@ class Points(NamedTuple):
     Attributes
     ----------
     unit : ndarray (P, nb, 2)
-        Each block's input from a unit contact force at the impact point.
+        Each block's input from a unit contact force at the impact point [SI].
     out_d, out_v, out_dc : ndarray (P, nb, 2)
         Rows giving the impact point's displacement [m], velocity [m/s] and dc (rigid-body)
         velocity [m/s] from the block states.
     reach_w : ndarray (P, nb)
-        Size of each block's share of the point's displacement (0 for dc).
+        Size of each block's share of the point's displacement [SI] (0 for dc).
     series : ndarray (P,)
         Compliance in series with the ball [m/N]: the string bed's, plus the residual
         flexibility of the bending (and torsion) modes left out (static correction).
@@ -65,7 +65,7 @@ class Points(NamedTuple):
     ball_velocity : ndarray (P,)
         Ball velocity at first touch [m/s], towards the racket positive.
     state0 : ndarray (P, nb, 2)
-        Block states at first touch (a swung racket's rigid-body motion).
+        Block states at first touch [SI] (a swung racket's rigid-body motion).
     x_o : ndarray (P,)
         The sine law's Xo [m] (ignored by the other laws).
     """
@@ -92,11 +92,11 @@ class BallModel(NamedTuple):
     trans : ndarray (2, 2)
         Exact step of the ball's state (displacement [m], velocity [m/s]), as for a block.
     g0, g1 : ndarray (2,)
-        Input of the force at the start and at the end of the step, as for a block.
+        Input of the force at the start and at the end of the step, as for a block [SI].
     law : int
         The law's code: LINEAR, POWER, SINE or GROWING.
     params : ndarray (4,)
-        The law's numbers (SI).
+        The law's numbers [SI].
     """
 
     trans: np.ndarray
@@ -119,10 +119,10 @@ class Controls(NamedTuple):
         Steps to go on after the ball has left for good.
     force_tol : float
         A sine-law contact approaching a common speed without a fold ends when its force
-        has fallen to this fraction of its peak and the relative speed to this fraction of
+        has fallen to this fraction [-] of its peak and the relative speed to this fraction of
         the closing speed.
     cross_tol : float
-        A sine-law ball closer than this times Xo to its fold's maximum may cross the fold.
+        A sine-law ball closer than this times Xo [-] to its fold's maximum may cross the fold.
     stop_on_snap : bool
         Stop an impact at its first snap (an Xo search needs no more).
     record : bool
@@ -148,11 +148,11 @@ class Outputs(NamedTuple):
     ball : ndarray (P, 2)
         Ball state (displacement [m], velocity [m/s]) when the ball finally left.
     state : ndarray (P, nb, 2)
-        Block states when the ball finally left.
+        Block states when the ball finally left [SI].
     summary : ndarray (P, N_SUMMARY)
-        Per-impact summary, columns T_END, T_CONTACT, ... (SI).
+        Per-impact summary, columns T_END, T_CONTACT, ... [SI].
     history : ndarray (N_HISTORY, P, T)
-        Histories of the first T steps, rows H_FORCE, H_BALL_COMP, ... (SI).
+        Histories of the first T steps, rows H_FORCE, H_BALL_COMP, ... [SI].
     """
 
     ball: np.ndarray

@@ -33,9 +33,11 @@ flagged (``Impact.self_consistent``) and a warning says how many are.
 from __future__ import annotations
 
 import contextlib
+import itertools
 import sys
 import threading
 import warnings
+from concurrent.futures import ThreadPoolExecutor
 from contextlib import contextmanager
 from dataclasses import dataclass
 
@@ -47,8 +49,8 @@ from common.checks import speed as check_speed
 from racket import layout
 from racket.racket import Racket
 
-COMPILE_SECONDS = 20
-"""About how long numba takes to compile the kernel on a 2-core machine (measured 12-18 s)."""
+COMPILE_SECONDS = 15
+"""About how long numba takes to compile the kernel on a 2-core machine (measured 12-15 s)."""
 
 DEFAULT_STEPS_PER_CONTACT = 300
 """Time steps per estimated contact time for the monotone ball laws.  With the static
@@ -111,6 +113,10 @@ IMPACTS_PER_THREAD = 8
 """Smallest share of a batch's impacts worth a thread of its own (one impact takes about
 20 us; starting a thread about as long)."""
 
+SLICES_PER_THREAD = 4
+"""Slices of a batch per thread: impacts near the frame last longer than at the centre, so
+a thread that finishes early takes another slice."""
+
 
 _HISTORY_ROWS = {
     "force": layout.H_FORCE,
@@ -160,13 +166,13 @@ class Impact:
     swing_speed : float or ndarray
         Racket (impact-point) speed towards the ball before impact [m/s].
     e : float or ndarray
-        COR from the dc (rigid-body) motion, Eq. 21 / Eq. 1.
+        COR [-] from the dc (rigid-body) motion, Eq. 21 / Eq. 1.
     e_A : float or ndarray
-        Apparent COR V1 / v1 of a racket at rest; for a swung racket (impact point at v2
+        Apparent COR V1 / v1 [-] of a racket at rest; for a swung racket (impact point at v2
         towards the ball) the same in the frame of the swing, (V1 - v2) / (v1 + v2), which
         equals the racket at rest's at the closing speed v1 + v2 (the swing superposes).
     e_van_zandt : float or ndarray
-        COR with the vibration at separation wrongly included (Sec. VII).
+        COR [-] with the vibration at separation wrongly included (Sec. VII).
     effective_mass : float or ndarray
         Racket effective mass at the impact point [kg] (Eq. 20, with y^2 / I_roll off the
         axis; for the free racket, also quoted for a hand-held one; inf clamped).
@@ -205,9 +211,9 @@ float or ndarray
         The unhappy ball's Xo [m], the smallest that does not snap (NaN for other laws).
     self_consistent : bool or ndarray
         The unhappy ball's compression at separation equals Xo (to
-        ``SELF_CONSISTENT_TOL``); always True for other laws.
+        ``SELF_CONSISTENT_TOL``) [-]; always True for other laws.
     recontacts : int or ndarray
-        Times the frame caught the ball again after it had left.
+        Times the frame caught the ball again after it had left [-].
     t : ndarray or None
         (T,) time since first touch [s] of the histories (None unless ``histories``).
     force, ball_compression, string_deflection, ball_velocity, point_velocity, \
@@ -666,8 +672,9 @@ class _Stepper:
         )
         from racket import kernel  # numba loads on first use (import time)
 
-        with _compile_notice(kernel.run_impacts), _kernel_threads(count):
-            kernel.run_impacts(self.frame, points, self.ball, controls, out)
+        args = (self.frame, points, self.ball, controls, out)
+        with _compile_notice(kernel.run_impacts):
+            _run_on_threads(kernel.run_impacts, args, count)
         return out
 
 
@@ -688,23 +695,23 @@ def _one_blas_thread():
         yield
 
 
-@contextmanager
-def _kernel_threads(count: int):
-    """Run a batch of ``count`` impacts on one thread per ``IMPACTS_PER_THREAD`` of them
-    (a thread costs more to start than a few impacts take), at most numba's thread count.
+def _run_on_threads(run, args, count: int):
+    """Run ``run(*args, start, stop)`` (the kernel, which releases the GIL) over the
+    ``count`` impacts, split into slices on one thread per ``IMPACTS_PER_THREAD`` of them
+    (a thread costs more to start than a few impacts take), at most ``NUMBA_NUM_THREADS``
+    (numba's setting: the cores available, or the environment variable).  Each thread takes
+    slices in turn, a few each, since impacts differ in length.
     """
-    import numba
+    from numba import config
 
-    before = numba.get_num_threads()
-    wanted = max(1, min(before, count // IMPACTS_PER_THREAD))
-    if wanted == before:
-        yield
+    threads = max(1, min(config.NUMBA_NUM_THREADS, count // IMPACTS_PER_THREAD))
+    if threads == 1:
+        run(*args, 0, count)
         return
-    numba.set_num_threads(wanted)
-    try:
-        yield
-    finally:
-        numba.set_num_threads(before)
+    edges = np.linspace(0, count, SLICES_PER_THREAD * threads + 1).astype(int)
+    with ThreadPoolExecutor(threads) as pool:
+        for done in [pool.submit(run, *args, a, b) for a, b in itertools.pairwise(edges)]:
+            done.result()  # re-raises a slice's error
 
 
 @contextmanager

@@ -347,7 +347,7 @@ def block_diag(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     Parameters
     ----------
     a, b : ndarray
-        The two 2-D blocks of the diagonal.
+        The two 2-D blocks of the diagonal [SI].
     """
     out = np.zeros((a.shape[0] + b.shape[0], a.shape[1] + b.shape[1]))
     out[: a.shape[0], : a.shape[1]] = a

@@ -85,7 +85,7 @@ def server(input, output, session):
         if not _WARM.is_set():
             reactive.invalidate_later(1.0)
             return ui.div(
-                "Warming up: compiling the solver (once per machine, about 20 s)...",
+                "Warming up: compiling the solver (once per machine, about 15 s)...",
                 id="warming-up",
                 class_="alert alert-warning",
             )

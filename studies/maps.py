@@ -49,7 +49,7 @@ class FaceMap:
         o'clock]: ``ny`` evenly spaced over the row's chord, so that the grid fills the face
         (where the ball's centre may land).
     e, e_A : (nx, ny) ndarray
-        COR from the dc motion (Eq. 21) and apparent COR, stationary racket.
+        COR from the dc motion (Eq. 21) and apparent COR [-], stationary racket.
     exit_speed : (nx, ny) ndarray
         Ball speed after the impact, stationary racket [m/s].
     exit_speed_swung : (nx, ny) ndarray or None
@@ -57,11 +57,11 @@ class FaceMap:
         without a swing.
     vibration_energy : (nx, ny) ndarray
         Vibration energy left in the frame (bending and torsion modes, and the hand's
-        spring if held) as a fraction of the ball's incoming kinetic energy, racket at rest.
+        spring if held) as a fraction of the ball's incoming kinetic energy [-], racket at rest.
     roll_rate : (nx, ny) ndarray
         The racket's twist rate about its long axis after the impact [rad/s], stationary.
     e_A_centre, e_A_side : float
-        e_A at the string bed's centre, on the axis and at 3 o'clock ``side_offset`` off it
+        e_A [-] at the string bed's centre, on the axis and at 3 o'clock ``side_offset`` off it
         (the ball's centre ``margin`` inside the frame), stationary.
     side_offset : float
         Where ``e_A_side`` is taken [m from the long axis].
@@ -74,7 +74,7 @@ class FaceMap:
     center_of_percussion : float
         For a pivot at the hand (:data:`studies.landmarks.HAND_FROM_BUTT`) [m from the tip].
     sweet_threshold : float
-        e_A above which a point is in the sweet area.
+        e_A [-] above which a point is in the sweet area.
     sweet_area_cm2 : float
         Area of the face where e_A >= ``sweet_threshold`` [cm^2] (a bicubic spline through
         the grid, counted on a grid :data:`_FINE` times finer).

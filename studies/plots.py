@@ -72,9 +72,9 @@ def draw_racket(racket: Racket, ax, y0: float, height: float):
     ax : Axes
         The Axes to draw on (x in cm from the tip).
     y0 : float
-        Bottom of the band, in the Axes' y data units.
+        Bottom of the band [data units], in the Axes' y data units.
     height : float
-        Height of the band, in the Axes' y data units.
+        Height of the band [data units], in the Axes' y data units.
     """
     length = racket.beam.length * 100
     start, end = (100 * v for v in racket.strings.extent)
@@ -344,7 +344,7 @@ def plot_cor_vs_stiffness(
     k0 : float, optional
         The unhappy ball's Fo / Xo [N/m].
     ratios : array_like, optional
-        Values of k2 / k0 to integrate; None: 16 from 0.05 to 10, spaced geometrically.
+        Values of k2 / k0 [-] to integrate; None: 16 from 0.05 to 10, spaced geometrically.
     mass : float, optional
         Mass of each ball [kg].
     speed : float, optional

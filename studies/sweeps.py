@@ -161,10 +161,10 @@ def sweep(
     progress : bool, optional
         Show a progress bar; default: when standard error is a terminal.
     executor : concurrent.futures.Executor, optional
-        Run the grid points on it (e.g. a ``ProcessPoolExecutor`` with a "spawn" context,
-        since numba's threads do not survive a fork of a process that has used them; or a
-        Dask cluster's ``client.get_executor()``); rackets, balls and their modes are
-        picklable.  Default: one after the other in this process.
+        Run the grid points on it (e.g. a ``ProcessPoolExecutor``, forked or spawned: the
+        solver's threads end with each call; or a Dask cluster's ``client.get_executor()``);
+        rackets, balls and their modes are picklable.  Default: one after the other in this
+        process.
 
     Returns
     -------

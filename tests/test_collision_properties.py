@@ -2,6 +2,7 @@
 
 import math
 
+import numpy as np
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -15,6 +16,7 @@ from ball import (
     SineLaw,
     collide,
 )
+from ball.series import series_compression, series_force
 
 stiffness = st.floats(1e3, 1e6)
 cor = st.floats(0.0, 1.0)
@@ -78,3 +80,35 @@ def test_unhappy_ball_with_any_partner(m_u, k0, partner, closing, unhappy_first)
         a, b = other, u
     r = collide(a, b, closing)
     check_invariants(r, a, b)
+
+
+def bracketed(laws, f, f_max, z):
+    """The force f is the root of compression(f) = z to 1e-12, or to one float where the
+    root is a subnormal number (a nearly vertical unloading curve)."""
+    if f == 0.0:
+        return z <= float(series_compression(laws, 0.0, f_max)) * (1 + 1e-12)
+    below = min(f * (1 - 1e-12), math.nextafter(f, 0.0))
+    above = max(f * (1 + 1e-12), math.nextafter(f, math.inf))
+
+    def z_at(force):
+        return float(series_compression(laws, force, max(force, f_max)))
+
+    return z_at(below) <= z * (1 + 1e-14) and z_at(above) >= z * (1 - 1e-14)
+
+
+@settings(max_examples=200, deadline=None)
+@given(
+    st.lists(monotone_laws, min_size=1, max_size=2),
+    st.floats(0.0, 1e4),
+    st.floats(1e-3, 10.0),
+    st.floats(0.0, 2.0),
+)
+def test_series_force_solves_the_series_law_from_any_guess(laws, f_max, scale, guess_ratio):
+    # z anywhere from the open contact to 10x the compression at f_max, on any branch: the
+    # force must compress the laws by z wherever Newton's method starts, scalar or array.
+    z = scale * float(series_compression(laws, max(f_max, 1.0), max(f_max, 1.0)))
+    unguessed = series_force(laws, z, f_max)
+    guessed = series_force(laws, z, f_max, guess=guess_ratio * unguessed)
+    (array,) = series_force(laws, np.array([z]), np.array([f_max]))
+    for force in (unguessed, guessed, array):
+        assert bracketed(laws, force, f_max, z)

@@ -1,10 +1,12 @@
 """Every public function and class documents each of its parameters in a numpydoc section
-(as python-control's docstring test does); the checker itself is shown to fail on a
-docstring that lost a parameter (issue 15)."""
+(as python-control's docstring test does), every number with its unit in brackets; the
+checkers themselves are shown to fail on a docstring that lost a parameter or a unit
+(issue 15)."""
 
 import importlib
 import inspect
 import pkgutil
+import re
 import warnings
 
 import pytest
@@ -12,6 +14,38 @@ from numpydoc.docscrape import ClassDoc, FunctionDoc
 
 PACKAGES = ("ball", "beam", "racket", "studies", "common")
 SKIP_MODULES = ("studies.app", "studies.cli")  # the page's callbacks and the argparse layer
+
+
+NUMERIC = re.compile(r"\b(float|complex|array|ndarray|array_like)\b")
+"""Types that carry a physical quantity (ints are counts and indices)."""
+
+UNIT = re.compile(r"\[[^\]]+\]")
+"""A unit in brackets: ``[kg]``, ``[m/s]``; ``[-]`` for a dimensionless number, ``[SI]`` for
+an array whose rows hold different quantities, each in SI."""
+
+
+def _doc(obj):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        return ClassDoc(obj) if inspect.isclass(obj) else FunctionDoc(obj)
+
+
+def _items(doc):
+    return [
+        item
+        for section in ("Parameters", "Other Parameters", "Attributes")
+        for item in doc[section]
+    ]
+
+
+def without_unit(obj) -> list[str]:
+    """The documented numeric parameters of ``obj`` whose type or description gives no unit
+    in brackets."""
+    return [
+        item.name
+        for item in _items(_doc(obj))
+        if NUMERIC.search(item.type) and not UNIT.search(" ".join([item.type, *item.desc]))
+    ]
 
 
 def undocumented(obj) -> list[str]:
@@ -28,15 +62,7 @@ def undocumented(obj) -> list[str]:
         and not name.startswith("_")
         and p.kind not in (p.VAR_KEYWORD, p.VAR_POSITIONAL)
     ]
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        doc = ClassDoc(obj) if inspect.isclass(obj) else FunctionDoc(obj)
-    documented = {
-        part.strip()
-        for section in ("Parameters", "Other Parameters", "Attributes")
-        for item in doc[section]
-        for part in item.name.split(",")
-    }
+    documented = {part.strip() for item in _items(_doc(obj)) for part in item.name.split(",")}
     return [name for name in names if name not in documented]
 
 
@@ -78,8 +104,40 @@ def test_the_checker_catches_a_parameter_missing_from_a_docstring():
     assert undocumented(one_lost) == ["speed"]
 
 
+def test_the_checker_catches_a_number_without_its_unit():
+    def with_units(mass, e, count):
+        """A fixture.
+
+        Parameters
+        ----------
+        mass : float
+            Ball mass [kg].
+        e : float
+            Coefficient of restitution [-].
+        count : int
+            How many.
+        """
+
+    def unit_lost(mass, e, count):
+        """A fixture.
+
+        Parameters
+        ----------
+        mass : float
+            Ball mass [kg].
+        e : float
+            Coefficient of restitution.
+        count : int
+            How many.
+        """
+
+    assert without_unit(with_units) == []
+    assert without_unit(unit_lost) == ["e"]
+
+
 @pytest.mark.parametrize(
     "name, obj", list(_public()), ids=lambda v: v if isinstance(v, str) else ""
 )
 def test_every_public_parameter_is_documented(name, obj):
     assert undocumented(obj) == [], f"{name}: parameters missing from the docstring"
+    assert without_unit(obj) == [], f"{name}: numbers without a unit in brackets"

@@ -83,11 +83,13 @@ def test_sweep_on_a_process_pool_matches_the_serial_sweep():
     racket = paper_racket()
     assert racket.beam.modes.count == 10  # computed modes travel with the racket
     assert pickle.loads(pickle.dumps(racket)).beam.modes.frequencies[0] == pytest.approx(120.0)
-    x = np.linspace(0.0, 0.32, 5)
+    # 40 points: the serial sweep runs the kernel on threads before the pool forks.
+    x = np.linspace(0.0, 0.32, 40)
     kwargs = dict(f1=[120.0, 150.0], string_stiffness=[3e4, 4e4], progress=False)
     serial = sweep(racket, tennis_ball(), x, [10.0, 20.0], **kwargs)
-    # "spawn": numba's threads do not survive a fork of a process that has used them.
-    spawn = multiprocessing.get_context("spawn")
-    with ProcessPoolExecutor(max_workers=2, mp_context=spawn) as pool:
+    # "fork" (Linux's default before Python 3.14): the kernel's threads end with each call,
+    # so a forked worker starts clean (numba's own parallel threads did not survive a fork).
+    fork = multiprocessing.get_context("fork")
+    with ProcessPoolExecutor(max_workers=2, mp_context=fork) as pool:
         parallel = sweep(racket, tennis_ball(), x, [10.0, 20.0], executor=pool, **kwargs)
     assert parallel.equals(serial)

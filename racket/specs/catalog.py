@@ -44,7 +44,7 @@ class Entry:
     sources : dict
         Where each of ``specs`` comes from, by the same keywords.
     published_ra : float, optional
-        The RA rating the maker or a test publishes (kept for when the RA scale is
+        The RA rating [-] the maker or a test publishes (kept for when the RA scale is
         calibrated; not used in the fit).
     notes : str, optional
         Remarks on the numbers.

@@ -188,7 +188,7 @@ def from_specs(*, support: str = "free", **specs) -> Racket:
         Measured first torsion frequency of the free frame [Hz]; default: GJ from EI by
         the tube rule (:mod:`racket.specs.stiffness`).
     head_size_in2, head_size_cm2 : float
-        Head (string-bed) area.  Give one.
+        Head (string-bed) area [in^2 or cm^2].  Give one.
     beam_width_mm : float or (float, float, float), optional
         Frame depth across the string plane [mm]: one value, or the tip, sides and throat
         (as "23/26/22 mm" on spec sheets).  It shapes the stiffness profile.

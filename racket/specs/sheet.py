@@ -34,7 +34,7 @@ class SpecSheet:
     f1 : float or None
         Frame stiffness as the first free-free bending frequency of the strung frame [Hz],
     ra : float or None
-        or as its RA rating (refused by the fit, see :mod:`racket.specs.stiffness`),
+        or as its RA rating [-] (refused by the fit, see :mod:`racket.specs.stiffness`),
     flex : (float, float) or None
         or as a flex test: tip deflection [m] under a tip load [N].  Exactly one of the three.
     head_area : float
@@ -203,12 +203,12 @@ def spec_sheet(
     balance_cm : float, optional
         Balance point [cm from the butt].
     balance_pts_hl : float, optional
-        Balance in points head-light (1 pt = 1/8 in = 3.175e-3 m from the middle; negative
+        Balance in points head-light [pt] (1 pt = 1/8 in = 3.175e-3 m from the middle; negative
         = head-heavy).  Give exactly one of ``balance_cm`` and ``balance_pts_hl``.
     f1_hz : float, optional
         First free-free bending frequency of the strung frame [Hz].
     ra : float, optional
-        RA rating (dimensionless; refused by the fit until the RA scale is calibrated).
+        RA rating [-] (dimensionless; refused by the fit until the RA scale is calibrated).
     flex_deflection_mm : float, optional
         Tip deflection in a flex test [mm] under ``flex_load_n``.  Give exactly one of
         ``f1_hz``, ``ra`` and ``flex_deflection_mm``.
