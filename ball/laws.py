@@ -232,9 +232,9 @@ class PowerLawHysteresis(_PowerBranches):
     k : float
         Stiffness coefficient [N/m**a], > 0.
     a : float
-        Loading exponent, in [0.5, 5] (1 is linear, 1.5 is Hertzian).
+        Loading exponent [-], in [0.5, 5] (1 is linear, 1.5 is Hertzian).
     b : float
-        Unloading exponent, in [a, 1000] (b = a is elastic; b = 1000 leaves a COR of about
+        Unloading exponent [-], in [a, 1000] (b = a is elastic; b = 1000 leaves a COR of about
         0.05 at a = 1.5, and the contact time grows without bound as b does).
     """
 
@@ -305,7 +305,7 @@ class GrowingHysteresis(_PowerBranches):
     k : float
         Stiffness coefficient [N/m**a], > 0.
     a : float
-        Loading exponent, in [1, 3].
+        Loading exponent [-], in [1, 3].
     e0 : float
         COR of a vanishingly slow bounce on a rigid surface [-], in (COR_FLOOR, 1].
     slope : float

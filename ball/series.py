@@ -81,8 +81,12 @@ def series_force(laws: Sequence[MonotoneLaw], z, f_max, rtol: float = 1e-14, gue
         answer is the same to ``rtol``.
     """
     if np.ndim(z) == 0 and np.ndim(f_max) == 0:
+        if not (math.isfinite(z) and math.isfinite(f_max)):
+            raise ValueError(f"z and f_max must be finite, got z={z!r}, f_max={f_max!r}")
         return _scalar_force(laws, float(z), float(f_max), rtol, guess)
     z, f_max = np.broadcast_arrays(np.asarray(z, dtype=float), np.asarray(f_max, dtype=float))
+    if not (np.all(np.isfinite(z)) and np.all(np.isfinite(f_max))):
+        raise ValueError("z and f_max must be finite, got a NaN or an infinity")
     z = z.astype(float, copy=True)
     force = np.zeros(z.shape)
     active = z > series_compression(laws, np.zeros(z.shape), f_max)
@@ -109,7 +113,11 @@ def series_force(laws: Sequence[MonotoneLaw], z, f_max, rtol: float = 1e-14, gue
         with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
             # No Newton step on a vertical or undefined branch.
             newton = np.where((slope > 0) & np.isfinite(slope), f - resid / slope, np.nan)
-        stepped = np.abs(newton - f) <= rtol * np.abs(newton)  # Newton converged
+        # Newton converged: a small step that stays in the bracket and on its branch (the
+        # slope changes at f_max).
+        crosses = ((newton < fm_a) & (fm_a <= f)) | ((f < fm_a) & (fm_a < newton))
+        kept = (newton >= lo) & (newton <= hi) & ~crosses
+        stepped = kept & (np.abs(newton - f) <= rtol * np.abs(newton))
         # Bracketed to rtol, or to one float (z's rounding, in force): f stays.
         stays = (resid == 0) | (~stepped & ((hi - lo <= rtol * hi) | (np.nextafter(lo, hi) == hi)))
         inside = (newton > lo) & (newton < hi)
@@ -148,7 +156,11 @@ def _scalar_force(laws, z: float, f_max: float, rtol: float, guess=None) -> floa
         f_new = math.nan  # no Newton step on a vertical or undefined branch
         if slope > 0.0 and math.isfinite(slope):
             f_new = f - r / slope
-            if abs(f_new - f) <= rtol * abs(f_new):
+            # A small step is converged unless it left the bracket or crossed f_max, where
+            # the branch (and the slope it was taken with) changes.
+            crosses = f_new < f_max <= f or f < f_max < f_new
+            kept = lo <= f_new <= hi and not crosses
+            if kept and abs(f_new - f) <= rtol * abs(f_new):
                 return f_new
         if hi < math.inf and (hi - lo <= rtol * hi or math.nextafter(lo, hi) == hi):
             return f  # bracketed to rtol, or to one float (z's rounding, in force)

@@ -50,7 +50,7 @@ def shapes(beta_l: np.ndarray, xi) -> np.ndarray:
     beta_l : ndarray
         Roots bL [-] of the modes wanted (see :func:`free_free_roots`).
     xi : float or array_like
-        Fractional positions x / L along the beam, in [0, 1].
+        Fractional positions x / L along the beam [-], in [0, 1].
     """
     bl = np.asarray(beta_l, dtype=float)[:, None]
     u = bl * np.atleast_1d(np.asarray(xi, dtype=float))[None, :]

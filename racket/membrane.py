@@ -39,7 +39,7 @@ def stiffness_ratio(rho2, radius: float) -> np.ndarray:
     Parameters
     ----------
     rho2 : float or array_like
-        Squared elliptical radius, 0 at the centre and 1 at the frame (clipped to [0, 1]).
+        Squared elliptical radius [-], 0 at the centre and 1 at the frame (clipped to [0, 1]).
     radius : float
         Radius of the circle of the bed's area [m].
     """

@@ -3,6 +3,7 @@
 import math
 
 import numpy as np
+import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -112,3 +113,30 @@ def test_series_force_solves_the_series_law_from_any_guess(laws, f_max, scale, g
     (array,) = series_force(laws, np.array([z]), np.array([f_max]))
     for force in (unguessed, guessed, array):
         assert bracketed(laws, force, f_max, z)
+
+
+def test_series_force_edge_cases_found_in_review():
+    # A near-vertical unloading (e = 1e-155): a Newton step of -inf must not count as
+    # converged; the force at z on the unloading line is 40 N wherever Newton starts.
+    steep = [LinearHysteresis(4e4, 1e-155)]
+    for guess in (None, 5.0, 40.0, 1e6):
+        assert series_force(steep, 1e-3, 10.0, guess=guess) == 40.0
+    # Just below the peak on a stiff unloading branch: the answer must be the unloading
+    # branch's (bisection's), not a step taken with the loading slope across f_max.
+    laws = [LinearHysteresis(1e4, 0.01)]
+    z = float(series_compression(laws, 100.0, 100.0))
+    for _ in range(50):
+        z = math.nextafter(z, 0.0)
+    lo, hi = 0.0, 100.0
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if float(series_compression(laws, mid, 100.0)) < z else (lo, mid)
+    for force in (series_force(laws, z, 100.0), series_force(laws, np.array([z]), 100.0)[0]):
+        assert force == pytest.approx(lo, rel=1e-12)
+    # Huge z on a soft power law: the exact answer, not an infinity.
+    soft = [PowerLawHysteresis(1e7, 0.5, 1000.0)] * 2
+    assert series_force(soft, 1e150, 0.0) == pytest.approx(1e7 * math.sqrt(0.5e150), rel=1e-12)
+    with pytest.raises(ValueError, match="must be finite"):
+        series_force(laws, math.nan, 1.0)
+    with pytest.raises(ValueError, match="must be finite"):
+        series_force(laws, np.array([1e-3, math.inf]), 1.0)

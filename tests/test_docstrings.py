@@ -19,9 +19,16 @@ SKIP_MODULES = ("studies.app", "studies.cli")  # the page's callbacks and the ar
 NUMERIC = re.compile(r"\b(float|complex|array|ndarray|array_like)\b")
 """Types that carry a physical quantity (ints are counts and indices)."""
 
-UNIT = re.compile(r"\[[^\]]+\]")
+UNIT = re.compile(r"\[([^\[\]]+)\]")
 """A unit in brackets: ``[kg]``, ``[m/s]``; ``[-]`` for a dimensionless number, ``[SI]`` for
 an array whose rows hold different quantities, each in SI."""
+
+RANGE = re.compile(r"^\s*[-+]?[\d.]+(e[-+]?\d+)?\s*,")
+"""A bracket that opens with a number and a comma is a range (``[0, 1]``), not a unit."""
+
+
+def _has_unit(text: str) -> bool:
+    return any(not RANGE.match(inside) for inside in UNIT.findall(text))
 
 
 def _doc(obj):
@@ -44,7 +51,7 @@ def without_unit(obj) -> list[str]:
     return [
         item.name
         for item in _items(_doc(obj))
-        if NUMERIC.search(item.type) and not UNIT.search(" ".join([item.type, *item.desc]))
+        if NUMERIC.search(item.type) and not _has_unit(" ".join([item.type, *item.desc]))
     ]
 
 
@@ -126,13 +133,13 @@ def test_the_checker_catches_a_number_without_its_unit():
         mass : float
             Ball mass [kg].
         e : float
-            Coefficient of restitution.
+            Coefficient of restitution, in [0, 1].
         count : int
             How many.
         """
 
     assert without_unit(with_units) == []
-    assert without_unit(unit_lost) == ["e"]
+    assert without_unit(unit_lost) == ["e"]  # a range in brackets is not a unit
 
 
 @pytest.mark.parametrize(

@@ -75,10 +75,14 @@ def test_every_paper_claim_within_tolerance():
     assert failed.empty, failed.to_string()
 
 
-def test_sweep_on_a_process_pool_matches_the_serial_sweep():
+def test_sweep_on_a_process_pool_matches_the_serial_sweep(monkeypatch):
     import multiprocessing
     import pickle
     from concurrent.futures import ProcessPoolExecutor
+
+    from numba import config
+
+    monkeypatch.setattr(config, "NUMBA_NUM_THREADS", 2)  # threads even on a one-core runner
 
     racket = paper_racket()
     assert racket.beam.modes.count == 10  # computed modes travel with the racket
