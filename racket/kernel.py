@@ -234,7 +234,7 @@ def sine_step(k0, x_o, a, z_pred, x_n, cross_tol):
 
 
 @njit(cache=True, nogil=True)
-def run_impacts(frame, points, ball, controls, out, start, stop):
+def run_impacts(frame, points, ball, controls, out, start, stop, step):
     """Advance impacts ``start`` to ``stop`` of P from first touch until the ball has left for good.
 
     The racket is a linear system in real 2x2 blocks (:mod:`racket.system`).  The outputs
@@ -253,11 +253,11 @@ def run_impacts(frame, points, ball, controls, out, start, stop):
     out : racket.layout.Outputs
         Filled: ball and block states at the final separation, summary numbers and
         histories of the first T steps (if recorded).
-    start, stop : int
+    start, stop, step : int
         The slice of the P impacts to run (compiled with ``nogil``, so that threads can run
         slices at once: :func:`racket.solver._run_on_threads`).
     """
-    for p in range(start, stop):
+    for p in range(start, stop, step):
         _one_impact(frame, points, ball, controls, out, p)
 
 

@@ -33,11 +33,11 @@ flagged (``Impact.self_consistent``) and a warning says how many are.
 from __future__ import annotations
 
 import contextlib
-import itertools
+import os
 import sys
 import threading
 import warnings
-from concurrent.futures import ThreadPoolExecutor
+from concurrent.futures import ThreadPoolExecutor, wait
 from contextlib import contextmanager
 from dataclasses import dataclass
 
@@ -111,11 +111,7 @@ CHUNK_POINTS = 4096
 
 IMPACTS_PER_THREAD = 8
 """Smallest share of a batch's impacts worth a thread of its own (one impact takes about
-20 us; starting a thread about as long)."""
-
-SLICES_PER_THREAD = 4
-"""Slices of a batch per thread: impacts near the frame last longer than at the centre, so
-a thread that finishes early takes another slice."""
+20 us; handing work to a thread about as long)."""
 
 
 _HISTORY_ROWS = {
@@ -696,22 +692,44 @@ def _one_blas_thread():
 
 
 def _run_on_threads(run, args, count: int):
-    """Run ``run(*args, start, stop)`` (the kernel, which releases the GIL) over the
-    ``count`` impacts, split into slices on one thread per ``IMPACTS_PER_THREAD`` of them
-    (a thread costs more to start than a few impacts take), at most ``NUMBA_NUM_THREADS``
-    (numba's setting: the cores available, or the environment variable).  Each thread takes
-    slices in turn, a few each, since impacts differ in length.
+    """Run ``run(*args, start, stop, step)`` (the kernel, which releases the GIL) over the
+    ``count`` impacts: on this thread for fewer than two threads' worth
+    (``IMPACTS_PER_THREAD`` each), else on T threads (this one and T - 1 of the kernel's
+    pool), thread t taking impacts t, t + T, t + 2T, ...: neighbouring impacts take about
+    as long, so the threads finish together, each with one call.
+    """
+    size = _pool_size()
+    threads = min(size, count // IMPACTS_PER_THREAD)
+    if threads < 2:
+        run(*args, 0, count, 1)
+        return
+    pool = _POOL.get(size)
+    if pool is None:
+        pool = _POOL[size] = ThreadPoolExecutor(size - 1, "racket-impact-kernel")
+    helpers = [pool.submit(run, *args, t, count, threads) for t in range(1, threads)]
+    try:
+        run(*args, 0, count, threads)  # this thread works too
+    finally:
+        wait(helpers)  # none still writes into the outputs when this returns or raises
+    for done in helpers:
+        done.result()  # re-raises an error of theirs
+
+
+def _pool_size() -> int:
+    """Threads of the kernel's pool: numba's ``NUMBA_NUM_THREADS`` (the cores available, or
+    the environment variable).
     """
     from numba import config
 
-    threads = max(1, min(config.NUMBA_NUM_THREADS, count // IMPACTS_PER_THREAD))
-    if threads == 1:
-        run(*args, 0, count)
-        return
-    edges = np.linspace(0, count, SLICES_PER_THREAD * threads + 1).astype(int)
-    with ThreadPoolExecutor(threads) as pool:
-        for done in [pool.submit(run, *args, a, b) for a, b in itertools.pairwise(edges)]:
-            done.result()  # re-raises a slice's error
+    return max(1, config.NUMBA_NUM_THREADS)
+
+
+_POOL = {}
+"""The kernel's thread pool (by its size, should ``NUMBA_NUM_THREADS`` change), made on first
+use and kept (starting threads for each call cost about 1 ms); a forked child makes its own
+(its parent's threads do not exist in it)."""
+
+os.register_at_fork(after_in_child=_POOL.clear)
 
 
 @contextmanager

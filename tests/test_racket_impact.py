@@ -254,3 +254,18 @@ def test_first_compilation_is_announced_on_stderr(capsys):
     with solver._compile_notice(SimpleNamespace(signatures=["compiled"]), after=0.05):
         time.sleep(0.2)
     assert capsys.readouterr().err == ""
+
+
+@pytest.mark.parametrize("threads", [2, 3])
+def test_threads_share_the_points_and_change_no_number(monkeypatch, threads):
+    # T threads take points t, t + T, ... (racket.solver._run_on_threads): every point once,
+    # each with the same numbers as on one thread.
+    from numba import config
+
+    x = np.linspace(0.0, 0.32, 53)
+    monkeypatch.setattr(config, "NUMBA_NUM_THREADS", 1)
+    one = impact(paper_racket("hand-held"), tennis_ball(), x, 20.0)
+    monkeypatch.setattr(config, "NUMBA_NUM_THREADS", threads)
+    many = impact(paper_racket("hand-held"), tennis_ball(), x, 20.0)
+    for name in ("e", "e_A", "contact_time", "peak_force", "vibration_energy"):
+        assert np.array_equal(getattr(one, name), getattr(many, name)), name
