@@ -93,29 +93,23 @@ class LinearSpring(MonotoneLaw):
         object.__setattr__(self, "k", positive("k", self.k, "N/m"))
 
     def compression(self, f, f_max):
-        """See :meth:`MonotoneLaw.compression`."""
         return np.asarray(f, dtype=float) / self.k
 
     def compliance(self, f, f_max):
-        """See :meth:`MonotoneLaw.compliance`."""
         return np.full(np.broadcast(f, f_max).shape, 1.0 / self.k)
 
     def dissipated(self, f_max):
-        """See :meth:`MonotoneLaw.dissipated`."""
         return np.zeros(np.shape(f_max))
 
     @property
     def rigid_cor(self) -> float:
-        """See :meth:`MonotoneLaw.rigid_cor`."""
         return 1.0
 
     def secant_stiffness(self, mass: float, speed: float) -> float:
-        """See :meth:`MonotoneLaw.secant_stiffness`."""
         return self.k
 
     @property
     def kernel_law(self) -> tuple:
-        """See :meth:`MonotoneLaw.kernel_law`."""
         return LINEAR, (self.k, 1.0, 0.0, 0.0)
 
 
@@ -143,32 +137,26 @@ class LinearHysteresis(MonotoneLaw):
         object.__setattr__(self, "e", in_range("e", self.e, 0.0, 1.0))
 
     def compression(self, f, f_max):
-        """See :meth:`MonotoneLaw.compression`."""
         f = np.asarray(f, dtype=float)
         e2 = self.e**2
         return (np.asarray(f_max, dtype=float) * (1.0 - e2) + e2 * f) / self.k
 
     def compliance(self, f, f_max):
-        """See :meth:`MonotoneLaw.compliance`."""
         unloading = np.asarray(f) < np.asarray(f_max)
         return np.where(unloading, self.e**2 / self.k, 1.0 / self.k)
 
     def dissipated(self, f_max):
-        """See :meth:`MonotoneLaw.dissipated`."""
         return (1.0 - self.e**2) * np.asarray(f_max, dtype=float) ** 2 / (2.0 * self.k)
 
     @property
     def rigid_cor(self) -> float:
-        """See :meth:`MonotoneLaw.rigid_cor`."""
         return self.e
 
     def secant_stiffness(self, mass: float, speed: float) -> float:
-        """See :meth:`MonotoneLaw.secant_stiffness`."""
         return self.k
 
     @property
     def kernel_law(self) -> tuple:
-        """See :meth:`MonotoneLaw.kernel_law`."""
         return LINEAR, (self.k, self.e, 0.0, 0.0)
 
 
@@ -199,7 +187,7 @@ class _PowerBranches(MonotoneLaw):
     def compliance(self, f, f_max):
         f = np.asarray(f, dtype=float)
         exponent = np.where(f < np.asarray(f_max), self.unloading_exponent(f_max), self.a)
-        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        with np.errstate(divide="ignore", invalid="ignore"):
             c = self.compression(f, f_max) / (exponent * f)
         return np.where(f > 0, c, np.inf)
 
@@ -268,12 +256,10 @@ class PowerLawHysteresis(_PowerBranches):
 
     @property
     def rigid_cor(self) -> float:
-        """See :meth:`MonotoneLaw.rigid_cor`."""
         return math.sqrt((self.a + 1.0) / (self.b + 1.0))
 
     @property
     def kernel_law(self) -> tuple:
-        """See :meth:`MonotoneLaw.kernel_law`."""
         return POWER, (self.k, self.a, self.b, 0.0)
 
 
@@ -355,7 +341,6 @@ class GrowingHysteresis(_PowerBranches):
 
     @property
     def kernel_law(self) -> tuple:
-        """See :meth:`MonotoneLaw.kernel_law`."""
         return GROWING, (self.k, self.a, self.e0, self.slope)
 
 
@@ -393,7 +378,6 @@ class SineLaw:
 
     @property
     def rigid_cor(self) -> float:
-        """See :meth:`MonotoneLaw.rigid_cor`."""
         return 0.0
 
     def secant_stiffness(self, mass: float, speed: float) -> float:

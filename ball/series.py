@@ -16,11 +16,15 @@ from collections.abc import Sequence
 import numpy as np
 
 from ball.laws import MonotoneLaw
+from common.checks import finite, finite_array
+
+_DOUBLINGS = 2100
+"""Doublings of the force at most while bracketing the root (2**2100 spans every float)."""
 
 _ITERATIONS = 2300
-"""Newton-bisection steps at most: enough to double from the smallest float to the largest
-(2100) and then bisect to one float, where a very steep unloading curve puts the force
-(e.g. 1e-310 N on a ball whose COR is near zero)."""
+"""Newton-bisection steps at most once the root is bracketed: enough to bisect down to one
+float, where a very steep unloading curve puts the force (e.g. 1e-310 N on a ball whose COR
+is near zero)."""
 
 
 def series_compression(laws: Sequence[MonotoneLaw], f, f_max):
@@ -81,12 +85,17 @@ def series_force(laws: Sequence[MonotoneLaw], z, f_max, rtol: float = 1e-14, gue
         answer is the same to ``rtol``.
     """
     if np.ndim(z) == 0 and np.ndim(f_max) == 0:
-        if not (math.isfinite(z) and math.isfinite(f_max)):
-            raise ValueError(f"z and f_max must be finite, got z={z!r}, f_max={f_max!r}")
-        return _scalar_force(laws, float(z), float(f_max), rtol, guess)
-    z, f_max = np.broadcast_arrays(np.asarray(z, dtype=float), np.asarray(f_max, dtype=float))
-    if not (np.all(np.isfinite(z)) and np.all(np.isfinite(f_max))):
-        raise ValueError("z and f_max must be finite, got a NaN or an infinity")
+        z, f_max = finite("z", z, "m"), finite("f_max", f_max, "N")
+        with np.errstate(over="ignore"):  # doubling towards a huge force may overflow
+            return _scalar_force(laws, z, f_max, rtol, guess)
+    z = finite_array("z", z, "m")
+    z, f_max = np.broadcast_arrays(z, finite_array("f_max", f_max, "N"))
+    with np.errstate(over="ignore"):
+        return _array_force(laws, z, f_max, rtol)
+
+
+def _array_force(laws, z: np.ndarray, f_max: np.ndarray, rtol: float) -> np.ndarray:
+    """:func:`series_force` for arrays ``z``, ``f_max`` of one shape, all contacts at once."""
     z = z.astype(float, copy=True)
     force = np.zeros(z.shape)
     active = z > series_compression(laws, np.zeros(z.shape), f_max)
@@ -96,7 +105,7 @@ def series_force(laws: Sequence[MonotoneLaw], z, f_max, rtol: float = 1e-14, gue
     lo = np.zeros(z_a.shape)
     # Start at the force a linear spring with the laws' compliance at 1 N would need.
     hi = np.maximum(fm_a, z_a / series_compression(laws, 1.0, 1.0))
-    for _ in range(2100):  # grow the bracket until it holds the root (2**2100 > max float)
+    for _ in range(_DOUBLINGS):  # grow the bracket until it holds the root
         short = series_compression(laws, hi, fm_a) < z_a
         if not np.any(short):
             break
@@ -110,7 +119,7 @@ def series_force(laws: Sequence[MonotoneLaw], z, f_max, rtol: float = 1e-14, gue
         lo = np.where(resid < 0, f, lo)
         hi = np.where(resid >= 0, f, hi)
         slope = series_compliance(laws, f, fm_a)
-        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        with np.errstate(divide="ignore", invalid="ignore"):
             # No Newton step on a vertical or undefined branch.
             newton = np.where((slope > 0) & np.isfinite(slope), f - resid / slope, np.nan)
         # Newton converged: a small step that stays in the bracket and on its branch (the
@@ -147,7 +156,7 @@ def _scalar_force(laws, z: float, f_max: float, rtol: float, guess=None) -> floa
         f = float(guess)
     else:
         f = max(f_max, z / float(series_compression(laws, 1.0, 1.0)))
-    for _ in range(_ITERATIONS):
+    for _ in range(_DOUBLINGS + _ITERATIONS):  # doublings (hi still infinite), then Newton
         r = resid(f)
         if r == 0.0:
             return f

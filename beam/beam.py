@@ -272,7 +272,7 @@ class Beam:
         lengths = np.diff(np.asarray(self.stations))
         return float(np.asarray(self.roll_inertia_per_length) @ lengths + pm[:, 1] @ pm[:, 2] ** 2)
 
-    @property
+    @cached_property
     def is_mirror_symmetric(self) -> bool:
         """True when the point masses off the long axis come in mirrored pairs (x, m, y)
         and (x, m, -y): the beam is then symmetric about its long axis, and bending and

@@ -127,12 +127,9 @@ def hand_feel(
     states = np.empty((steps, *unit.shape))
     s = np.zeros(unit.shape)
     states[0] = s
+    g0u, g1u = np.einsum("bij,bj->bi", g0, unit), np.einsum("bij,bj->bi", g1, unit)
     for k in range(1, steps):  # exact for a force linear over each step
-        s = (
-            np.einsum("bij,bj->bi", trans, s)
-            + np.einsum("bij,bj->bi", g0, unit) * force[k - 1]
-            + np.einsum("bij,bj->bi", g1, unit) * force[k]
-        )
+        s = np.einsum("bij,bj->bi", trans, s) + g0u * force[k - 1] + g1u * force[k]
         states[k] = s
     q, qd = system.modal_state(states)
     qdd = -q @ system.stiffness.T - qd @ system.damping.T + force[:, None] * phi[0]

@@ -31,6 +31,29 @@ CONTACT_RADIUS = 0.025
 patch of a tennis ball on strings is about 5 cm across at 20-30 m/s)."""
 
 
+MIN_RADIUS = 2.0 * CONTACT_RADIUS
+"""Smallest bed radius [m] the membrane model describes: below it the load patch never fits
+inside the bed, and the held stiffness would fall (below ``CONTACT_RADIUS``, turn negative)."""
+
+
+def bed_radius(area: float) -> float:
+    """Radius [m] of the circle of a string bed's ``area`` [m^2], refused at or below
+    :data:`MIN_RADIUS`.
+
+    Parameters
+    ----------
+    area : float
+        The bed's area [m^2].
+    """
+    radius = float(np.sqrt(area / np.pi))
+    if not radius > MIN_RADIUS:
+        raise ValueError(
+            f"a membrane string bed must be larger than {np.pi * MIN_RADIUS**2:.4g} m^2 "
+            f"(a circle of radius {MIN_RADIUS:g} m), got {area:.4g} m^2"
+        )
+    return radius
+
+
 def stiffness_ratio(rho2, radius: float) -> np.ndarray:
     """K / k_centre of a membrane of ``radius`` [m] (a circle of the bed's area) at the
     squared elliptical radius ``rho2`` (0 at the centre, 1 at the frame); see the module

@@ -10,7 +10,7 @@ import numpy as np
 from beam import Beam
 from common.checks import finite_array, non_negative, positive, shown
 from racket.head import HEAD_ASPECT, Hoop
-from racket.membrane import stiffness_ratio
+from racket.membrane import bed_radius, stiffness_ratio
 
 SUPPORTS = ("free", "clamped-head", "hand-held")
 STRING_PROFILES = ("uniform", "membrane")
@@ -101,6 +101,8 @@ class StringBed:
             raise ValueError(
                 f"string bed profile must be one of {STRING_PROFILES}, got {self.profile!r}"
             )
+        if self.profile == "membrane":
+            bed_radius(self.area)  # refuses a bed too small for the membrane model
 
     @property
     def center(self) -> float:
@@ -139,7 +141,7 @@ class StringBed:
     @property
     def _radius(self) -> float:
         """Radius [m] of the circle of the bed's area (the membrane model's)."""
-        return 0.5 * np.sqrt((self.extent[1] - self.extent[0]) * self.full_width)
+        return bed_radius(self.area)
 
     def stiffness_at(self, x, y=0.0) -> np.ndarray:
         """String-plane stiffness [N/m] at (``x`` [m from the tip], ``y`` [m from the long

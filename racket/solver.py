@@ -48,6 +48,7 @@ from common.checks import finite, finite_array, in_range, shown
 from common.checks import speed as check_speed
 from racket import layout
 from racket.racket import Racket
+from racket.swing import PIVOT_RANGE, check_swung_support
 
 COMPILE_SECONDS = 15
 """About how long numba takes to compile the kernel on a 2-core machine (measured 12-15 s)."""
@@ -69,9 +70,8 @@ FORCE_TOL = 1e-9
 force has fallen to this fraction of its peak and the relative speed to this fraction of the
 closing speed (so e comes out within 1e-9 of its limit, 0, rather than slightly negative)."""
 
-PIVOT_BEYOND_BUTT = 1.0
-"""Farthest swing pivot beyond the butt [m]: a straight arm swung from the shoulder (an
-arm is about 0.7 m long)."""
+PIVOT_BEYOND_BUTT = -PIVOT_RANGE[0]
+"""Farthest swing pivot beyond the butt [m] (:data:`racket.swing.PIVOT_RANGE`)."""
 
 F1_MIN = 20.0
 """Lowest first bending frequency [Hz] of a frame that the impact solver accepts (at 10 Hz
@@ -382,11 +382,8 @@ def impact(
         steps_per_contact = SINE_STEPS_PER_CONTACT if sine else DEFAULT_STEPS_PER_CONTACT
     steps_per_contact = int(in_range("steps_per_contact", steps_per_contact, 50, 100_000))
     watch_after = in_range("watch_after", watch_after, 0.0, 1.0, "s")
-    if np.any(swing) and racket.support != "free":
-        raise ValueError(
-            f"swing_speed must be 0 for a {racket.support} racket (the hand or clamp is at "
-            "rest); swing a free racket, as the paper does"
-        )
+    if np.any(swing):
+        check_swung_support(racket.support)
     f1 = racket.beam.modes.frequencies[0] if racket.beam.modes.count > 2 else np.inf
     if f1 < F1_MIN:
         raise ValueError(
@@ -603,7 +600,9 @@ class _Stepper:
         inv_ks = 1.0 / racket.strings.stiffness_at(x, 0.0 if y is None else y)
         series = inv_ks.copy()
         if n:  # static correction: the bending modes left out respond quasi-statically
-            series += racket.beam.residual_flexibility(x)
+            count = modes.count  # the shapes phi already holds, spared computing again
+            shapes = phi[:, :count].T if phi.shape[1] >= count else None
+            series += racket.beam.residual_flexibility(x, shapes)
         if self.face and n:  # and the torsion modes left out
             series += racket.beam.roll_modes.residual_flexibility(x, y)
         self.points = layout.Points(
@@ -672,6 +671,16 @@ class _Stepper:
         with _compile_notice(kernel.run_impacts):
             _run_on_threads(kernel.run_impacts, args, count)
         return out
+
+
+def load_kernel() -> None:
+    """Load the compiled kernel now (numba compiles it on a machine's first run, 12-15 s,
+    and caches it on disk), by running one impact of the paper's racket; a program that
+    shows progress (the interactive page, the test suite) calls it before its first impact.
+    """
+    from racket.presets import paper_racket, tennis_ball
+
+    impact(paper_racket(), tennis_ball(), 0.1, 10.0)
 
 
 _BLAS = []  # the threadpoolctl controller, made on first use

@@ -11,11 +11,28 @@ from common.checks import speed as check_speed
 
 WRIST_BEYOND_BUTT = 0.05
 """Default swing pivot: the wrist, this far beyond the butt [m] (a hand on the grip holds
-the butt against the heel of the palm)."""
+the butt against the heel of the palm; an assumption, not a measurement)."""
 
 PIVOT_RANGE = (-1.0, 0.3)
 """Where a pivot may be [m from the butt, + towards the tip, - beyond the butt]: from a
-straight arm swung from the shoulder (an arm is about 0.7 m long) to the top of the grip."""
+straight arm swung from the shoulder (an arm is about 0.7 m long) to the top of the grip
+and throat (0.3 m; both bounds are assumptions, generous on purpose)."""
+
+
+def check_swung_support(support: str) -> None:
+    """Refuse to swing a racket whose ``support`` is not ``"free"``: a hand or clamp is at
+    rest in this model.
+
+    Parameters
+    ----------
+    support : str
+        The racket's support.
+    """
+    if support != "free":
+        raise ValueError(
+            f"swing_speed must be 0 for a {support} racket (the hand or clamp is at rest); "
+            "swing a free racket, as the paper does"
+        )
 
 
 @dataclass(frozen=True)

@@ -322,6 +322,8 @@ def face_system(bending: BlockSystem, roll: BlockSystem) -> BlockSystem:
     roll : BlockSystem
         The roll and torsion modes' system.
     """
+    from scipy.linalg import block_diag  # scipy loads on first use (import time)
+
     nb, nr = bending.count, roll.count
     n = nb + nr
     # rows of z = (q_b, q_r, q_b', q_r') from those of (q_b, q_b') and (q_r, q_r')
@@ -339,20 +341,6 @@ def face_system(bending: BlockSystem, roll: BlockSystem) -> BlockSystem:
         damping=block_diag(bending.damping, roll.damping),
         rigid=(*bending.rigid, *(nb + i for i in roll.rigid)),
     )
-
-
-def block_diag(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    """[[a, 0], [0, b]].
-
-    Parameters
-    ----------
-    a, b : ndarray
-        The two 2-D blocks of the diagonal [SI].
-    """
-    out = np.zeros((a.shape[0] + b.shape[0], a.shape[1] + b.shape[1]))
-    out[: a.shape[0], : a.shape[1]] = a
-    out[a.shape[0] :, a.shape[1] :] = b
-    return out
 
 
 def clamped_system() -> BlockSystem:

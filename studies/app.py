@@ -22,9 +22,9 @@ _WARM = threading.Event()
 
 def _warm_up() -> None:
     """Compile the solver (once per machine: numba caches it on disk) and note when done."""
-    from racket import impact, paper_racket, tennis_ball
+    from racket.solver import load_kernel
 
-    impact(paper_racket(), tennis_ball(), 0.1, 10.0)
+    load_kernel()
     _WARM.set()
 
 

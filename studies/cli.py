@@ -24,7 +24,11 @@ from beam.beam import MAX_MODES
 from common.checks import SPEED_RANGE, in_range, shown
 from common.units import MPH
 from racket import SUPPORTS
+from racket.swing import WRIST_BEYOND_BUTT
+from studies.bounce import GRAVITY
 from studies.config import BALLS, RACKETS, load_ball, load_racket, racket_specs
+from studies.landmarks import HAND_FROM_BUTT
+from studies.maps import MAP_SPEED
 from studies.tables import history_table
 
 TABLE_FORMATS = (".csv", ".json", ".parquet")
@@ -112,14 +116,17 @@ def write_table(table: pd.DataFrame, path: str) -> None:
 
 
 def _sidecar(path) -> None:
-    """The sidecar of a table the command line wrote (:mod:`studies.provenance`)."""
+    """The sidecar of a table the command line wrote (:mod:`studies.provenance`); the
+    description is built once per command run, however many tables it writes.
+    """
     if _RUN:
         from studies.provenance import describe, write_sidecar
 
-        write_sidecar(
-            path,
-            describe(_RUN["argv"], _RUN["command"], _RUN["options"], _RUN.get("originals")),
-        )
+        if "description" not in _RUN:
+            _RUN["description"] = describe(
+                _RUN["argv"], _RUN["command"], _RUN["options"], _RUN.get("originals")
+            )
+        write_sidecar(path, _RUN["description"])
 
 
 def save_plot(axes, path: str) -> None:
@@ -309,7 +316,7 @@ def cmd_serve(args) -> int:
     positions = [racket.strings.center] if args.position is None else args.position
     for x in positions:
         in_range("--position", x, *racket.strings.extent, "m from the tip")
-    pivot = in_range("--pivot-cm-from-butt", args.pivot_cm_from_butt, -100.0, 30.0, "cm") / 100
+    pivot = _pivot(args)
     mph = args.racket_speed_mph is not None or args.target_ball_speed_mph is not None
     target_given = args.target_ball_speed is not None or args.target_ball_speed_mph is not None
     if target_given and (getattr(args, "_seen_racket_speed", False) or args.racket_speed_mph):
@@ -424,7 +431,7 @@ def cmd_ball(args) -> int:
 
 def cmd_modes(args) -> int:
     """``racket-impact modes``."""
-    from studies.landmarks import HAND_FROM_BUTT, center_of_percussion
+    from studies.landmarks import center_of_percussion
 
     check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
     count = _count("--count", args.count, 1, MAX_MODES)
@@ -495,7 +502,7 @@ def cmd_specs(args) -> int:
         f"{100 * racket.hand.grip_length:g} cm)"
     )
     _print_table(report.modes, "{:.4g}")
-    print("\nsweet spots (a tennis ball at 16.5 m/s on the racket at rest):")
+    print(f"\nsweet spots (a tennis ball at {MAP_SPEED:g} m/s on the racket at rest):")
     _print_table(report.sweet_spots, "{:.4g}")
     print("\neffective mass along the strings (Eq. 20)")
     _print_table(report.effective_mass, "{:.4g}")
@@ -550,11 +557,9 @@ def cmd_feel(args) -> int:
     from racket.feel import hand_feel
 
     check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
-    racket = load_racket(args.racket)
-    if args.support:
-        from dataclasses import replace
+    from dataclasses import replace
 
-        racket = replace(racket, support=args.support)
+    racket = replace(load_racket(args.racket), support=args.support)  # always given (default)
     position = racket.strings.center if args.position is None else args.position
     in_range("--position", position, *racket.strings.extent, "m from the tip")
     duration = in_range("--duration-ms", args.duration_ms, 5.0, 1000.0, "ms") / 1e3
@@ -566,11 +571,11 @@ def cmd_feel(args) -> int:
     print(
         f"impact {100 * (length - position):.1f} cm from the butt ({100 * position:.1f} from "
         f"the tip){'' if args.offset is None else f', {100 * args.offset:+.1f} cm off the axis'}"
-        f"; the handle read {100 * (length - feel.grip):.1f} cm from the butt ({racket.support})"
+        f"; the handle read {100 * feel.grip_from_butt:.1f} cm from the butt ({racket.support})"
     )
     print(f"peak handle velocity      {feel.peak_velocity:.3f} m/s")
     print(f"peak handle acceleration  {feel.peak_acceleration:.0f} m/s^2 "
-          f"({feel.peak_acceleration / 9.81:.0f} g)")  # fmt: skip
+          f"({feel.peak_acceleration / GRAVITY:.0f} g)")  # fmt: skip
     above = feel.frequencies > 20.0
     dominant = feel.frequencies[above][np.argmax(feel.spectrum[above])]
     print(f"strongest vibration       {dominant:.0f} Hz")
@@ -681,10 +686,14 @@ def _tensions(args):
 
 
 def _tension(value_lb: float) -> float:
-    """``--tension-lb`` [lb] checked in lb (20-80) and given in N."""
+    """``--tension-lb`` [lb] checked in lb (the spec sheets' range, 20-80 lb) and given in
+    N.
+    """
     from common.units import LB
+    from racket.specs.sheet import SPEC_RANGES
 
-    return in_range("--tension-lb", value_lb, 20.0, 80.0, "lb") * LB
+    low, high, unit = SPEC_RANGES["tension_lb"]
+    return in_range("--tension-lb", value_lb, low, high, unit) * LB
 
 
 def _tension_option(p, many: bool = False):
@@ -709,8 +718,15 @@ def _swing(args):
         if getattr(args, "_seen_pivot_cm_from_butt", False):
             raise ValueError("--pivot-cm-from-butt needs --swing-speed (or --swing-speed-mph)")
         return None
-    pivot = in_range("--pivot-cm-from-butt", args.pivot_cm_from_butt, -100.0, 30.0, "cm")
-    return Swing(_speed(args, "swing_speed"), pivot / 100)
+    return Swing(_speed(args, "swing_speed"), _pivot(args))
+
+
+def _pivot(args) -> float:
+    """``--pivot-cm-from-butt`` [cm] checked in cm (:data:`racket.swing.PIVOT_RANGE`), in m."""
+    from racket.swing import PIVOT_RANGE
+
+    low, high = (100 * end for end in PIVOT_RANGE)
+    return in_range("--pivot-cm-from-butt", args.pivot_cm_from_butt, low, high, "cm") / 100
 
 
 def _labels(names: list[str]) -> list[tuple[str, str]]:
@@ -787,9 +803,10 @@ def _pivot_option(p):
         "--pivot-cm-from-butt",
         type=float,
         action=_Once,
-        default=-5.0,
+        default=-100 * WRIST_BEYOND_BUTT,
         metavar="CM",
-        help="swing pivot [cm from the butt, negative beyond it] (default -5, the wrist)",
+        help="swing pivot [cm from the butt, negative beyond it] (default "
+        f"{-100 * WRIST_BEYOND_BUTT:g}, the wrist)",
     )
 
 
@@ -879,7 +896,7 @@ def build_parser() -> argparse.ArgumentParser:
     p = sub.add_parser("map", help="e, e_A, exit speed, vibration and twist over the face")
     _racket_arg(p, default="pure-drive-2021")
     _ball_arg(p)
-    _speed_option(p, "speed", 16.5, "ball speed towards the strings")
+    _speed_option(p, "speed", MAP_SPEED, "ball speed towards the strings")
     _swing_options(p)
     p.add_argument(
         "--grid",
@@ -1002,14 +1019,15 @@ def build_parser() -> argparse.ArgumentParser:
         help=f"racket preset ({', '.join(RACKETS)}) or TOML file with a [racket] table",
     )
     _ball_arg(p)
-    _speed_option(p, "speed", 16.5, "ball speed towards the strings")
+    _speed_option(p, "speed", MAP_SPEED, "ball speed towards the strings")
     _swing_options(p)
     p.add_argument(
         "--grip-cm-from-butt",
         type=float,
-        default=7.0,
+        default=100 * HAND_FROM_BUTT,
         metavar="CM",
-        help="where the hand pivots, for the centre of percussion (default 7)",
+        help="where the hand pivots, for the centre of percussion (default "
+        f"{100 * HAND_FROM_BUTT:g})",
     )
     p.add_argument("--out", metavar="FILE", help="table file: .csv, .json or .parquet")
     p.set_defaults(func=cmd_sweetspots)
@@ -1044,8 +1062,18 @@ def main(argv=None) -> int:
     args.debug = debug
     prefix = f"racket-impact {args.command}"
     options = {k: v for k, v in vars(args).items() if k != "func" and not k.startswith("_")}
+    outer = dict(_RUN)  # a rerun's own run (and its originals), restored afterwards
+    _RUN.pop("description", None)
     _RUN.update(argv=[a for a in argv if a != "--debug"], command=args.command, options=options)
+    try:
+        return _run(args, prefix)
+    finally:
+        _RUN.clear()
+        _RUN.update(outer)
 
+
+def _run(args, prefix: str) -> int:
+    """Run the parsed command: warnings one line each, bad input status 2 (one line)."""
     kinds = set()
 
     def one_line(message, category, filename, lineno, file=None, line=None):

@@ -11,8 +11,10 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from common.checks import in_range, non_negative
 from common.units import LB, MPH
 from racket import CATALOG, Swing, from_specs, impact
+from racket.specs.sheet import SPEC_RANGES
 from racket.specs.strings import with_tension
 from studies.config import BALLS
 from studies.landmarks import sweet_spots
@@ -115,11 +117,14 @@ def page_racket(inputs: PageInputs):
             tension_lb=inputs.tension_lb,
         )
     elif inputs.racket in CATALOG:
-        racket = with_tension(CATALOG[inputs.racket].racket(), inputs.tension_lb * LB)
+        low, high, unit = SPEC_RANGES["tension_lb"]
+        tension = in_range("tension_lb", inputs.tension_lb, low, high, unit) * LB
+        racket = with_tension(CATALOG[inputs.racket].racket(), tension)
     else:
         raise ValueError(f"racket must be one of {[*CATALOG, MY_SHEET]}, got {inputs.racket!r}")
-    if inputs.lead_g > 0:
-        racket = racket.with_lead_tape(inputs.lead_g / 1e3, inputs.lead_at)
+    lead_g = non_negative("lead_g", inputs.lead_g, "g")
+    if lead_g > 0:
+        racket = racket.with_lead_tape(lead_g / 1e3, inputs.lead_at)
     return racket
 
 

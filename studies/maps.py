@@ -19,7 +19,7 @@ from common.checks import in_range
 from common.checks import speed as check_speed
 from common.units import MPH
 from racket import Racket, Swing, impact
-from studies.landmarks import HAND_FROM_BUTT, center_of_percussion
+from studies.landmarks import hand_pivot, percussion_centre, whole
 
 SWEET_FRACTION = 0.05
 """The sweet area is where e_A is within this fraction of its largest value on the map."""
@@ -72,7 +72,9 @@ class FaceMap:
     node : ndarray
         Nodes of the first bending mode on the strings [m from the tip].
     center_of_percussion : float
-        For a pivot at the hand (:data:`studies.landmarks.HAND_FROM_BUTT`) [m from the tip].
+        For a pivot at the hand (:func:`studies.landmarks.hand_pivot`) [m from the tip]: the
+        impact point on the axis after which the hand's rigid-body velocity is zero, among
+        the grid's rows (:func:`studies.landmarks.percussion_centre`; NaN if not among them).
     sweet_threshold : float
         e_A [-] above which a point is in the sweet area.
     sweet_area_cm2 : float
@@ -179,11 +181,11 @@ def face_points(racket: Racket, grid=MAP_GRID, margin: float = 0.0):
     racket : Racket
         The racket (its string bed).
     grid : (int, int)
-        Points along and across, each in [4, 1000].
+        Points along and across [-], each a whole number in [4, 1000].
     margin : float
         How far inside the bed's edge the points stay [m].
     """
-    nx, ny = (int(in_range(f"grid[{i}]", n, 4, 1000)) for i, n in enumerate(grid))
+    nx, ny = (whole(f"grid[{i}]", n, 4, 1000) for i, n in enumerate(grid))
     strings = racket.strings
     half_length = 0.5 * (strings.extent[1] - strings.extent[0]) - margin
     half_width = 0.5 * strings.full_width - margin
@@ -250,38 +252,56 @@ def face_map(
     margin = ball.radius if margin is None else in_range("margin", margin, 0.0, 1.0, "m")
     positions, offsets, half_width = face_points(racket, grid, margin)
     x = np.broadcast_to(positions[:, None], offsets.shape).ravel()
-    still = impact(racket, ball, x, speed, offset=offsets.ravel())
+    y = offsets.ravel()
     side = 0.5 * racket.strings.full_width - margin
-    landmarks = impact(racket, ball, racket.strings.center, speed, offset=[0.0, side])
+    # The landmarks' points: the string centre on the axis and at 3 o'clock, and each row on
+    # the axis (for the centre of percussion); those not on the grid join its impact call.
+    nx, ny = offsets.shape
+    extra_x, extra_y = [], []
+
+    def point(on_grid, index, px, py):
+        if on_grid:
+            return index
+        extra_x.append(px)
+        extra_y.append(py)
+        return x.size + len(extra_x) - 1
+
+    middle = nx // 2 * ny  # the first point of the middle row (odd nx: at the centre)
+    centre = point(nx % 2 and ny % 2, middle + ny // 2, racket.strings.center, 0.0)
+    side_at = point(nx % 2, middle + ny - 1, racket.strings.center, side)
+    axis = [point(ny % 2, i * ny + ny // 2, p, 0.0) for i, p in enumerate(positions)]
+    hits = impact(racket, ball, np.r_[x, extra_x], speed, offset=np.r_[y, extra_y])
     swung = None
     if swing is not None:
         moved = swing.impact_kwargs(racket, x)
-        swung = impact(racket, ball, x, speed, offset=offsets.ravel(), **moved)
+        swung = impact(racket, ball, x, speed, offset=y, **moved)
 
     def on_grid(values):
-        return np.reshape(values, offsets.shape)
+        return np.reshape(np.broadcast_to(values, hits.e.shape)[: x.size], offsets.shape)
 
-    e_a = on_grid(still.e_A)
+    e_a = on_grid(hits.e_A)
     threshold, area = _sweet_area(positions, half_width, e_a)
     node = racket.beam.modes.nodes(1) if racket.system.count else np.array([])
     start, end = racket.strings.extent
-    pivot = racket.beam.length - HAND_FROM_BUTT
+    cop = percussion_centre(
+        racket, positions, hits.v_cm[axis], hits.omega[axis], hand_pivot(racket)
+    )
     return FaceMap(
         positions=positions,
         offsets=offsets,
-        e=on_grid(still.e),
+        e=on_grid(hits.e),
         e_A=e_a,
-        exit_speed=on_grid(still.ball_rebound),
+        exit_speed=on_grid(hits.ball_rebound),
         exit_speed_swung=None if swung is None else on_grid(swung.ball_rebound),
-        vibration_energy=on_grid(still.vibration_energy / still.energy_initial),
-        roll_rate=on_grid(still.roll_rate),
-        e_A_centre=float(landmarks.e_A[0]),
-        e_A_side=float(landmarks.e_A[1]),
+        vibration_energy=on_grid(hits.vibration_energy / hits.energy_initial),
+        roll_rate=on_grid(hits.roll_rate),
+        e_A_centre=float(hits.e_A[centre]),
+        e_A_side=float(hits.e_A[side_at]),
         side_offset=side,
         speed=speed,
         swing=swing,
         node=node[(node >= start) & (node <= end)],
-        center_of_percussion=center_of_percussion(racket, pivot),
+        center_of_percussion=cop,
         sweet_threshold=threshold,
         sweet_area_cm2=area,
         strings=racket.strings,
@@ -330,7 +350,9 @@ def compare_summary(rackets, table, ball: Ball, speed: float):
     """One row per racket of a :func:`studies.sweeps.compare` table: the largest e and
     where, e at the string centre and at the tip end of the strings, the largest exit speed
     [mph] and where (of a swing, if the table has one), the first mode's node and the centre
-    of percussion for the hand, and, for rackets whose
+    of percussion for the hand (:func:`studies.landmarks.percussion_centre`, from the
+    table's impacts, or for a swung table from impacts at the same points of the racket at
+    rest hit at ``speed`` or :data:`MAP_SPEED`), and, for rackets whose
     roll inertia is modelled, the off-axis power (e_A at the centre's distance from the
     tip, at 3 o'clock with the ball's edge on the frame) and the sweet area of the
     :func:`face_map` of the racket at rest hit at ``speed`` (or :data:`MAP_SPEED` when
@@ -353,7 +375,13 @@ def compare_summary(rackets, table, ball: Ball, speed: float):
         best = group.loc[group["e"].idxmax()]
         fastest = group["position_from_tip_m"].iloc[group["exit_speed_mph"].argmax()]
         node = racket.beam.modes.nodes(1)[0]  # the one nearer the tip, on the strings
-        cop = center_of_percussion(racket, racket.beam.length - HAND_FROM_BUTT)
+        x = group["position_from_tip_m"].to_numpy()
+        if np.any(group["swing_speed_m_s"].to_numpy() != 0.0):  # the racket at rest instead
+            hit = impact(racket, ball, x, speed or MAP_SPEED)
+            v_cm, omega = hit.v_cm, hit.omega
+        else:
+            v_cm, omega = group["v_cm_m_s"].to_numpy(), group["omega_rad_s"].to_numpy()
+        cop = percussion_centre(racket, x, v_cm, omega, hand_pivot(racket))
         row = {
             "racket": label,
             "largest_e": best["e"],

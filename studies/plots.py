@@ -12,7 +12,8 @@ from matplotlib.patches import Ellipse, Rectangle
 
 from ball import Ball, LinearSpring, SineLaw, collide, unhappy_cor
 from racket import Racket
-from studies.landmarks import HAND_FROM_BUTT, center_of_percussion
+from studies.landmarks import center_of_percussion, hand_pivot, percussion_centre
+from studies.maps import SWEET_FRACTION
 from studies.sweeps import PARAMETERS
 
 
@@ -102,7 +103,7 @@ def draw_racket(racket: Racket, ax, y0: float, height: float):
     )
     ax.add_patch(
         Rectangle(
-            (length - 100 * HAND_FROM_BUTT - 6, mid - 0.14 * height),
+            (100 * hand_pivot(racket) - 6, mid - 0.14 * height),
             12,
             0.28 * height,
             color="0.15",
@@ -111,11 +112,48 @@ def draw_racket(racket: Racket, ax, y0: float, height: float):
     )
 
 
+def _simulated_cop(result, racket: Racket, pivot: float):
+    """The centre of percussion [m from the tip] from one curve's impacts
+    (:func:`studies.landmarks.percussion_centre`), or None if they are not of a racket at
+    rest along its axis or it is not among them.
+
+    Parameters
+    ----------
+    result : Impact or DataFrame
+        As in :func:`plot_cor_along_racket`, with one curve.
+    racket : Racket
+        The racket hit.
+    pivot : float
+        The pivot [m from the tip].
+    """
+    if hasattr(result, "columns"):
+        names = ("position_from_tip_m", "v_cm_m_s", "omega_rad_s", "swing_speed_m_s")
+        if not all(n in result.columns for n in names) or (
+            "offset_m" in result.columns and np.any(result["offset_m"].to_numpy() != 0.0)
+        ):
+            return None
+        x, v_cm, omega, moving = (result[n].to_numpy(float) for n in names)
+    else:
+        if result.offset is not None and np.any(np.asarray(result.offset) != 0.0):
+            return None
+        x, v_cm, omega, moving = (
+            np.atleast_1d(np.asarray(v, float))
+            for v in (result.position, result.v_cm, result.omega, result.swing_speed)
+        )
+    if x.size < 2 or np.any(moving != 0.0):
+        return None
+    order = np.argsort(x)
+    cop = percussion_centre(racket, x[order], v_cm[order], omega[order], pivot)
+    return None if np.isnan(cop) else cop
+
+
 def plot_cor_along_racket(result, racket: Racket, ax=None, pivot: float | None = None):
     """E and e_A along the racket, with the racket drawn to scale below the curves.
 
     Marks the mode-1 node, the centre of percussion for a pivot at the hand (default
-    :data:`HAND_FROM_BUTT` from the butt), the points of largest e and largest e_A, and
+    :func:`studies.landmarks.hand_pivot`; from the impacts, :func:`studies.landmarks.
+    percussion_centre`, for one curve of a racket at rest, else the rigid-body formula),
+    the points of largest e and largest e_A, and
     (with a cross) the unhappy-ball impacts that have no self-consistent Xo.  A sweep table
     over a grid draws one pair of curves per grid point, labelled with its parameters.
 
@@ -128,8 +166,8 @@ def plot_cor_along_racket(result, racket: Racket, ax=None, pivot: float | None =
     ax : Axes, optional
         The Axes to draw on; None: a new figure's.
     pivot : float, optional
-        Pivot of the centre of percussion [m from the tip]; None: the hand,
-        :data:`HAND_FROM_BUTT` from the butt.
+        Pivot of the centre of percussion [m from the tip]; None: the hand
+        (:func:`studies.landmarks.hand_pivot`).
     """
     ax = _axes(ax, 1)
     curves = list(_curves(result))
@@ -161,9 +199,11 @@ def plot_cor_along_racket(result, racket: Racket, ax=None, pivot: float | None =
             ax.plot(cm[k], y[k], mark, color=color, ms=8, label=label)
     node = racket.beam.modes.nodes(1)[0]
     ax.axvline(100 * node, color="C2", ls="--", label=f"mode-1 node {100 * node:.1f} cm")
-    pivot = racket.beam.length - HAND_FROM_BUTT if pivot is None else pivot
-    cop = center_of_percussion(racket, pivot)
-    ax.axvline(100 * cop, color="C3", ls=":", label=f"centre of percussion {100 * cop:.1f} cm")
+    pivot = hand_pivot(racket) if pivot is None else pivot
+    cop = _simulated_cop(result, racket, pivot) if single else None
+    how = "" if cop is not None else " (rigid body)"
+    cop = center_of_percussion(racket, pivot) if cop is None else cop
+    ax.axvline(100 * cop, color="C3", ls=":", label=f"centre of percussion{how} {100 * cop:.1f} cm")
     low, top = min(lows), max(tops)
     band = 0.35 * (top - low)
     draw_racket(racket, ax, low - 1.15 * band, band)
@@ -471,8 +511,8 @@ def plot_face_map(face_map, field: str = "e_A", ax=None):
         Ellipse(centre, width - 2 * margin, length - 2 * margin, fill=False, color="k", ls=":")
     )
     half = 0.5 * width
-    for x in 100 * face_map.node:
-        chord = half * np.sqrt(max(0.0, 1.0 - ((x - centre[1]) / (0.5 * length)) ** 2))
+    for x in 100 * face_map.node:  # the node line across the bed (as Racket.check_points)
+        chord = half * np.sqrt(max(0.0, 1.0 - float(strings.rho2(x / 100))))
         ax.plot(
             [-chord, chord], [x, x], color="tab:orange", ls="--", lw=1.5, label="node of mode 1"
         )
@@ -486,7 +526,8 @@ def plot_face_map(face_map, field: str = "e_A", ax=None):
         [],
         [],
         color="r",
-        label=f"sweet area (e_A within 5 %): {face_map.sweet_area_cm2:.0f} cm$^2$",
+        label=f"sweet area (e_A within {100 * SWEET_FRACTION:g} %): "
+        f"{face_map.sweet_area_cm2:.0f} cm$^2$",
     )
     ax.set_aspect("equal")
     ax.set_xlim(-half - 1, half + 1)

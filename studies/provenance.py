@@ -21,7 +21,8 @@ SIDECAR_SUFFIX = ".meta.json"
 """Appended to a table's file name to name its sidecar."""
 
 _LIBRARIES = ("racket-impact", "numpy", "scipy", "pandas", "numba", "matplotlib")
-_INPUT_FLAGS = ("--racket", "--ball", "--a", "--b")
+_INPUTS = ("racket", "ball", "a", "b")
+"""The options that name rackets and balls (presets or TOML files)."""
 
 
 def sidecar_path(table_path) -> Path:
@@ -47,9 +48,16 @@ def versions() -> dict:
 
 
 def _restored(word: str, originals: dict) -> str:
-    """``word`` with any rerun copy's path put back to the path first given."""
+    """``word`` with a rerun copy's path put back to the path first given: only where the
+    whole word is the path, or the part after an ``=`` is (``--flag=PATH``,
+    ``LABEL=PATH``), so that ``b.toml`` never rewrites ``bb.toml``.
+    """
     for copy, original in originals.items():
-        word = word.replace(copy, original)
+        if word == copy:
+            return original
+        for i, char in enumerate(word):
+            if char == "=" and word[i + 1 :] == copy:
+                return word[: i + 1] + original
     return word
 
 
@@ -99,22 +107,20 @@ def describe(
     """
     originals = originals or {}
     argv = [_restored(word, originals) for word in argv]
+    options = dict(options or {})
     inputs = {}
-    for i, word in enumerate(argv):
-        flag, eq, value = word.partition("=")  # --racket=FILE as well as --racket FILE
-        if flag in _INPUT_FLAGS and (eq or i + 1 < len(argv)):
-            given = value if eq else argv[i + 1]
-            inputs.setdefault(flag.lstrip("-"), []).append(_input(given, originals))
-    if command in ("specs", "sweetspots") and len(argv) > 1 and not argv[1].startswith("-"):
-        inputs.setdefault("racket", []).append(_input(argv[1]))
-    for name in ("racket", "ball"):  # the defaults, when not typed
-        value = (options or {}).get(name)
-        if name not in inputs and isinstance(value, str):
-            inputs[name] = [_input(value)]
+    for name in _INPUTS:  # typed or the defaults, as parsed (LABEL=FILE for compare)
+        value = options.get(name)
+        if isinstance(value, str):
+            options[name] = _restored(value, originals)
+            inputs[name] = [_input(options[name], originals)]
+        elif isinstance(value, list) and all(isinstance(v, str) for v in value):
+            options[name] = [_restored(v, originals) for v in value]
+            inputs[name] = [_input(v, originals) for v in options[name]]
     return {
         "made_by": "racket-impact",
         "command": list(argv),
-        "options": json.loads(json.dumps(options or {}, default=str)),
+        "options": json.loads(json.dumps(options, default=str)),
         "inputs": inputs,
         "versions": versions(),
         "written_utc": datetime.now(timezone.utc).isoformat(timespec="seconds"),

@@ -16,7 +16,7 @@ from beam import Beam
 from racket import Racket, flex_test_stiffness, tennis_ball
 from racket.specs import Profile, SpecSheet, fit_profile, spec_sheet
 from racket.system import held_system
-from studies.landmarks import HAND_FROM_BUTT, center_of_percussion, sweet_spots
+from studies.landmarks import sweet_spots
 
 
 @dataclass(frozen=True)
@@ -93,10 +93,10 @@ def _parts(profile: Profile) -> pd.DataFrame:
     )
 
 
-def _properties(racket: Racket) -> pd.DataFrame:
+def _properties(racket: Racket, spots: pd.DataFrame) -> pd.DataFrame:
     beam = racket.beam
     throat = 2.0 * racket.hoop.center
-    hand = beam.length - HAND_FROM_BUTT
+    cop = spots.set_index("spot").loc["centre of percussion"]  # simulated (sweet_spots)
     rows = [
         ("length", 100 * beam.length, "cm"),
         ("mass", 1e3 * beam.mass, "g"),
@@ -115,8 +115,8 @@ def _properties(racket: Racket) -> pd.DataFrame:
         ),
         (
             "centre of percussion",
-            100 * (beam.length - center_of_percussion(racket, hand)),
-            f"cm from the butt (hand {100 * HAND_FROM_BUTT:.0f} cm from the butt)",
+            cop["from_butt_cm"],
+            f"cm from the butt (hand {cop['value']:.0f} cm from the butt)",
         ),
         ("string-bed stiffness", racket.strings.stiffness, "N/m"),
         ("string bed", 100 * (racket.strings.extent[1] - racket.strings.extent[0]), "cm long"),
@@ -200,12 +200,13 @@ def spec_report(racket: Racket, specs: dict | None = None, count: int = 4) -> Sp
         fit = _fit_table(sheet, fitted, profile.layout.head_length)
         parts = _parts(profile)
         warnings = tuple(profile.warnings())
+    spots = sweet_spots(racket, tennis_ball())
     return SpecReport(
         fit=fit,
-        properties=_properties(racket),
+        properties=_properties(racket, spots),
         modes=_modes(racket, count),
         effective_mass=effective,
         parts=parts,
-        sweet_spots=sweet_spots(racket, tennis_ball()),
+        sweet_spots=spots,
         warnings=warnings,
     )

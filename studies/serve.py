@@ -35,6 +35,8 @@ import numpy as np
 import pandas as pd
 
 from ball import Ball, LinearHysteresis, SineLaw, serve_speed
+from common.checks import SPEED_RANGE, in_range
+from common.checks import speed as check_speed
 from common.units import MPH
 from racket import Racket, Swing, impact
 from racket.swing import WRIST_BEYOND_BUTT
@@ -150,6 +152,11 @@ def serve_table(
     return table
 
 
+SLOWEST_HEAD_SPEED = 0.1
+"""Slowest racket-head speed [m/s] the serve search tries (an assumption: far below any
+stroke, so a target it cannot reach is a typo or the wrong unit)."""
+
+
 def head_speed_for(
     racket: Racket,
     ball: Ball,
@@ -175,16 +182,17 @@ def head_speed_for(
     """
     from scipy.optimize import brentq
 
+    target = check_speed("target", target)
     position = racket.strings.center if position is None else float(position)
-    # the impact point moves at most 250 m/s (it moves faster than the head towards the tip)
+    # the head speed searched: from SLOWEST_HEAD_SPEED, and the impact point (faster than
+    # the head towards the tip) within the speeds racket-impact accepts
     ratio = float(Swing(1.0, pivot_from_butt).point_speeds(racket, position))
-    low, high = 0.1, 250.0 / max(ratio, 1.0)
+    low, high = SLOWEST_HEAD_SPEED, SPEED_RANGE[1] / max(ratio, 1.0)
 
     def miss(head):
-        return (
-            serve(racket, ball, position, Swing(head, pivot_from_butt))["serve_simulated_m_s"]
-            - target
-        )
+        # the swung impact alone (serve() would also run the unused impact at rest)
+        moved = Swing(head, pivot_from_butt).impact_kwargs(racket, position)
+        return impact(racket, ball, position, 0.0, **moved).ball_rebound - target
 
     with warnings.catch_warnings():  # the search passes through absurd speeds
         warnings.simplefilter("ignore")
@@ -214,7 +222,8 @@ def serve_what_if(
     racket, ball, position, racket_speed, pivot_from_butt :
         As in :func:`serve_table` (one position).
     string_stiffness : sequence of float, optional
-        String-bed stiffnesses [N/m] (tension); default 1e4 to 1e5 N/m.
+        String-bed stiffnesses [N/m] (tension), each in
+        :data:`studies.sweeps.STRING_STIFFNESS_RANGE`; default 1e4 to 1e5 N/m.
     ball_stiffness : sequence of float, optional
         Ball stiffnesses k [N/m] (the normal ball keeps its COR); default 2e4 to 1e5 N/m.
 
@@ -229,7 +238,13 @@ def serve_what_if(
             f"ball must have a LinearHysteresis law for a stiffness what-if, got {ball.law!r}"
         )
     position = racket.strings.center if position is None else position
+    from studies.sweeps import STRING_STIFFNESS_RANGE
+
     string_stiffness = np.geomspace(1e4, 1e5, 7) if string_stiffness is None else string_stiffness
+    string_stiffness = [
+        in_range("string_stiffness", k_s, *STRING_STIFFNESS_RANGE, "N/m")
+        for k_s in np.atleast_1d(string_stiffness)
+    ]
     ball_stiffness = np.geomspace(2e4, 1e5, 5) if ball_stiffness is None else ball_stiffness
     rows = []
     for k_s in string_stiffness:

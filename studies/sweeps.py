@@ -23,11 +23,14 @@ from common.checks import in_range
 from common.checks import speed as check_speed
 from racket import Racket, Swing, impact
 from racket.solver import F1_MIN
+from racket.specs.sheet import SPEC_RANGES
 from racket.specs.strings import with_tension
+from racket.swing import check_swung_support
 from studies.tables import impact_columns, impact_table
 
-TENSION_RANGE = (89.0, 356.0)
-"""String tension [N] a sweep accepts: 20-80 lb (strung rackets: 40-65 lb), as spec sheets."""
+TENSION_RANGE = SPEC_RANGES["tension_n"][:2]
+"""String tension [N] a sweep accepts: 20-80 lb (strung rackets: 40-65 lb), the spec sheets'
+range (:data:`racket.specs.sheet.SPEC_RANGES`, which :func:`with_tension` checks too)."""
 
 STRING_STIFFNESS_RANGE = (1e3, 1e7)
 """String-bed stiffness [N/m] a sweep accepts (a strung racket's is 2e4-5e4; paper Secs. III
@@ -141,7 +144,7 @@ def sweep(
     string_stiffness : float or sequence, optional
         String-bed stiffness [N/m], in [1e3, 1e7].
     tension : float or sequence, optional
-        String tension [N], in [89, 356] (20-80 lb): the string bed's stiffness from the
+        String tension [N], in [88.96, 355.9] (20-80 lb): the string bed's stiffness from the
         membrane model on the racket's head (:func:`racket.string_bed_stiffness`); not with
         ``string_stiffness``.
     f1 : float or sequence, optional
@@ -188,6 +191,9 @@ def sweep(
         check_speed("speed", sp, allow_zero=swing is not None)
     if swing is not None and not isinstance(swing, Swing):
         raise ValueError(f"swing must be a Swing, got {swing!r}")
+    for sup in grid["support"]:
+        if swing is not None:
+            check_swung_support(racket.support if sup is None else sup)
     for freq in grid["f1"]:
         if freq is not None:
             in_range("f1", freq, F1_MIN, F1_MAX, "Hz")
@@ -288,7 +294,7 @@ def compare(
     swing : Swing, optional
         The same swing for every racket (as in :func:`sweep`).
     tension : float, optional
-        Every racket strung at this tension [N], in [89, 356] (as in :func:`sweep`).
+        Every racket strung at this tension [N], in [88.96, 355.9] (20-80 lb, as in :func:`sweep`).
     """
     if tension is not None:
         tension = in_range("tension", tension, *TENSION_RANGE, "N")

@@ -38,15 +38,14 @@ SOLVER_FREE = {
 }
 """Test modules that never run the racket solver's compiled kernel."""
 
-_WARM = "from racket import impact, paper_racket, tennis_ball; "
-_WARM += "impact(paper_racket(), tennis_ball(), 0.1, 10.0)"
+_LOAD = "from racket.solver import load_kernel; load_kernel()"
 _COMPILER = {}  # the process compiling the kernel, while it may still run
 
 
 def pytest_configure(config):
     """Start compiling (or loading) the kernel in a second process."""
     _COMPILER["process"] = subprocess.Popen(
-        [sys.executable, "-c", _WARM], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL
+        [sys.executable, "-c", _LOAD], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL
     )
 
 
@@ -60,9 +59,9 @@ def pytest_runtest_setup(item):
     the kernel it cached."""
     if "process" in _COMPILER and item.module.__name__.rpartition(".")[2] not in SOLVER_FREE:
         _COMPILER.pop("process").wait()
-        from racket import impact, paper_racket, tennis_ball
+        from racket.solver import load_kernel
 
-        impact(paper_racket(), tennis_ball(), 0.1, 10.0)
+        load_kernel()
 
 
 def pytest_unconfigure(config):

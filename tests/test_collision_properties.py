@@ -136,7 +136,7 @@ def test_series_force_edge_cases_found_in_review():
     # Huge z on a soft power law: the exact answer, not an infinity.
     soft = [PowerLawHysteresis(1e7, 0.5, 1000.0)] * 2
     assert series_force(soft, 1e150, 0.0) == pytest.approx(1e7 * math.sqrt(0.5e150), rel=1e-12)
-    with pytest.raises(ValueError, match="must be finite"):
+    with pytest.raises(ValueError, match=r"z must be (a )?finite number"):
         series_force(laws, math.nan, 1.0)
-    with pytest.raises(ValueError, match="must be finite"):
+    with pytest.raises(ValueError, match=r"z must be (a )?finite number"):
         series_force(laws, np.array([1e-3, math.inf]), 1.0)

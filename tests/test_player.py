@@ -3,6 +3,7 @@ positions counted from the butt everywhere (issue 14)."""
 
 import json
 from dataclasses import replace
+from pathlib import Path
 
 import numpy as np
 import pandas as pd
@@ -135,3 +136,127 @@ def test_tables_describe_themselves_and_rerun_from_the_sidecar(tmp_path, capsys,
     assert (tmp_path / "s.csv").read_text() == first
     assert main(["rerun", "mine.toml"]) == 2
     assert "sidecar" in capsys.readouterr().err
+
+
+def test_rerun_puts_back_only_whole_paths(tmp_path, capsys, monkeypatch):
+    from studies.provenance import _restored
+
+    monkeypatch.chdir(tmp_path)
+    ball = "[ball]\nmass = 0.057\nlaw = \"linear-hysteresis\"\nk = 4e4\ne = {}\n"  # fmt: skip
+    (tmp_path / "bb.toml").write_text(ball.format(0.7))
+    (tmp_path / "b.toml").write_text(ball.format(0.8))
+    argv = ["collide", "--a", "bb.toml", "--b", "b.toml", "--out", "o.csv"]
+    assert main(argv) == 0
+    first = (tmp_path / "o.csv").read_text()
+    (tmp_path / "b.toml").write_text(ball.format(0.5))  # b.toml changes, bb.toml does not
+    assert main(["rerun", "o.csv"]) == 0, capsys.readouterr().err
+    assert (tmp_path / "o.csv").read_text() == first
+    again = json.loads((tmp_path / "o.csv.meta.json").read_text())
+    assert again["command"] == argv
+    assert [again["inputs"][k][0]["toml_file"] for k in ("a", "b")] == ["bb.toml", "b.toml"]
+    copies = {"/tmp/x/0/b.toml": "b.toml"}
+    assert _restored("bb.toml", {"b.toml": "/c/b.toml"}) == "bb.toml"
+    assert _restored("/tmp/x/0/b.toml", copies) == "b.toml"
+    assert _restored("--b=/tmp/x/0/b.toml", copies) == "--b=b.toml"
+    assert _restored("mine=/tmp/x/0/b.toml", copies) == "mine=b.toml"
+    assert _restored("--b=/tmp/x/0/bb.toml", copies) == "--b=/tmp/x/0/bb.toml"
+
+
+def test_rerun_records_the_recorded_inputs_of_positional_rackets_and_balls(
+    tmp_path, capsys, monkeypatch
+):
+    monkeypatch.chdir(tmp_path)
+    sheet = tmp_path / "r.toml"
+    text = (
+        "[racket.specs]\nmass_kg = 0.3\nbalance_cm = 33\nswingweight_kgcm2 = 315\n"
+        "f1_hz = 150\nhead_size_in2 = 100\ntension_lb = 55\n"
+    )
+    sheet.write_text(text)
+    assert main(["specs", "r.toml", "--out", "s.csv"]) == 0
+    sheet.write_text(text.replace("315", "330"))  # edited after the run
+    assert main(["rerun", "s.csv"]) == 0
+    again = json.loads((tmp_path / "s.csv.meta.json").read_text())
+    assert again["inputs"]["racket"] == [
+        {**again["inputs"]["racket"][0], "given": "r.toml", "toml_file": "r.toml", "toml": text}
+    ]
+    assert again["options"]["racket"] == "r.toml"
+    ball = tmp_path / "h.toml"
+    examples = Path(__file__).parent.parent / "examples"
+    ball.write_text((examples / "hertz_ball.toml").read_text())
+    assert main(["ball", "h.toml", "--speeds", "10", "20", "--out", "b.csv"]) == 0
+    ball.unlink()  # deleted after the run
+    assert main(["rerun", "b.csv"]) == 0
+    again = json.loads((tmp_path / "b.csv.meta.json").read_text())
+    assert again["command"][1] == "h.toml" and again["options"]["ball"] == "h.toml"
+    assert again["inputs"]["ball"][0]["toml_file"] == "h.toml"
+    assert again["inputs"]["ball"][0]["given"] == "h.toml"
+    capsys.readouterr()
+
+
+def test_sidecar_described_once_per_run_and_forgotten_after(tmp_path, capsys, monkeypatch):
+    import studies.cli as cli
+    import studies.provenance as provenance
+
+    monkeypatch.chdir(tmp_path)
+    calls = []
+    describe = provenance.describe
+    monkeypatch.setattr(provenance, "describe", lambda *a: calls.append(a) or describe(*a))
+    argv = ["sweep", "--points", "3", "--out", "a.csv", "--csv", "c.csv", "--json", "j.json"]
+    assert main(argv) == 0
+    assert len(calls) == 1
+    names = ("a.csv", "c.csv", "j.json")
+    records = [json.loads((tmp_path / f"{n}.meta.json").read_text()) for n in names]
+    assert all(r["command"] == argv for r in records)
+    assert cli._RUN == {}  # a later write_table in this process records no old command
+    cli.write_table(pd.DataFrame({"x": [1]}), str(tmp_path / "later.csv"))
+    assert not (tmp_path / "later.csv.meta.json").exists()
+    assert main(["sweep", "--points", "3", "--speed", "12", "--out", "a.csv"]) == 0
+    assert json.loads((tmp_path / "a.csv.meta.json").read_text())["options"]["speed"] == [12.0]
+    capsys.readouterr()
+
+
+@pytest.mark.parametrize("lb, ok", [(20.0, True), (80.0, True), (19.9, False), (80.1, False)])
+def test_tension_lb_is_one_range_for_sweep_compare_and_map(lb, ok, tmp_path, capsys):
+    from common.units import LB
+    from racket.specs.sheet import SPEC_RANGES
+    from racket.specs.strings import with_tension
+    from studies.sweeps import TENSION_RANGE
+
+    assert TENSION_RANGE == pytest.approx([20 * LB, 80 * LB], rel=1e-15)
+    assert SPEC_RANGES["tension_n"][:2] == TENSION_RANGE
+    few = ["--tension-lb", str(lb)]
+    commands = [
+        ["sweep", "--points", "2", *few],
+        ["compare", "--points", "2", *few],
+        ["map", "--grid", "4", "4", *few],
+    ]
+    statuses = [main(argv) for argv in commands]
+    err = capsys.readouterr().err
+    assert statuses == ([0, 0, 0] if ok else [2, 2, 2]), err
+    if not ok:
+        assert err.count("--tension-lb must be in [20, 80] lb") == 3
+        with pytest.raises(ValueError, match=r"tension must be in \[88.9"):
+            with_tension(CATALOG["pure-drive-2021"].racket(), lb * LB)
+
+
+def test_page_refuses_bad_lead_and_tension():
+    from studies.dashboard import PageInputs, page_racket
+
+    for lead in (-1.0, float("nan")):
+        with pytest.raises(ValueError, match="lead_g must be"):
+            page_racket(PageInputs(lead_g=lead))
+    with pytest.raises(ValueError, match=r"tension_lb must be in \[20, 80\] lb, got 1000"):
+        page_racket(PageInputs(tension_lb=1000.0))
+    assert page_racket(PageInputs(lead_g=0.0)) is not None
+
+
+def test_sweep_refuses_a_held_swing_before_any_impact(monkeypatch):
+    import studies.sweeps as sweeps
+    from racket import Swing, paper_racket
+
+    ran = []
+    monkeypatch.setattr(sweeps, "_impact_columns", lambda *a: ran.append(a))
+    with pytest.raises(ValueError, match="swing_speed must be 0 for a hand-held racket"):
+        sweeps.sweep(paper_racket(), tennis_ball(), [0.1], 0.0, support=["free", "hand-held"],
+                     swing=Swing(20.0), progress=False)  # fmt: skip
+    assert ran == []

@@ -76,3 +76,64 @@ def test_twin_serves_slower_for_every_law():
     ):
         table = serve_table(racket, ball, racket_speed=40.0)
         assert table.loc["zero-COR", "e"] < table.loc["normal", "e"]
+
+
+@pytest.mark.parametrize("stiffness", [10.0, 1e9, float("nan")])
+def test_serve_what_if_checks_the_string_stiffness(stiffness):
+    from studies.serve import serve_what_if
+
+    with pytest.raises(ValueError, match=r"string_stiffness must be"):
+        serve_what_if(paper_racket(), BALLS["tennis"](), string_stiffness=[3e4, stiffness])
+
+
+def test_centre_of_percussion_is_simulated_and_is_the_formula_for_a_free_racket():
+    """The sweet spots' centre of percussion is where the hand's rigid-body velocity after
+    the impact is zero: the rigid-body formula for a free racket (to round-off), not for a
+    held one (the hand pushes during the contact)."""
+    from dataclasses import replace
+
+    from racket import CATALOG, tennis_ball
+    from studies.landmarks import center_of_percussion, hand_pivot, sweet_spots
+
+    free = CATALOG["pure-drive-2021"].racket()
+    held = replace(free, support="hand-held")
+    cop = {}
+    for name, racket in (("free", free), ("held", held)):
+        table = sweet_spots(racket, tennis_ball()).set_index("spot")
+        cop[name] = table.loc["centre of percussion", "from_tip_cm"] / 100
+    formula = center_of_percussion(free, hand_pivot(free))
+    assert cop["free"] == pytest.approx(formula, abs=1e-10)
+    assert abs(cop["held"] - formula) > 0.005
+    # and the grip given moves it as the formula says, for the free racket
+    table = sweet_spots(free, tennis_ball(), grip_from_butt=0.07).set_index("spot")
+    formula = center_of_percussion(free, free.beam.length - 0.07)
+    assert table.loc["centre of percussion", "from_tip_cm"] / 100 == pytest.approx(
+        formula, abs=1e-10
+    )
+
+
+@pytest.mark.parametrize(
+    "pivot, match",
+    [
+        ("centre of mass", r"pivot must be in \(.*\] m \(beyond the centre of mass"),
+        (float("nan"), r"pivot must be a finite number"),
+        (2.0, r"pivot must be in \[0, "),
+    ],
+)
+def test_centre_of_percussion_formula_refuses_bad_pivots(pivot, match):
+    from studies.landmarks import center_of_percussion
+
+    racket = paper_racket()
+    if pivot == "centre of mass":
+        pivot = racket.beam.center_of_mass
+    with pytest.raises(ValueError, match=match):
+        center_of_percussion(racket, pivot)
+
+
+@pytest.mark.parametrize("points", [40.5, 4.7, 10])
+def test_sweet_spots_points_must_be_a_whole_number_in_range(points):
+    from racket import tennis_ball
+    from studies.landmarks import sweet_spots
+
+    with pytest.raises(ValueError, match=r"points must be"):
+        sweet_spots(paper_racket(), tennis_ball(), points=points)

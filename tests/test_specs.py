@@ -251,3 +251,14 @@ def test_a_mass_no_plausible_parts_add_up_to_is_refused():
     with pytest.raises(ValueError, match=r"mass_kg must be in \(0.\d+, 0.\d+\) kg .*got 0.12"):
         fit_masses(lay, 0.12, 0.33, 0.03)
     assert total > 0.12
+
+
+def test_a_sheet_checks_its_torsion_frequency_however_it_is_built():
+    from dataclasses import replace
+
+    from racket.specs.sheet import spec_sheet
+
+    sheet = spec_sheet(**SHEETS["Pure Drive-like"], length_m=0.685, tension_lb=55, torsion_hz=320)
+    assert sheet.torsion_hz == 320.0 and isinstance(sheet.torsion_hz, float)
+    with pytest.raises(ValueError, match=r"torsion_hz must be in \[150, 1500\] Hz"):
+        replace(sheet, torsion_hz=5.0)

@@ -301,3 +301,40 @@ def test_bad_twisting_frames_and_one_sided_masses_are_refused(pure_drive):
     taped = pure_drive.with_lead_tape(0.005, "2 and 10")
     assert taped.beam.is_mirror_symmetric and not one_sided.beam.is_mirror_symmetric
     impact(one_sided, ball, 0.17, 10.0)  # on the axis the 1-D model holds
+
+
+@pytest.mark.parametrize("grid", [(15, 9), (14, 8), (15, 8), (14, 9)])
+def test_face_map_landmarks_come_from_its_one_impact_call(pure_drive, grid):
+    """Odd or even grids: the string centre, 3 o'clock and the centre of percussion are the
+    same points (the centre and side points on the grid or appended to its impact call)."""
+    ball = tennis_ball()
+    result = face_map(pure_drive, ball, SPEED, grid=grid)
+    side = 0.5 * pure_drive.strings.full_width - ball.radius
+    single = impact(pure_drive, ball, pure_drive.strings.center, SPEED, offset=[0.0, side])
+    assert result.e_A_centre == pytest.approx(single.e_A[0], abs=1e-12)
+    assert result.e_A_side == pytest.approx(single.e_A[1], abs=1e-12)
+    # a free racket's simulated centre of percussion is the rigid-body formula's
+    from studies.landmarks import center_of_percussion, hand_pivot
+
+    formula = center_of_percussion(pure_drive, hand_pivot(pure_drive))
+    assert result.center_of_percussion == pytest.approx(formula, abs=1e-9)
+
+
+def test_face_map_centre_of_percussion_of_a_held_racket_is_the_simulated_one(pure_drive):
+    from studies.landmarks import center_of_percussion, hand_pivot
+
+    held = replace(pure_drive, support="hand-held")
+    result = face_map(held, tennis_ball(), SPEED)
+    formula = center_of_percussion(held, hand_pivot(held))
+    assert abs(result.center_of_percussion - formula) > 0.005  # the hand pushes
+    # where the hand's rigid-body velocity after the impact is zero (within the rows'
+    # linear interpolation)
+    hit = impact(held, tennis_ball(), result.center_of_percussion, SPEED)
+    hand = hit.v_cm + (held.beam.center_of_mass - hand_pivot(held)) * hit.omega
+    assert abs(hand) < 1e-3 * hit.v_cm
+
+
+@pytest.mark.parametrize("grid", [(15.5, 9), (15, 8.2)])
+def test_face_map_grids_must_be_whole(pure_drive, grid):
+    with pytest.raises(ValueError, match=r"grid\[[01]\] must be a whole number in \[4, 1000\]"):
+        face_map(pure_drive, tennis_ball(), SPEED, grid=grid)

@@ -144,3 +144,37 @@ def test_the_feel_is_followed_past_the_contact(racket):
     soft = replace(racket, strings=replace(racket.strings, stiffness=1e4))
     with pytest.raises(ValueError, match=r"duration must be longer than the contact, 7"):
         hand_feel(soft, tennis_ball(), racket.strings.center, 20.0, duration=0.005)
+
+
+@pytest.mark.parametrize(
+    "target, match",
+    [
+        (float("nan"), r"target must be a finite number"),
+        (0.0, r"target must be in \[0.001, 300\] m/s"),
+        (400.0, r"target must be in \[0.001, 300\] m/s"),
+    ],
+)
+def test_the_head_speed_target_is_checked_before_any_impact(racket, target, match, monkeypatch):
+    import studies.serve
+
+    def no_impact(*args, **kwargs):
+        raise AssertionError("an impact ran before the target was checked")
+
+    monkeypatch.setattr(studies.serve, "impact", no_impact)
+    with pytest.raises(ValueError, match=match):
+        head_speed_for(racket, tennis_ball(), target)
+
+
+def test_the_head_speed_search_runs_only_swung_impacts(racket, monkeypatch):
+    """Each evaluation is one swung impact (the ball at rest), none of the racket at rest."""
+    import studies.serve
+
+    speeds = []
+
+    def counted(*args, **kwargs):
+        speeds.append(args[3])
+        return impact(*args, **kwargs)
+
+    monkeypatch.setattr(studies.serve, "impact", counted)
+    head_speed_for(racket, tennis_ball(), 100 * MPH)
+    assert speeds and all(s == 0.0 for s in speeds)

@@ -90,6 +90,8 @@ class SpecSheet:
             )
         positive("head size", self.head_area, "m^2")
         positive("string_stiffness_n_m", self.string_stiffness, "N/m")
+        if self.torsion_hz is not None:  # also for a sheet built without spec_sheet
+            object.__setattr__(self, "torsion_hz", _check_spec("torsion_hz", self.torsion_hz))
 
 
 SPEC_RANGES = {
@@ -109,7 +111,7 @@ SPEC_RANGES = {
     "head_size_cm2": (387.0, 903.0, "cm^2"),  # 60-140 in^2
     "beam_width_mm": (10.0, 40.0, "mm"),
     "tension_lb": (20.0, 80.0, "lb"),
-    "tension_n": (89.0, 356.0, "N"),  # 20-80 lb
+    "tension_n": (20.0 * LB, 80.0 * LB, "N"),  # 20-80 lb (88.96-355.9 N), the same range
     "string_stiffness_n_m": (5e3, 2e5, "N/m"),
 }
 """The range of each spec-sheet input, in its own unit, checked before the fit.  Generous

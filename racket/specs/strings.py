@@ -4,9 +4,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from common.checks import positive
+from common.checks import in_range, positive
 from common.units import IN2
-from racket.membrane import CONTACT_RADIUS
+from racket.membrane import CONTACT_RADIUS, MIN_RADIUS, bed_radius
 
 MEMBRANE_REFERENCE = (245.0, 100.0 * IN2, 3e4)
 """Calibration of the membrane model: 245 N (55 lb) on a 100 in^2 head gives a string-plane
@@ -24,10 +24,15 @@ def with_tension(racket, tension_n: float):
     racket : Racket
         The racket to restring.
     tension_n : float
-        String (reference) tension [N].
+        String (reference) tension [N], in the spec sheets' range
+        (:data:`racket.specs.sheet.SPEC_RANGES`, 20-80 lb).
     """
     from dataclasses import replace
 
+    from racket.specs.sheet import SPEC_RANGES  # here: sheet imports this module
+
+    low, high, unit = SPEC_RANGES["tension_n"]
+    tension_n = in_range("tension", tension_n, low, high, unit)
     stiffness = string_bed_stiffness(tension_n, racket.strings.area)
     return replace(racket, strings=replace(racket.strings, stiffness=stiffness))
 
@@ -57,12 +62,12 @@ def string_bed_stiffness(tension_n: float, head_area_m2: float) -> float:
     """
     tension_n = positive("tension", tension_n, "N")
     head_area_m2 = positive("head size", head_area_m2, "m^2")
-    radius = np.sqrt(head_area_m2 / np.pi)
-    if radius <= 2.0 * CONTACT_RADIUS:
+    if head_area_m2 <= np.pi * MIN_RADIUS**2:
         raise ValueError(
-            f"head size must be > {np.pi * (2 * CONTACT_RADIUS) ** 2 / IN2:.0f} in^2 for the "
+            f"head size must be > {np.pi * MIN_RADIUS**2 / IN2:.0f} in^2 for the "
             f"membrane model, got {head_area_m2 / IN2:.4g} in^2"
         )
+    radius = bed_radius(head_area_m2)
     t_ref, a_ref, k_ref = MEMBRANE_REFERENCE
     c = k_ref * np.log(np.sqrt(a_ref / np.pi) / CONTACT_RADIUS) / t_ref
     return float(c * tension_n / np.log(radius / CONTACT_RADIUS))
