@@ -43,6 +43,10 @@ class RollModes:
     residual : ndarray
         (nodes, nodes) sum over the torsion modes not kept of theta theta^T / omega**2
         [1/(N m)]: the static twist per unit torque they add (the static correction).
+    element_flexibility : ndarray
+        h / GJ of each element [1/(N m)] (0 for a torsionally rigid frame): the twist that
+        a torque inside an element adds beyond what its two nodes carry
+        (:meth:`residual_flexibility`).
     """
 
     omega: np.ndarray
@@ -51,6 +55,7 @@ class RollModes:
     nodes: np.ndarray
     vectors: np.ndarray
     residual: np.ndarray
+    element_flexibility: np.ndarray
 
     @property
     def count(self) -> int:
@@ -81,14 +86,25 @@ class RollModes:
 
     def residual_flexibility(self, x, y) -> np.ndarray:
         """Normal deflection per unit normal force [m/N] at (x, y) from the torsion modes
-        not kept: y**2 theta^T R theta with R = :attr:`residual` (exact on the elements).
+        not kept (the static correction).
+
+        Two parts, y**2 (theta^T R theta + s (1 - s) h / GJ):
+
+        * the modes of the mesh not kept, R = :attr:`residual`, for the torque shared
+          between the two nodes of the element holding x (linear shapes);
+        * the twist a linear element cannot carry: a torque T at a fraction s of an element
+          of length h twists that point by T s (1 - s) h / GJ more than the element's
+          nodes say (the Green's function of the element held at its nodes, exact for a
+          uniform element: with it the static twist at x is the exact one wherever x is,
+          not only on a node).
         """
         e, s = self._interpolation(x)
         r = self.residual
         twist2 = (
             (1.0 - s) ** 2 * r[e, e] + 2.0 * s * (1.0 - s) * r[e, e + 1] + s**2 * r[e + 1, e + 1]
         )
-        return np.asarray(y, dtype=float) ** 2 * np.maximum(twist2, 0.0)
+        inside = s * (1.0 - s) * self.element_flexibility[e]
+        return np.asarray(y, dtype=float) ** 2 * (np.maximum(twist2, 0.0) + inside)
 
 
 def roll_modes(
@@ -142,7 +158,9 @@ def roll_modes(
     roll_inertia = float(mass.sum())
     rigid = np.full((1, n), 1.0 / np.sqrt(roll_inertia))
     if torsional_stiffness is None:
-        return RollModes(np.zeros(1), np.zeros(1), roll_inertia, nodes, rigid, np.zeros((n, n)))
+        return RollModes(
+            np.zeros(1), np.zeros(1), roll_inertia, nodes, rigid, np.zeros((n, n)), np.zeros(n - 1)
+        )
     from scipy.linalg import eigh  # scipy loads on first use (import time)
 
     w2, vec = eigh(stiff, mass)
@@ -157,4 +175,5 @@ def roll_modes(
         nodes=nodes,
         vectors=np.vstack([rigid, vec[:, :kept].T]),
         residual=(rest / w2[kept:]) @ rest.T,
+        element_flexibility=h / gj,
     )
