@@ -2,12 +2,15 @@
 
 Public API: the force laws :class:`LinearSpring`, :class:`LinearHysteresis`,
 :class:`PowerLawHysteresis`, :class:`GrowingHysteresis` (COR and stiffness that change with
-speed) and :class:`SineLaw`; :class:`Ball` and :data:`WALL`;
+speed), :class:`StiffeningHysteresis` (the real tennis ball's law, bounded by its radius) and
+:class:`SineLaw`; :class:`Ball` and :data:`WALL`; the real-ball presets
+:data:`BALL_PRESETS` (:mod:`ball.catalog`);
 :func:`collide` and its :class:`Collision` result; the closed forms in
 :mod:`ball.closed_forms`.
 """
 
 from ball.bodies import WALL, Ball, Wall, warn_if_squashed
+from ball.catalog import BALL_PRESETS, DEFAULT_BALL
 from ball.closed_forms import (
     energy_loss_fraction,
     energy_loss_fraction_lab,
@@ -26,9 +29,12 @@ from ball.laws import (
     SineLaw,
 )
 from ball.series import series_force
+from ball.stiffening import StiffeningHysteresis
 from common.version import __version__
 
 __all__ = [
+    "BALL_PRESETS",
+    "DEFAULT_BALL",
     "WALL",
     "Ball",
     "Collision",
@@ -39,6 +45,7 @@ __all__ = [
     "MonotoneLaw",
     "PowerLawHysteresis",
     "SineLaw",
+    "StiffeningHysteresis",
     "Wall",
     "__version__",
     "collide",

@@ -32,7 +32,7 @@ import numpy as np
 
 from common.checks import finite, in_range, positive, shown
 
-LINEAR, POWER, SINE, GROWING = 0, 1, 2, 3
+LINEAR, POWER, SINE, GROWING, STIFFENING = 0, 1, 2, 3, 4
 """Codes of the law families in the racket solver's compiled kernel
 (:mod:`racket.kernel`), each law's ``kernel_law`` giving its code and (up to four) numbers."""
 
@@ -160,22 +160,53 @@ class LinearHysteresis(MonotoneLaw):
         return LINEAR, (self.k, self.e, 0.0, 0.0)
 
 
-class _PowerBranches(MonotoneLaw):
-    """Loading F = k X**a, unloading F = F_max (X / X_max)**b from the largest force: the
-    branches shared by :class:`PowerLawHysteresis` (b fixed) and
-    :class:`GrowingHysteresis` (b set by F_max); the subclass gives ``k``, ``a`` and
-    :meth:`unloading_exponent`.
-    """
+def falling_cor(e0: float, slope: float, x_max):
+    """Rigid-surface COR max(e0 - slope X_max, COR_FLOOR) of a bounce compressing a ball by
+    ``x_max`` [m]: the COR of :class:`GrowingHysteresis` and
+    :class:`~ball.stiffening.StiffeningHysteresis`.
 
-    k: float
-    a: float
+    Parameters
+    ----------
+    e0 : float
+        COR of a vanishingly slow bounce [-].
+    slope : float
+        Fall of the COR per metre of peak compression [1/m].
+    x_max : float or array
+        Largest compression [m].
+    """
+    return np.maximum(e0 - slope * np.asarray(x_max, dtype=float), COR_FLOOR)
+
+
+class _PowerBranches(MonotoneLaw):
+    """A loading curve X_load(F) and a power unloading F = F_max (X / X_max)**b from the
+    largest force: the branches shared by the power-law balls (:class:`_PowerLoading`) and
+    :class:`~ball.stiffening.StiffeningHysteresis`.  The subclass gives the loading curve
+    (:meth:`_x_max`, :meth:`_force_at`, :meth:`_loading_compliance`, :meth:`stored`,
+    :meth:`peak_compression`) and :meth:`unloading_exponent`; the unloading returns
+    F_max X_max / (b + 1).
+    """
 
     @abstractmethod
     def unloading_exponent(self, f_max):
         """Exponent b of the unloading curve from the largest force ``f_max`` [N]."""
 
+    @abstractmethod
     def _x_max(self, f_max):
-        return (np.asarray(f_max, dtype=float) / self.k) ** (1.0 / self.a)
+        """Compression [m] on the loading curve at force ``f_max`` [N]."""
+
+    @abstractmethod
+    def _loading_compliance(self, f):
+        """d(compression)/d(force) [m/N] on the loading curve at force ``f`` > 0 [N]."""
+
+    @abstractmethod
+    def stored(self, f_max):
+        """Energy [J] stored by loading the ball to force ``f_max`` [N]."""
+
+    @abstractmethod
+    def peak_compression(self, mass: float, speed: float):
+        """Largest compression [m] of a ball of ``mass`` [kg] hitting a rigid surface at
+        ``speed`` [m/s]: where the loading has stored mass speed**2 / 2.
+        """
 
     def compression(self, f, f_max):
         f = np.asarray(f, dtype=float)
@@ -186,16 +217,48 @@ class _PowerBranches(MonotoneLaw):
 
     def compliance(self, f, f_max):
         f = np.asarray(f, dtype=float)
-        exponent = np.where(f < np.asarray(f_max), self.unloading_exponent(f_max), self.a)
+        unloading = f < np.asarray(f_max)
         with np.errstate(divide="ignore", invalid="ignore"):
-            c = self.compression(f, f_max) / (exponent * f)
+            c = np.where(
+                unloading,
+                self.compression(f, f_max) / (self.unloading_exponent(f_max) * f),
+                self._loading_compliance(np.where(f > 0, f, 1.0)),
+            )
         return np.where(f > 0, c, np.inf)
 
     def dissipated(self, f_max):
-        # The loading stores F_max X_max / (a + 1); the unloading returns F_max X_max / (b + 1).
         f_max = np.asarray(f_max, dtype=float)
         b = self.unloading_exponent(f_max)
-        return f_max * self._x_max(f_max) * (1.0 / (self.a + 1.0) - 1.0 / (b + 1.0))
+        return self.stored(f_max) - f_max * self._x_max(f_max) / (b + 1.0)
+
+    def secant_stiffness(self, mass: float, speed: float) -> float:
+        x = self.peak_compression(mass, speed)
+        return self._force_at(x) / x
+
+    @abstractmethod
+    def _force_at(self, x):
+        """Force [N] on the loading curve at compression ``x`` [m]."""
+
+
+class _PowerLoading(_PowerBranches):
+    """Loading F = k X**a (the subclass gives ``k``, ``a`` and :meth:`unloading_exponent`)."""
+
+    k: float
+    a: float
+
+    def _x_max(self, f_max):
+        return (np.asarray(f_max, dtype=float) / self.k) ** (1.0 / self.a)
+
+    def _loading_compliance(self, f):
+        return self._x_max(f) / (self.a * np.asarray(f, dtype=float))
+
+    def _force_at(self, x):
+        return self.k * x**self.a
+
+    def stored(self, f_max):
+        """Energy [J] stored by loading to ``f_max`` [N]: F_max X_max / (a + 1)."""
+        f_max = np.asarray(f_max, dtype=float)
+        return f_max * self._x_max(f_max) / (self.a + 1.0)
 
     def peak_compression(self, mass: float, speed: float) -> float:
         """Largest compression [m] of a ball of ``mass`` [kg] hitting a rigid surface at
@@ -203,12 +266,9 @@ class _PowerBranches(MonotoneLaw):
         """
         return ((self.a + 1.0) * mass * speed**2 / (2.0 * self.k)) ** (1.0 / (self.a + 1.0))
 
-    def secant_stiffness(self, mass: float, speed: float) -> float:
-        return self.k * self.peak_compression(mass, speed) ** (self.a - 1.0)
-
 
 @dataclass(frozen=True)
-class PowerLawHysteresis(_PowerBranches):
+class PowerLawHysteresis(_PowerLoading):
     """Nonlinear hysteretic ball: load F = k X**a, unload F = F_max (X / X_max)**b.
 
     The loading stores F_max X_max / (a + 1), the unloading returns F_max X_max / (b + 1),
@@ -264,7 +324,7 @@ class PowerLawHysteresis(_PowerBranches):
 
 
 @dataclass(frozen=True)
-class GrowingHysteresis(_PowerBranches):
+class GrowingHysteresis(_PowerLoading):
     """A ball whose stiffness and hysteresis loss grow with its deformation, so that its COR
     falls and its contact shortens as the impact speed rises (paper Sec. III: "a slight
     decrease in both e1 and the impact duration as the ball speed increases ... due to a
@@ -325,10 +385,12 @@ class GrowingHysteresis(_PowerBranches):
 
     def cor_at_compression(self, x_max):
         """Rigid-surface COR e(X_max) of a bounce compressing the ball by ``x_max`` [m]."""
-        return np.maximum(self.e0 - self.slope * np.asarray(x_max, dtype=float), COR_FLOOR)
+        return falling_cor(self.e0, self.slope, x_max)
 
     def unloading_exponent(self, f_max):
-        """Exponent b of the unloading curve from the largest force ``f_max`` [N]."""
+        """Exponent b of the unloading curve from the largest force ``f_max`` [N]: it returns
+        e(X_max)**2 of the F_max X_max / (a + 1) stored.
+        """
         e = self.cor_at_compression(self._x_max(f_max))
         return (self.a + 1.0) / e**2 - 1.0
 

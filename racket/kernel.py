@@ -41,7 +41,8 @@ moment the ball finally left.  For a hand-held racket the hand keeps pushing aft
 and the racket's momentum keeps changing, so any later moment would give another e.
 
 Law codes (:data:`ball.laws.LINEAR` ...): 0 linear hysteresis (k, e), 1 power law (k, a, b),
-2 sine law (k0), 3 growing hysteresis (k, a, e0, slope), each from the law's ``kernel_law``.
+2 sine law (k0), 3 growing hysteresis (k, a, e0, slope), 4 stiffening hysteresis (k, X_lim,
+e0, slope), each from the law's ``kernel_law``.
 """
 
 from __future__ import annotations
@@ -69,6 +70,7 @@ from racket.layout import (
     SINE_WORK,
     SNAP_RESIDUAL,
     SNAPPED,
+    STIFFENING,
     T_CONTACT,
     T_END,
     X_END,
@@ -76,25 +78,54 @@ from racket.layout import (
 
 
 @njit(cache=True)
-def _power_compression(f, f_max, k, a, b):
-    """Compression of a power-law ball at force f after largest force f_max."""
+def _loading(law, params, f):
+    """Compression on a monotone ball law's loading curve at force f > 0, and its
+    d(compression)/d(force): k X**a (POWER, GROWING: params k, a) or the hyperbola
+    X = X_lim F / (F + k X_lim) (STIFFENING: params k, X_lim).
+    """
+    if law == STIFFENING:
+        f_c = params[0] * params[1]
+        return params[1] * f / (f + f_c), params[1] * f_c / ((f + f_c) * (f + f_c))
+    x = (f / params[0]) ** (1.0 / params[1])
+    return x, x / (params[1] * f)
+
+
+@njit(cache=True)
+def _branch(law, params, f, f_max, b):
+    """Compression of a power-unloading ball at force f after largest force f_max, and its
+    d(compression)/d(force) on the branch it is on (unloading X_max (f / f_max)**(1 / b)).
+    """
     if f <= 0.0:
-        return 0.0
+        return 0.0, math.inf
     if f >= f_max:
-        return (f / k) ** (1.0 / a)
-    return (f_max / k) ** (1.0 / a) * (f / f_max) ** (1.0 / b)
+        return _loading(law, params, f)
+    x = _loading(law, params, f_max)[0] * (f / f_max) ** (1.0 / b)
+    return x, x / (b * f)
+
+
+@njit(cache=True)
+def _stored_over_r2(r):
+    """(ln(1 + r) - r / (1 + r)) / r**2, as in :mod:`ball.stiffening` (its series below 1e-3)."""
+    if r < 1e-3:
+        return 0.5 - r * (2.0 / 3.0 - r * (0.75 - r * (0.8 - r * 5.0 / 6.0)))
+    return (math.log1p(r) - r / (1.0 + r)) / (r * r)
 
 
 @njit(cache=True)
 def unloading_exponent(law, params, f_max):
-    """Exponent b of a power-law ball's unloading curve from the largest force f_max: fixed
-    (POWER: params k, a, b), or set by the largest compression (GROWING: params k, a, e0,
-    slope; b = (a + 1) / e**2 - 1 with e = max(e0 - slope X_max, COR_FLOOR)).
+    """Exponent b of a ball's unloading curve from the largest force f_max: fixed (POWER:
+    params k, a, b), or set by the largest compression so that the unloading returns
+    e**2 of the energy stored, e = max(e0 - slope X_max, COR_FLOOR) (GROWING: params k, a,
+    e0, slope, b = (a + 1) / e**2 - 1; STIFFENING: params k, X_lim, e0, slope,
+    b = F_max X_max / (e**2 W) - 1 with W the stored energy).
     """
     if law == POWER:
         return params[2]
-    x_max = (f_max / params[0]) ** (1.0 / params[1]) if f_max > 0.0 else 0.0
+    x_max = _loading(law, params, f_max)[0] if f_max > 0.0 else 0.0
     e = max(params[2] - params[3] * x_max, COR_FLOOR)
+    if law == STIFFENING:
+        r = f_max / (params[0] * params[1])
+        return 1.0 / ((1.0 + r) * _stored_over_r2(r) * e * e) - 1.0
     return (params[1] + 1.0) / (e * e) - 1.0
 
 
@@ -108,26 +139,23 @@ def ball_compression(law, params, f, f_max):
         if f >= f_max:
             return f / k
         return (f_max * (1.0 - e * e) + e * e * f) / k
-    b = unloading_exponent(law, params, f_max)
-    return _power_compression(f, f_max, params[0], params[1], b)
+    return _branch(law, params, f, f_max, unloading_exponent(law, params, f_max))[0]
 
 
 @njit(cache=True)
-def _power_force(target, c, f_lo, f_hi, f_max, k, a, b):
-    """Solve g(F) + c F = target for F in [f_lo, f_hi] (g the power law), by safeguarded
-    Newton: g + c F rises with F, and the bracket holds the root.
+def _branch_force(target, c, f_lo, f_hi, f_max, law, params, b):
+    """Solve g(F) + c F = target for F in [f_lo, f_hi] (g the ball's branch, :func:`_branch`),
+    by safeguarded Newton: g + c F rises with F, and the bracket holds the root.
     """
     f = 0.5 * (f_lo + f_hi)
     for _ in range(100):
-        g = _power_compression(f, f_max, k, a, b)
+        g, dg = _branch(law, params, f, f_max, b)
         resid = g + c * f - target
         if resid < 0.0:
             f_lo = f
         else:
             f_hi = f
-        expo = a if f >= f_max else b
-        slope = g / (expo * f) + c if f > 0.0 else math.inf
-        f_new = f - resid / slope
+        f_new = f - resid / (dg + c)
         if not (f_lo < f_new < f_hi):
             f_new = 0.5 * (f_lo + f_hi)
         if abs(f_new - f) <= 1e-15 * f_new:
@@ -159,13 +187,13 @@ def monotone_force(law, params, coef, a, z_pred, f_max):
         if f >= f_max:
             return f
         return max((z_pred - f_max * coef[2]) * coef[1], 0.0)  # unloading line
-    k, p, q = params[0], params[1], unloading_exponent(law, params, f_max)
-    switch = _power_compression(f_max, f_max, k, p, q) + a * f_max
-    if z_pred >= switch:
-        return _power_force(z_pred, a, f_max, z_pred / a, f_max, k, p, q)
+    switch = (_loading(law, params, f_max)[0] if f_max > 0.0 else 0.0) + a * f_max
+    if z_pred >= switch:  # loading: b plays no part
+        return _branch_force(z_pred, a, f_max, z_pred / a, f_max, law, params, 1.0)
     if z_pred <= 0.0:
         return 0.0
-    return _power_force(z_pred, a, 0.0, f_max, f_max, k, p, q)
+    b = unloading_exponent(law, params, f_max)
+    return _branch_force(z_pred, a, 0.0, f_max, f_max, law, params, b)
 
 
 @njit(cache=True)

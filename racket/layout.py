@@ -12,7 +12,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from ball.laws import GROWING, LINEAR, POWER, SINE  # noqa: F401  (the law codes, re-exported)
+from ball.laws import GROWING, LINEAR, POWER, SINE, STIFFENING  # noqa: F401  (law codes)
 
 
 class Frame(NamedTuple):
@@ -94,7 +94,7 @@ class BallModel(NamedTuple):
     g0, g1 : ndarray (2,)
         Input of the force at the start and at the end of the step, as for a block [SI].
     law : int
-        The law's code: LINEAR, POWER, SINE or GROWING.
+        The law's code: LINEAR, POWER, SINE, GROWING or STIFFENING.
     params : ndarray (4,)
         The law's numbers [SI].
     """

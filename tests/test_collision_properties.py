@@ -18,6 +18,7 @@ from ball import (
     collide,
 )
 from ball.series import series_compression, series_force
+from ball.stiffening import StiffeningHysteresis
 
 stiffness = st.floats(1e3, 1e6)
 cor = st.floats(0.0, 1.0)
@@ -31,6 +32,13 @@ monotone_laws = st.one_of(
         GrowingHysteresis,
         st.floats(1e4, 1e8),
         st.floats(1.0, 2.0),
+        st.floats(0.3, 1.0),
+        st.floats(0.0, 20.0),
+    ),
+    st.builds(
+        StiffeningHysteresis,
+        stiffness,
+        st.floats(0.005, 0.05),
         st.floats(0.3, 1.0),
         st.floats(0.0, 20.0),
     ),
@@ -108,6 +116,10 @@ def test_series_force_solves_the_series_law_from_any_guess(laws, f_max, scale, g
     # z anywhere from the open contact to 10x the compression at f_max, on any branch: the
     # force must compress the laws by z wherever Newton's method starts, scalar or array.
     z = scale * float(series_compression(laws, max(f_max, 1.0), max(f_max, 1.0)))
+    if z >= sum(getattr(law, "x_lim", math.inf) for law in laws):  # beyond what any force does
+        with pytest.raises(RuntimeError, match="compresses the laws"):
+            series_force(laws, z, f_max)
+        return
     unguessed = series_force(laws, z, f_max)
     guessed = series_force(laws, z, f_max, guess=guess_ratio * unguessed)
     (array,) = series_force(laws, np.array([z]), np.array([f_max]))

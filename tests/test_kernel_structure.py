@@ -14,6 +14,7 @@ from ball import (
     PowerLawHysteresis,
     SineLaw,
 )
+from ball.stiffening import StiffeningHysteresis
 from racket import impact, kernel, paper_racket, solver, tennis_ball
 
 LAWS = [
@@ -21,6 +22,7 @@ LAWS = [
     LinearHysteresis(4e4, 0.75),
     PowerLawHysteresis(2e6, 1.5, 3.0),
     GrowingHysteresis(1e6, 1.4, 0.82, 8.0),
+    StiffeningHysteresis(3.75e4, 0.0335, 0.8, 7.3),
 ]
 
 
@@ -46,7 +48,7 @@ def test_kernel_formulas_agree_with_the_law_objects(law):
 
 def test_every_law_names_its_kernel_code():
     codes = {type(law).__name__: law.kernel_law[0] for law in [*LAWS, SineLaw(2e4)]}
-    assert len(set(codes.values())) == 4  # linear (two laws), power, sine, growing
+    assert len(set(codes.values())) == 5  # linear (two laws), power, sine, growing, stiffening
     assert codes["SineLaw"] not in (codes["LinearSpring"], codes["PowerLawHysteresis"])
 
 

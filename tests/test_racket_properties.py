@@ -5,6 +5,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from ball import Ball, GrowingHysteresis, LinearHysteresis, LinearSpring, PowerLawHysteresis
+from ball.stiffening import StiffeningHysteresis
 from beam import Beam
 from racket import Racket, StringBed, impact
 
@@ -18,6 +19,13 @@ laws = st.one_of(
         GrowingHysteresis,
         st.floats(1e5, 1e7),
         st.floats(1.0, 1.8),
+        st.floats(0.4, 1.0),
+        st.floats(0.0, 15.0),
+    ),
+    st.builds(
+        StiffeningHysteresis,
+        st.floats(1e4, 1e5),
+        st.floats(0.02, 0.04),
         st.floats(0.4, 1.0),
         st.floats(0.0, 15.0),
     ),
