@@ -33,6 +33,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from functools import partial
 
 from ball.bodies import Ball
 from ball.stiffening import StiffeningHysteresis
@@ -193,13 +194,25 @@ class BallPreset:
         return Ball(BALL_MASS, self.build(), self.radius)
 
 
-def _pressurised(bands: ItfBands, radius: float):
-    """A pressurised ball in ``bands``: the type 2 stiffness, COR the middle of its band at
-    7.06 m/s, falling by as much as the type 2 ball's by 30 m/s (an assumption).
+def pressurised_law(
+    bands: ItfBands, radius: float, cor_at_30: float = COR_AT_30
+) -> StiffeningHysteresis:
+    """A pressurised ball in ``bands``: the type 2 stiffness, its COR the middle of its band
+    at 7.06 m/s, falling by as much as the type 2 ball's by 30 m/s (an assumption).
+
+    Parameters
+    ----------
+    bands : ItfBands
+        The ball's ITF type.
+    radius : float
+        Its radius [m].
+    cor_at_30 : float
+        The type 2 ball's rigid-surface COR at 30 m/s [-] (:data:`COR_AT_30`, an
+        assumption; other values show how an answer depends on it).
     """
-    type_2_fall = _middle(TYPE_2_BANDS.cor) - COR_AT_30
+    type_2_fall = _middle(TYPE_2_BANDS.cor) - cor_at_30
     cor_low = _middle(bands.cor)
-    return lambda: calibrated_law(
+    return calibrated_law(
         BALL_MASS, radius, STIFFNESS, cor_low, CALIBRATION_SPEED, cor_low - type_2_fall
     )
 
@@ -208,7 +221,7 @@ def _punctured() -> StiffeningHysteresis:
     """A punctured ball: COR 20 % and secant stiffness at 7.06 m/s 35 % below type 2."""
     from scipy.optimize import brentq  # scipy loads on first use
 
-    type_2 = _pressurised(TYPE_2_BANDS, RADIUS)()
+    type_2 = pressurised_law(TYPE_2_BANDS, RADIUS)
     target = PUNCTURED_STIFFNESS_RATIO * type_2.secant_stiffness(BALL_MASS, ITF_DROP_SPEED)
 
     def secant(k):
@@ -247,21 +260,21 @@ BALL_PRESETS = {
     for preset in (
         BallPreset(
             "itf-type-2", "ITF type 2 (medium pace), the standard ball", RADIUS,
-            TYPE_2_BANDS, _pressurised(TYPE_2_BANDS, RADIUS), (_ITF, _DROP, _FALL),
+            TYPE_2_BANDS, partial(pressurised_law, TYPE_2_BANDS, RADIUS), (_ITF, _DROP, _FALL),
         ),
         BallPreset(
             "itf-type-1", "ITF type 1 (fast): livelier", RADIUS,
-            TYPE_1_BANDS, _pressurised(TYPE_1_BANDS, RADIUS),
+            TYPE_1_BANDS, partial(pressurised_law, TYPE_1_BANDS, RADIUS),
             (_ITF, _DROP, _FALL, "ASSUMPTION: the type 2 stiffness"),
         ),
         BallPreset(
             "itf-type-3", "ITF type 3 (slow): 6.99-7.30 cm across", RADIUS_TYPE_3,
-            TYPE_3_BANDS, _pressurised(TYPE_3_BANDS, RADIUS_TYPE_3),
+            TYPE_3_BANDS, partial(pressurised_law, TYPE_3_BANDS, RADIUS_TYPE_3),
             (_ITF, _DROP, _FALL, "ASSUMPTION: the type 2 stiffness"),
         ),
         BallPreset(
             "high-altitude", "ITF high altitude: lower rebound", RADIUS,
-            HIGH_ALTITUDE_BANDS, _pressurised(HIGH_ALTITUDE_BANDS, RADIUS),
+            HIGH_ALTITUDE_BANDS, partial(pressurised_law, HIGH_ALTITUDE_BANDS, RADIUS),
             (_ITF, _DROP, _FALL, "ASSUMPTION: the type 2 stiffness"),
         ),
         BallPreset(
