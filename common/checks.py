@@ -102,9 +102,23 @@ def non_negative(name: str, value, unit: str = "") -> float:
     return x
 
 
-def in_range(name: str, value, low: float, high: float, unit: str = "", hint: str = "") -> float:
+GRAMS_AS_KG = (1e-3, "grams typed as kg?")
+"""A slip of unit for :func:`in_range`'s ``slips``: a mass in g where kg are asked for."""
+
+CM_AS_M = (1e-2, "cm typed as m?")
+"""A slip of unit for :func:`in_range`'s ``slips``: a length in cm where m are asked for."""
+
+KN_AS_N = (1e3, "kN/m typed as N/m?")
+"""A slip of unit for :func:`in_range`'s ``slips``: a stiffness in kN/m where N/m are asked
+for."""
+
+
+def in_range(
+    name: str, value, low: float, high: float, unit: str = "", hint: str = "", slips=()
+) -> float:
     """Return ``value`` as a float; raise ``ValueError`` unless ``low <= value <= high``
-    (``hint`` is appended to the message, e.g. a likely cause).
+    (``hint`` is appended to the message, e.g. a likely cause; so is the first of ``slips``
+    that would bring the value into the range).
 
     Parameters
     ----------
@@ -118,9 +132,18 @@ def in_range(name: str, value, low: float, high: float, unit: str = "", hint: st
         Its unit, as the message quotes it (e.g. ``"m/s"``); "" for none.
     hint : str, optional
         Appended to the message, e.g. a likely cause.
+    slips : sequence of (float, str), optional
+        Likely slips of unit, each the factor [-] that turns the value typed into ``unit``
+        and what the slip is (:data:`GRAMS_AS_KG`, :data:`CM_AS_M`, :data:`KN_AS_N`): a
+        value out of the range that one of them brings into it is quoted with it, e.g.
+        "(grams typed as kg? 57 would be 0.057 kg)".
     """
     x = finite(name, value, unit)
     if not low <= x <= high:
+        for factor, slip in slips:
+            if low <= x * factor <= high:
+                hint = f" ({slip} {shown(value)} would be {x * factor:g}{_unit(unit)}){hint}"
+                break
         raise ValueError(
             f"{name} must be in [{low:g}, {high:g}]{_unit(unit)}, got {shown(value)}{hint}"
         )

@@ -15,7 +15,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from common.checks import in_range
+from common.checks import finite, in_range
+from common.checks import speed as check_speed
 from racket.racket import Racket
 from racket.solver import impact
 
@@ -92,11 +93,11 @@ def hand_feel(
         handle is read: the middle of the grip).
     ball : Ball
     position : float
-        Impact point [m from the tip].
+        Impact point [m from the tip]: one number (one impact).
     speed : float
-        Ball speed [m/s].
+        Ball speed [m/s]: one number.
     offset : float, optional
-        Impact point's distance from the long axis [m] (:func:`racket.impact`).
+        Impact point's distance from the long axis [m] (:func:`racket.impact`): one number.
     duration : float
         How long after first contact to follow the racket [s], in [0.005, 1].
 
@@ -107,6 +108,9 @@ def hand_feel(
     if racket.support == "clamped-head":
         raise ValueError("support must be 'free' or 'hand-held' for the feel at the hand")
     duration = in_range("duration", duration, 0.005, 1.0, "s")
+    position = finite("position", position, "m from the tip")
+    speed = check_speed("speed", speed)
+    offset = None if offset is None else finite("offset", offset, "m")
     hit = impact(racket, ball, position, speed, offset=offset, histories=True)
     if duration <= hit.contact_time:
         raise ValueError(

@@ -6,7 +6,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from common.checks import in_range
+from common.checks import SPEED_RANGE, in_range, shown
 from common.checks import speed as check_speed
 
 WRIST_BEYOND_BUTT = 0.05
@@ -88,5 +88,69 @@ class Swing:
         return self.angular_velocity(racket) * (self.pivot(racket) - np.asarray(position, float))
 
     def impact_kwargs(self, racket, position) -> dict:
-        """The ``swing_speed`` and ``pivot`` of :func:`racket.impact` for this swing."""
+        """The ``swing_speed`` and ``pivot`` of :func:`racket.impact` for this swing, each
+        point checked first (:meth:`check_points`).
+        """
+        self.check_points(racket, position)
         return {"swing_speed": self.point_speeds(racket, position), "pivot": self.pivot(racket)}
+
+    def reach(self, racket, position) -> tuple[float, float, float]:
+        """What this swing may be for the impact points ``position`` [m from the tip]: the
+        pivot must be short of every point and of the string centre, < the first value [m
+        from the butt], so that each moves towards the ball; and the head speed in [the
+        second, the third] [m/s], so that it and each point's speed are in
+        :data:`common.checks.SPEED_RANGE` (the point nearest the tip is the fastest; both
+        are ``inf`` when the pivot is not short of the points).
+
+        Parameters
+        ----------
+        racket : Racket
+            The racket swung.
+        position : array_like
+            Impact points [m from the tip].
+        """
+        x = np.asarray(position, dtype=float)
+        nearest_butt = max(float(np.max(x, initial=-np.inf)), racket.strings.center)
+        pivot_limit = racket.beam.length - nearest_butt
+        if self.pivot_from_butt >= pivot_limit:
+            return pivot_limit, np.inf, np.inf
+        ratio = (self.pivot(racket) - x) / (self.pivot(racket) - racket.strings.center)
+        return (
+            pivot_limit,
+            SPEED_RANGE[0] / float(np.min(ratio, initial=1.0)),
+            SPEED_RANGE[1] / float(np.max(ratio, initial=1.0)),
+        )
+
+    def check_points(self, racket, position, head=None, pivot=None) -> None:
+        """Raise ``ValueError`` naming the pivot if it is not short of the impact points
+        ``position`` [m from the tip], or the head speed if it moves one of them out of
+        :data:`common.checks.SPEED_RANGE` (:meth:`reach`).
+
+        Parameters
+        ----------
+        racket : Racket
+            The racket swung.
+        position : array_like
+            Impact points [m from the tip].
+        head, pivot : (str, float, str, float), optional
+            How the caller's user gave the head speed and the pivot, for the message: the
+            name, the value as typed, its unit and the unit's size [m/s or m], e.g.
+            ``("--swing-speed-mph", 60.0, "mph", MPH)``; default ``head_speed`` [m/s] and
+            ``pivot_from_butt`` [m from the butt].
+        """
+        pivot_limit, low, high = self.reach(racket, position)
+        name, typed, unit, size = pivot or (
+            "pivot_from_butt", self.pivot_from_butt, "m from the butt", 1.0
+        )  # fmt: skip
+        if self.pivot_from_butt >= pivot_limit:
+            raise ValueError(
+                f"{name} must be < {pivot_limit / size:.4g} {unit}, short of the impact points "
+                f"and the string centre, got {shown(typed)}"
+            )
+        name, typed, unit, size = head or ("head_speed", self.head_speed, "m/s", 1.0)
+        if not low <= self.head_speed <= high:
+            raise ValueError(
+                f"{name} must be in [{low / size:.4g}, {high / size:.4g}] {unit} for these "
+                f"impact points (each must move at {SPEED_RANGE[0] / size:.4g}-"
+                f"{SPEED_RANGE[1] / size:.4g} {unit}), got {shown(typed)}"
+            )

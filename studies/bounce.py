@@ -17,6 +17,7 @@ import numpy as np
 import pandas as pd
 
 from ball import WALL, Ball, collide
+from common.checks import shown
 from common.checks import speed as check_speed
 
 ITF_DROP_M = 2.54
@@ -45,8 +46,8 @@ def rigid_bounce_table(ball: Ball, speeds=DEFAULT_SPEEDS) -> pd.DataFrame:
     ----------
     ball : Ball
         Any ball.
-    speeds : sequence of float
-        Impact speeds [m/s], each in [0.001, 300].
+    speeds : float or sequence of float
+        Impact speeds [m/s], one or more, each in [0.001, 300].
 
     Returns
     -------
@@ -54,6 +55,8 @@ def rigid_bounce_table(ball: Ball, speeds=DEFAULT_SPEEDS) -> pd.DataFrame:
         Columns ``speed_m_s``, ``e`` (rebound speed / impact speed), ``contact_time_s``,
         ``peak_force_N`` and ``peak_compression_m``.
     """
+    if np.size(speeds) == 0 or np.ndim(speeds) > 1:
+        raise ValueError(f"speeds must be one speed or a list of them [m/s], got {shown(speeds)}")
     speeds = [check_speed("speed", v) for v in np.atleast_1d(speeds)]
     rows = []
     for v in speeds:

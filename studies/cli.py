@@ -21,14 +21,16 @@ import pandas as pd
 
 from ball import WALL, collide
 from beam.beam import MAX_MODES
-from common.checks import SPEED_RANGE, in_range, shown
+from common.checks import KN_AS_N, SPEED_RANGE, in_range, shown
 from common.units import MPH
 from racket import SUPPORTS
 from racket.swing import WRIST_BEYOND_BUTT
+from studies import outputs
 from studies.bounce import GRAVITY
 from studies.config import BALLS, RACKETS, load_ball, load_racket, racket_specs
 from studies.landmarks import HAND_FROM_BUTT
 from studies.maps import MAP_SPEED
+from studies.provenance import sidecar_path
 from studies.tables import history_table
 
 TABLE_FORMATS = (".csv", ".json", ".parquet")
@@ -46,18 +48,42 @@ class _Once(argparse.Action):
 
 
 class _Parser(argparse.ArgumentParser):
+    """Options in full only (a recorded command means one thing); an option whose metavar
+    is FILE or DIR names a file the command writes, listed in the parsed ``_writes``.
+    """
+
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, allow_abbrev=False, **kwargs)
+
     def error(self, message):  # one line, status 2, no usage dump
         self.exit(2, f"{self.prog}: error: {message}\n")
 
     def add_argument(self, *args, **kwargs):
         if args and args[0].startswith("--") and "action" not in kwargs:
             kwargs["action"] = _Once
-        return super().add_argument(*args, **kwargs)
+        action = super().add_argument(*args, **kwargs)
+        if action.option_strings and action.metavar in ("FILE", "DIR"):
+            self.set_defaults(_writes=(*(self.get_default("_writes") or ()), action.dest))
+        return action
+
+
+class _Replay(_Parser):
+    """The parser of a command recorded in a sidecar: its errors are the sidecar's."""
+
+    def error(self, message):
+        raise ValueError(f"the sidecar's command: {message}")
+
+
+TABLE_COMMANDS = (
+    "sweep", "map", "serve", "collide", "ball", "modes", "specs", "feel", "sweetspots", "compare"
+)  # fmt: skip
+"""The commands that write tables (with sidecars): the only ones ``rerun`` replays."""
 
 
 def check_outputs(tables=(), plots=(), directories=()) -> None:
     """Check every output path before any work: a known extension, an existing, writable
-    directory, and no file named twice.  ValueError naming the path otherwise.
+    directory, a name the directory can hold, nothing there but a regular file (for a
+    table, its sidecar too), and no file named twice.  ValueError naming the path otherwise.
     """
     seen = {}
     for paths, kinds, what in ((tables, TABLE_FORMATS, "table"), (plots, PLOT_FORMATS, "plot")):
@@ -69,10 +95,15 @@ def check_outputs(tables=(), plots=(), directories=()) -> None:
                     f"{flag} must be a {what} file ending in {', '.join(kinds)}, got {path!r}"
                 )
             _check_directory(flag, Path(path).parent, path)
-            key = Path(path).resolve()
-            if key in seen:
-                raise ValueError(f"{flag} and {seen[key]} name the same file {path!r}")
-            seen[key] = flag
+            files = [(flag, Path(path))]
+            if what == "table":
+                files.append((f"{flag}'s sidecar", sidecar_path(path)))
+            for name, file in files:
+                _check_file(name, file)
+                key = file.resolve()
+                if key in seen:
+                    raise ValueError(f"{name} and {seen[key]} name the same file {str(file)!r}")
+                seen[key] = name
     for flag, path in directories:
         if not str(path).strip():
             raise ValueError(f"{flag} must name a directory, got {str(path)!r}")
@@ -81,6 +112,25 @@ def check_outputs(tables=(), plots=(), directories=()) -> None:
             raise ValueError(f"{flag} must be a directory, got the file {str(path)!r}")
         existing = next((p for p in [target, *target.parents] if p.exists()), Path("."))
         _check_directory(flag, existing, path)
+
+
+def _check_file(flag: str, path: Path) -> None:
+    """An output file that can be replaced: a name its directory can hold, and nothing there
+    yet but a writable regular file (not a directory, FIFO or device; never opened).
+    """
+    try:
+        longest = os.pathconf(path.parent, "PC_NAME_MAX")
+    except (AttributeError, ValueError, OSError):  # no pathconf (Windows), or no such limit
+        longest = -1
+    if longest > 0 and len(os.fsencode(path.name)) > longest:
+        raise ValueError(
+            f"{flag}: the name of {str(path)!r} is longer than its directory allows "
+            f"({longest} bytes)"
+        )
+    if path.exists() and not path.is_file():
+        raise ValueError(f"{flag}: {str(path)!r} exists and is not a regular file")
+    if path.exists() and not os.access(path, os.W_OK):
+        raise ValueError(f"{flag}: {str(path)!r} is read-only")
 
 
 def _check_directory(flag: str, directory: Path, path) -> None:
@@ -96,22 +146,27 @@ _RUN = {}  # the command line being run (main sets it), for the tables' sidecars
 
 def write_table(table: pd.DataFrame, path: str) -> None:
     """Write ``table`` to ``path`` as CSV, JSON (records) or Parquet, by extension, and,
-    when the command line writes it, its sidecar (:mod:`studies.provenance`).
+    when the command line writes it, its sidecar (:mod:`studies.provenance`); both are
+    put in place with the run's other files (:mod:`studies.outputs`).
     """
     suffix = Path(path).suffix.lower()
     if suffix not in TABLE_FORMATS:
         raise ValueError(f"table file must end in {', '.join(TABLE_FORMATS)}, got {path!r}")
-    if suffix == ".csv":
-        table.to_csv(path, index=False)
-    elif suffix == ".json":
-        table.to_json(path, orient="records", indent=2)
-    else:
-        try:
-            table.to_parquet(path, index=False)
-        except ImportError:
-            raise ValueError(
-                "Parquet output needs pyarrow: pip install 'racket-impact[parquet]'"
-            ) from None
+
+    def writer(temp: str) -> None:
+        if suffix == ".csv":
+            table.to_csv(temp, index=False)
+        elif suffix == ".json":
+            table.to_json(temp, orient="records", indent=2)
+        else:
+            try:
+                table.to_parquet(temp, index=False)
+            except ImportError:
+                raise ValueError(
+                    "Parquet output needs pyarrow: pip install 'racket-impact[parquet]'"
+                ) from None
+
+    outputs.write(path, writer)
     _sidecar(path)
 
 
@@ -130,27 +185,27 @@ def _sidecar(path) -> None:
 
 
 def save_plot(axes, path: str) -> None:
-    """Save the figure holding ``axes`` as PNG, SVG or PDF, by extension."""
+    """Save the figure holding ``axes`` as PNG, SVG or PDF, by extension, put in place with
+    the run's other files (:mod:`studies.outputs`).
+    """
+    import matplotlib.pyplot as plt
+
     suffix = Path(path).suffix.lower()
     if suffix not in PLOT_FORMATS:
         raise ValueError(f"plot file must end in {', '.join(PLOT_FORMATS)}, got {path!r}")
     fig = np.atleast_1d(axes)[0].figure
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
-    import matplotlib.pyplot as plt
-
-    plt.close(fig)
+    try:
+        fig.tight_layout()
+        outputs.write(path, lambda temp: fig.savefig(temp, dpi=120, format=suffix[1:]))
+    finally:
+        plt.close(fig)
 
 
 def _speed(args, name: str, allow_zero: bool = False, signed: bool = False):
     """The speed option ``--NAME`` [m/s] or ``--NAME-mph`` [mph] in m/s (a list for a
     many-valued option), each value checked in the unit it was typed in.
     """
-    mph = getattr(args, f"{name}_mph")
-    values, unit, scale = (
-        (mph, "mph", MPH) if mph is not None else (getattr(args, name), "m/s", 1.0)
-    )
-    flag = f"--{name.replace('_', '-')}" + ("-mph" if mph is not None else "")
+    flag, values, unit, scale = _typed(args, name)
     low, high = (v / scale for v in SPEED_RANGE)
     checked = []
     for value in np.atleast_1d(values):
@@ -161,6 +216,17 @@ def _speed(args, name: str, allow_zero: bool = False, signed: bool = False):
         else:
             checked.append(in_range(flag, value, low, high, unit) * scale)
     return checked if isinstance(values, list) else checked[0]
+
+
+def _typed(args, name: str) -> tuple[str, object, str, float]:
+    """The speed option ``--NAME`` or ``--NAME-mph`` as the user typed it: the flag, the
+    value(s), the unit and its size [m/s].
+    """
+    mph = getattr(args, f"{name}_mph")
+    flag = f"--{name.replace('_', '-')}"
+    if mph is not None:
+        return f"{flag}-mph", mph, "mph", MPH
+    return flag, getattr(args, name), "m/s", 1.0
 
 
 def _count(flag: str, value: int, low: int, high: int) -> int:
@@ -179,10 +245,13 @@ def cmd_paper(args) -> int:
     from studies.paper import paper_table
 
     check_outputs(directories=[("--out", args.out)])
-    if args.json is not None:
-        if Path(args.json).suffix.lower() != ".json":
-            raise ValueError(f"--json must be a file ending in .json, got {args.json!r}")
-        _check_directory("--json", Path(args.json).parent, args.json)
+    if args.json is not None and Path(args.json).suffix.lower() != ".json":
+        raise ValueError(f"--json must be a file ending in .json, got {args.json!r}")
+    out, figures = Path(args.out), paper_figures()
+    check_outputs(
+        tables=[("--json", args.json)],
+        plots=[("--out", out / name) for name in figures] if out.is_dir() else [],
+    )
     table = paper_table()
     _print_table(table[["claim", "paper", "simulated", "tolerance", "ok"]])
     ok = bool(table["ok"].all())
@@ -198,15 +267,18 @@ def cmd_paper(args) -> int:
             }
             for r in table.itertuples()
         ]
-        Path(args.json).write_text(json.dumps(records, indent=2))
+        text = json.dumps(records, indent=2)
+        outputs.write(args.json, lambda temp: Path(temp).write_text(text))
         _sidecar(args.json)
-    written = write_paper_figures(Path(args.out))
-    print(f"figures written to {args.out}/: {', '.join(p.name for p in written)}")
+    outputs.directory(out)
+    for name, draw in figures.items():
+        save_plot(draw(), out / name)
+    print(f"figures written to {args.out}/: {', '.join(figures)}")
     return 0 if ok else 1
 
 
-def write_paper_figures(out: Path) -> list[Path]:
-    """The paper's figures and the racket plots, as PNG files in ``out``."""
+def paper_figures() -> dict:
+    """The paper's figures and the racket plots: each PNG file's name, and what draws it."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -215,10 +287,9 @@ def write_paper_figures(out: Path) -> list[Path]:
     from studies import plots
     from studies.serve import serve_what_if
 
-    out.mkdir(parents=True, exist_ok=True)
     unhappy = Ball(0.0103, SineLaw(2e4))
     racket, ball = paper_racket(), tennis_ball()
-    figures = {
+    return {
         "fig2_unhappy_on_wall.png": lambda: plots.plot_collision(
             collide(unhappy, WALL, 4.0), title="Fig. 2: unhappy ball on a rigid wall"
         ),
@@ -238,16 +309,12 @@ def write_paper_figures(out: Path) -> list[Path]:
         "modes.png": lambda: plots.plot_modes(racket),
         "serve_what_if.png": lambda: plots.plot_serve_what_if(serve_what_if(racket, ball)),
     }
-    written = []
-    for name, draw in figures.items():
-        save_plot(draw(), out / name)
-        written.append(out / name)
-    return written
 
 
 def cmd_sweep(args) -> int:
     """``racket-impact sweep``."""
-    from studies.sweeps import COLUMNS, sweep
+    from racket.solver import F1_MIN
+    from studies.sweeps import COLUMNS, F1_MAX, STRING_STIFFNESS_RANGE, check_impacts, sweep
 
     check_outputs(
         tables=[("--out", args.out), ("--csv", args.csv), ("--json", args.json)],
@@ -258,11 +325,22 @@ def cmd_sweep(args) -> int:
             raise ValueError(f"{flag} must be a file ending in {kind}, got {path!r}")
     points = _count("--points", args.points, 2, 100_000)
     speeds = _speed(args, "speed", allow_zero=args.swing_speed or args.swing_speed_mph)
+    for k_s in args.string_stiffness or ():
+        in_range("--string-stiffness", k_s, *STRING_STIFFNESS_RANGE, "N/m", slips=(KN_AS_N,))
+    for f1 in args.f1 or ():
+        in_range("--f1", f1, F1_MIN, F1_MAX, "Hz")
+    grid = {f"--{name.replace('_', '-')}": getattr(args, name) or () for name in
+            ("speed" if args.speed_mph is None else "speed_mph", "string_stiffness",
+             "tension_lb", "f1", "support")}  # fmt: skip
+    sizes = [f"--points {points}"] + [f"{len(v)} {f} values" for f, v in grid.items() if len(v) > 1]
+    check_impacts(points * int(np.prod([max(len(v), 1) for v in grid.values()])), " x ".join(sizes))
+    swing = _swing(args)
     racket, ball = load_racket(args.racket), load_ball(args.ball)
     ends = list(racket.strings.extent)
     for k, (flag, value) in enumerate((("--from", args.from_), ("--to", args.to))):
         if value is not None:
             ends[k] = in_range(flag, value, *racket.strings.extent, "m from the tip (the strings)")
+    _check_swing(args, swing, racket, ends)
     table = sweep(
         racket,
         ball,
@@ -273,7 +351,7 @@ def cmd_sweep(args) -> int:
         f1=args.f1,
         support=args.support,
         offset=args.offset,
-        swing=_swing(args),
+        swing=swing,
     )
     _print_table(
         table[
@@ -307,7 +385,8 @@ def cmd_sweep(args) -> int:
 
 def cmd_serve(args) -> int:
     """``racket-impact serve``."""
-    from studies.serve import head_speed_for, serve_table, serve_what_if
+    from racket import Swing
+    from studies.serve import head_speed_for, serve_reach, serve_table, serve_what_if
 
     check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
     if args.plot and not args.what_if:
@@ -324,8 +403,19 @@ def cmd_serve(args) -> int:
             "give --racket-speed[-mph] or --target-ball-speed[-mph], not both (the target "
             "solves for the racket speed)"
         )
+    # the pivot short of the impact points (any head speed in range will do for that)
+    _check_swing(args, Swing(1.0, pivot), racket, positions, "racket_speed")
     if target_given:
         target = _speed(args, "target_ball_speed")
+        flag, typed, unit, size = _typed(args, "target_ball_speed")
+        heads, reach = serve_reach(racket, ball, positions[0], pivot)
+        if not reach[0] < target < reach[1]:
+            raise ValueError(
+                f"{flag}: the target ball speed must be in ({reach[0] / size:.4g}, "
+                f"{reach[1] / size:.4g}) {unit} at {100 * (racket.beam.length - positions[0]):.1f}"
+                f" cm from the butt (head speeds of {heads[0] / size:.4g}-{heads[1] / size:.4g} "
+                f"{unit}), got {shown(typed)}"
+            )
         head = head_speed_for(racket, ball, target, positions[0], pivot)
         print(
             f"racket-head speed for a {_shown_speed(target, mph)} serve at "
@@ -334,6 +424,7 @@ def cmd_serve(args) -> int:
         )
     else:
         head = _speed(args, "racket_speed")
+        _check_swing(args, Swing(head, pivot), racket, positions, "racket_speed")
     table = serve_table(racket, ball, positions, head, pivot, zero_cor=args.what_if)
     unit = "mph" if mph else "m_s"
     print(
@@ -536,20 +627,37 @@ def cmd_app(args) -> int:
 
 
 def cmd_rerun(args) -> int:
-    """``racket-impact rerun``."""
+    """``racket-impact rerun``: the command recorded in a table's sidecar (checked as
+    untrusted input), made again from the sidecar alone (the recorded TOML texts), a
+    table-making command only, every file it writes put in the table's own directory.
+    """
     import shlex
 
-    from studies.provenance import rerun_argv, temporary_directory
+    from studies.provenance import _restored, rerun_argv, temporary_directory
 
+    folder = Path(args.sidecar).parent
     with temporary_directory() as workdir:
         argv, originals = rerun_argv(args.sidecar, workdir)
-        shown_argv = [shlex.quote(w) for w in argv]
-        print("racket-impact " + " ".join(shown_argv), file=sys.stderr)
-        _RUN["originals"] = originals
-        try:
-            return main(argv)
-        finally:
-            _RUN.pop("originals", None)
+        if argv[0] not in TABLE_COMMANDS:
+            raise ValueError(
+                f"{args.sidecar!r}: command {argv[0]!r} makes no table; rerun replays only "
+                f"{', '.join(TABLE_COMMANDS)}"
+            )
+        if "-h" in argv or "--help" in argv:
+            raise ValueError(f"{args.sidecar!r}: command asks for help, not a table")
+        replay = build_parser(_Replay).parse_args(argv)
+        for dest in replay._writes:
+            value = getattr(replay, dest)
+            if value is None:
+                continue
+            if Path(value).name in ("", ".", ".."):
+                raise ValueError(f"the sidecar's command: --{dest} {value!r} names no file")
+            setattr(replay, dest, str(folder / Path(value).name))
+        replay.debug = args.debug
+        shown = shlex.join(_restored(word, originals) for word in argv)
+        into = "" if folder == Path(".") else f"  (files written into {folder}/)"
+        print(f"racket-impact {shown}{into}")  # stdout: stderr is for one line of trouble
+        return _start(replay, argv, originals)
 
 
 def cmd_feel(args) -> int:
@@ -604,6 +712,7 @@ def cmd_sweetspots(args) -> int:
     speed = _speed(args, "speed", allow_zero=swing is not None)
     grip = in_range("--grip-cm-from-butt", args.grip_cm_from_butt, 0.0, 30.0, "cm") / 100
     racket, ball = load_racket(args.racket), load_ball(args.ball)
+    _check_swing(args, swing, racket, racket.strings.extent)  # the points span the strings
     table = sweet_spots(racket, ball, speed, swing, grip)
     _print_table(table, "{:.4g}")
     if args.out:
@@ -614,7 +723,7 @@ def cmd_sweetspots(args) -> int:
 def cmd_compare(args) -> int:
     """``racket-impact compare``."""
     from studies.maps import compare_summary
-    from studies.sweeps import compare
+    from studies.sweeps import check_impacts, compare
 
     check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
     points = _count("--points", args.points, 2, 100_000)
@@ -624,7 +733,10 @@ def cmd_compare(args) -> int:
     if len(names) < 2:
         raise ValueError(f"compare needs two or more --racket, got {len(names)}")
     labelled = _labels(names)
+    check_impacts(points * len(names), f"--points {points} x {len(names)} --racket")
     rackets = {label: load_racket(spec) for label, spec in labelled}
+    for racket in rackets.values():  # the points span each racket's strings
+        _check_swing(args, swing, racket, racket.strings.extent)
     if args.support:
         from dataclasses import replace
 
@@ -645,12 +757,13 @@ def cmd_compare(args) -> int:
 
 def cmd_map(args) -> int:
     """``racket-impact map``."""
-    from studies.maps import FIELDS, face_map
+    from studies.maps import FIELDS, check_map_points, face_map, face_points
 
     check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
     if args.field not in FIELDS:
         raise ValueError(f"--field must be one of {list(FIELDS)}, got {args.field!r}")
     grid = tuple(_count("--grid", n, 4, 1000) for n in args.grid)
+    check_map_points(*grid, f"--grid {grid[0]} {grid[1]}")
     speed = _speed(args, "speed")
     swing = _swing(args)
     if args.field == "exit_speed_swung" and swing is None:
@@ -664,7 +777,9 @@ def cmd_map(args) -> int:
         from racket.specs.strings import with_tension
 
         racket = with_tension(racket, _tension(args.tension_lb))
-    result = face_map(racket, load_ball(args.ball), speed, swing=swing, grid=grid)
+    ball = load_ball(args.ball)
+    _check_swing(args, swing, racket, face_points(racket, grid, ball.radius)[0])
+    result = face_map(racket, ball, speed, swing=swing, grid=grid)
     for line in result.summary():
         print(line)
     if args.out:
@@ -719,6 +834,16 @@ def _swing(args):
             raise ValueError("--pivot-cm-from-butt needs --swing-speed (or --swing-speed-mph)")
         return None
     return Swing(_speed(args, "swing_speed"), _pivot(args))
+
+
+def _check_swing(args, swing, racket, positions, name: str = "swing_speed") -> None:
+    """``swing`` (of the speed option ``--NAME[-mph]`` and ``--pivot-cm-from-butt``) checked
+    for the impact points ``positions`` [m from the tip], the message quoting the options as
+    typed (:meth:`racket.Swing.check_points`); nothing without a swing.
+    """
+    if swing is not None:
+        pivot = ("--pivot-cm-from-butt", args.pivot_cm_from_butt, "cm", 0.01)
+        swing.check_points(racket, positions, head=_typed(args, name), pivot=pivot)
 
 
 def _pivot(args) -> float:
@@ -818,13 +943,15 @@ def _swing_options(p):
     _pivot_option(p)
 
 
-def build_parser() -> argparse.ArgumentParser:
-    """The ``racket-impact`` argument parser, one subcommand per study."""
-    parser = _Parser(prog="racket-impact", description=__doc__.split("\n\n")[0])
+def build_parser(parser_class=_Parser) -> argparse.ArgumentParser:
+    """The ``racket-impact`` argument parser, one subcommand per study (``parser_class``:
+    :class:`_Replay` for a command recorded in a sidecar).
+    """
+    parser = parser_class(prog="racket-impact", description=__doc__.split("\n\n")[0])
     parser.add_argument(
         "--debug", action="store_true", help="show the traceback of an error (for reports)"
     )
-    sub = parser.add_subparsers(dest="command", required=True, parser_class=_Parser)
+    sub = parser.add_subparsers(dest="command", required=True, parser_class=parser_class)
 
     p = sub.add_parser("paper", help="reproduce every number of the paper, write its figures")
     p.add_argument(
@@ -1054,26 +1181,48 @@ def build_parser() -> argparse.ArgumentParser:
 
 def main(argv=None) -> int:
     """Run the CLI; returns the exit status: 0, 1 if ``paper`` finds a claim out of
-    tolerance or on an internal error, 2 for bad input (one line on stderr each).
+    tolerance or on an internal error, 2 for bad input, 130 when interrupted (Ctrl-C): one
+    line on stderr each.  Every file a run writes is put in place only when it succeeds
+    (:mod:`studies.outputs`).
     """
     argv = sys.argv[1:] if argv is None else list(argv)
-    debug = "--debug" in argv  # before or after the subcommand
-    args = build_parser().parse_args([a for a in argv if a != "--debug"])
-    args.debug = debug
-    prefix = f"racket-impact {args.command}"
-    options = {k: v for k, v in vars(args).items() if k != "func" and not k.startswith("_")}
-    outer = dict(_RUN)  # a rerun's own run (and its originals), restored afterwards
-    _RUN.pop("description", None)
-    _RUN.update(argv=[a for a in argv if a != "--debug"], command=args.command, options=options)
+    words = [a for a in argv if a != "--debug"]
     try:
-        return _run(args, prefix)
+        args = build_parser().parse_args(words)
+        args.debug = len(words) < len(argv)  # before or after the subcommand
+        return _start(args, words)
+    except KeyboardInterrupt:  # before the run (a run reports its own)
+        if "--debug" in argv:
+            raise
+        return _interrupted("racket-impact", written=False)
+
+
+def _start(args, words: list[str], originals: dict | None = None) -> int:
+    """Run the parsed ``args`` as the command line ``words``, which its tables' sidecars
+    record (``originals``: a rerun's copies of TOML inputs -> the paths first given).
+    """
+    options = {k: v for k, v in vars(args).items() if k != "func" and not k.startswith("_")}
+    outer = dict(_RUN)  # a rerun's own run, restored afterwards
+    _RUN.clear()
+    _RUN.update(argv=words, command=args.command, options=options, originals=originals or {})
+    try:
+        return _run(args, f"racket-impact {args.command}")
     finally:
         _RUN.clear()
         _RUN.update(outer)
 
 
+def _interrupted(prefix: str, written: bool) -> int:
+    """Ctrl-C: one line, and the shell's status for it (128 + SIGINT)."""
+    done = "its files were all written" if written else "no file written"
+    print(f"{prefix}: interrupted; {done}", file=sys.stderr)
+    return 130
+
+
 def _run(args, prefix: str) -> int:
-    """Run the parsed command: warnings one line each, bad input status 2 (one line)."""
+    """Run the parsed command, its files put in place together when it returns: warnings
+    one line each, bad input status 2 (one line), Ctrl-C status 130 (one line).
+    """
     kinds = set()
 
     def one_line(message, category, filename, lineno, file=None, line=None):
@@ -1084,14 +1233,24 @@ def _run(args, prefix: str) -> int:
 
     with warnings.catch_warnings():
         warnings.showwarning = one_line
+        files = None
         try:
-            return args.func(args)
+            with outputs.transaction() as files:
+                status = args.func(args)
+            return status
+        except KeyboardInterrupt:
+            if args.debug:
+                raise
+            return _interrupted(prefix, written=files is not None and files.committed)
         except (ValueError, OSError) as err:
             if args.debug:
                 raise
             message = err.strerror if isinstance(err, OSError) and err.strerror else str(err)
             where = f" ({err.filename})" if isinstance(err, OSError) and err.filename else ""
-            print(f"{prefix}: error: {message}{where}", file=sys.stderr)
+            line = f"{prefix}: error: {message}{where}"
+            for copy, original in _RUN.get("originals", {}).items():  # a rerun's TOML copies
+                line = line.replace(copy, original)
+            print(line, file=sys.stderr)
             return 2
         except Exception as err:
             if args.debug:

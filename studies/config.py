@@ -51,6 +51,10 @@ keys are errors)::
     k = 4e4                     # "power-law" (k, a, b, or k, a, e), "sine" (k0),
                                 # "growing-hysteresis" (k, a, e0, slope [, calibrated_to])
     e = 0.75
+    radius = 0.0335             # m (default: the tennis ball's, racket.TENNIS_BALL_RADIUS)
+
+The keys in :data:`TOML_RANGES` are checked in their ranges, with a hint at a likely slip
+of unit (``mass = 340`` for a racket: grams typed as kg?).
 """
 
 from __future__ import annotations
@@ -68,7 +72,7 @@ from ball import (
     SineLaw,
 )
 from beam import Beam
-from common.checks import in_range, shown
+from common.checks import CM_AS_M, GRAMS_AS_KG, KN_AS_N, in_range, positive, shown
 from racket import (
     CATALOG,
     TENNIS_BALL_MASS,
@@ -79,6 +83,8 @@ from racket import (
     paper_racket,
     tennis_ball,
 )
+from racket.solver import F1_MIN
+from studies.sweeps import F1_MAX, STRING_STIFFNESS_RANGE
 
 if sys.version_info >= (3, 11):
     import tomllib
@@ -100,6 +106,30 @@ BALLS = {
 }
 """Ball presets by name: the paper's tennis ball, its zero-COR twin (Sec. VIII), and the
 happy and unhappy balls of Secs. IV-VI."""
+
+TOML_RANGES = {
+    ("racket", "length"): (0.2, 1.5, "m", (CM_AS_M,)),
+    ("racket", "mass"): (0.05, 2.0, "kg", (GRAMS_AS_KG,)),
+    ("racket", "f1"): (F1_MIN, F1_MAX, "Hz", ()),
+    ("racket.strings", "stiffness"): (*STRING_STIFFNESS_RANGE, "N/m", (KN_AS_N,)),
+    ("ball", "mass"): (0.001, 1.0, "kg", (GRAMS_AS_KG,)),
+    ("ball", "radius"): (0.005, 0.15, "m", (CM_AS_M,)),
+    ("ball", "k"): (1e3, 1e7, "N/m", (KN_AS_N,)),
+    ("ball", "k0"): (1e3, 1e7, "N/m", (KN_AS_N,)),
+}
+"""The range of each plain number of a TOML file that has one, (low, high, unit, likely
+slips of unit) by (table, key), checked before anything is built (``k`` only for the linear
+laws, whose k is in N/m).  All are assumptions, generous around what they describe: a
+racket of any sport is 0.2-1.5 m long (table-tennis bats are about 0.26 m, tennis rackets
+at most 0.737 m, ITF Rules of Tennis, Appendix II) and weighs 0.05-2 kg (badminton rackets
+about 0.09 kg, strung tennis rackets 0.23-0.37 kg, :data:`racket.specs.sheet.SPEC_RANGES`);
+f1 and the string bed are a sweep's ranges (:data:`racket.solver.F1_MIN`,
+:data:`studies.sweeps.F1_MAX`, :data:`studies.sweeps.STRING_STIFFNESS_RANGE`); a ball
+weighs 1 g-1 kg (a table-tennis ball 2.7 g, a basketball about 0.6 kg; the project's balls
+10.3 and 57 g), is 5-150 mm in radius (table tennis 20 mm, basketball about 120 mm), and a
+linear ball's stiffness is 1e3-1e7 N/m (a tennis ball's 4e4, paper Sec. III; the happy and
+unhappy balls' 2e4, Secs. IV-VI).  A value typed in g, cm or kN/m falls outside and is
+refused with the hint (``mass = 57`` for a ball would be 0.057 kg)."""
 
 LAWS = {
     "linear-spring": (LinearSpring, {"k"}),
@@ -151,7 +181,9 @@ _SPEC_KEYS = {
 }
 _LEAD_KEYS = {"mass_g", "from_butt_cm", "at"}
 _HAND_KEYS = {"stiffness", "damping", "grip_length"}
-_BALL_KEYS = {"preset", "mass", "law", "k", "e", "a", "b", "k0", "e0", "slope", "calibrated_to"}
+_BALL_KEYS = {"preset", "mass", "radius", "law", "calibrated_to"} | {
+    p for _, params in LAWS.values() for p in params
+}
 
 
 def _check_keys(table, allowed: set, where: str) -> None:
@@ -164,6 +196,16 @@ def _check_keys(table, allowed: set, where: str) -> None:
         raise ValueError(
             f"unknown key {unknown[0]!r} in [{where}]; valid keys: {', '.join(sorted(allowed))}"
         )
+
+
+def _check_ranges(table: dict, where: str, keys=None) -> None:
+    """Check each key of ``table`` (the ``[where]`` table) that :data:`TOML_RANGES` names
+    (only ``keys`` if given): ValueError naming the key, with its range and a likely slip.
+    """
+    for (table_name, key), (low, high, unit, slips) in TOML_RANGES.items():
+        if table_name == where and key in table and (keys is None or key in keys):
+            positive(f"[{where}] {key}", table[key], unit)  # a sign slip said as such
+            in_range(f"[{where}] {key}", table[key], low, high, unit, slips=slips)
 
 
 def _preset(name: str, presets: dict, kind: str):
@@ -208,6 +250,7 @@ def racket_from_table(table: dict) -> Racket:
         The ``[racket]`` table, in SI unless a key names its unit.
     """
     _check_keys(table, _RACKET_KEYS, "racket")
+    _check_ranges(table, "racket")
     uniform = {"length", "mass", "f1"} & set(table)
     profile = {"stations", "mass_per_length", "bending_stiffness"} & set(table)
     twist = {"roll_inertia_per_length", "torsional_stiffness"} & set(table)
@@ -262,6 +305,7 @@ def racket_from_table(table: dict) -> Racket:
     beam = beam.with_point_masses(*_list(table, "point_masses", "racket"))
     strings_table = table.get("strings", {})
     _check_keys(strings_table, _STRING_KEYS, "racket.strings")
+    _check_ranges(strings_table, "racket.strings")
     strings = replace(
         base.strings,
         stiffness=strings_table.get("stiffness", base.strings.stiffness),
@@ -302,7 +346,8 @@ def ball_from_table(table: dict) -> Ball:
     Parameters
     ----------
     table : dict
-        The ``[ball]`` table: a preset, or the mass [kg], the law and its parameters (SI).
+        The ``[ball]`` table: a preset, or the mass [kg], the law and its parameters (SI),
+        and the radius [m] (default the tennis ball's, :data:`racket.TENNIS_BALL_RADIUS`).
     """
     _check_keys(table, _BALL_KEYS, "ball")
     if "preset" in table:
@@ -315,7 +360,9 @@ def ball_from_table(table: dict) -> Ball:
     if not isinstance(table["law"], str) or table["law"] not in LAWS:
         raise ValueError(f"unknown law {shown(table['law'])}; laws: {', '.join(LAWS)}")
     cls, params = LAWS[table["law"]]
-    given = set(table) - {"mass", "law"}
+    linear = cls in (LinearSpring, LinearHysteresis)
+    _check_ranges(table, "ball", {"mass", "radius", "k0"} | ({"k"} if linear else set()))
+    given = set(table) - {"mass", "law", "radius"}
     if cls is PowerLawHysteresis and given == {"k", "a", "e"}:
         law = PowerLawHysteresis.with_cor(table["k"], table["a"], table["e"])
     else:
@@ -327,7 +374,7 @@ def ball_from_table(table: dict) -> Ball:
                 f"{', '.join(sorted(given)) or 'nothing'}"
             )
         law = cls(**{p: table[p] for p in params | (given & optional)})
-    return Ball(table["mass"], law)
+    return Ball(table["mass"], law, table.get("radius", TENNIS_BALL_RADIUS))
 
 
 def _load(spec: str, presets: dict, kind: str, from_table):

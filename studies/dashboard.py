@@ -11,11 +11,12 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from common.checks import in_range, non_negative
+from common.checks import SPEED_RANGE, in_range, non_negative
 from common.units import LB, MPH
 from racket import CATALOG, Swing, from_specs, impact
 from racket.specs.sheet import SPEC_RANGES
 from racket.specs.strings import with_tension
+from racket.swing import PIVOT_RANGE
 from studies.config import BALLS
 from studies.landmarks import sweet_spots
 from studies.maps import face_map
@@ -108,8 +109,10 @@ def page_racket(inputs: PageInputs):
         The page's controls.
     """
     if inputs.racket == MY_SHEET:
+        low, high, _ = SPEC_RANGES["mass_kg"]  # checked in grams, as the page asks for them
+        mass_g = in_range("mass_g", inputs.mass_g, 1e3 * low, 1e3 * high, "g")
         racket = from_specs(
-            mass_kg=inputs.mass_g / 1e3,
+            mass_kg=mass_g / 1e3,
             balance_cm=inputs.balance_cm,
             swingweight_kgcm2=inputs.swingweight_kgcm2,
             head_size_in2=inputs.head_size_in2,
@@ -146,12 +149,39 @@ def page_results(inputs: PageInputs, points: int = 61) -> PageResults:
     return replace(results, warnings=tuple(seen))
 
 
+def page_swing(inputs: PageInputs, racket, positions) -> Swing:
+    """The page's swing, its head speed checked in mph and its pivot in cm, as the page
+    asks for them, for the impact points ``positions`` [m from the tip]
+    (:meth:`racket.Swing.check_points`).
+
+    Parameters
+    ----------
+    inputs : PageInputs
+        The page's controls.
+    racket : Racket
+        The racket swung.
+    positions : array_like
+        The impact points [m from the tip].
+    """
+    low, high = (100 * end for end in PIVOT_RANGE)
+    pivot_cm = in_range("pivot_cm_from_butt", inputs.pivot_cm_from_butt, low, high, "cm")
+    swing_mph = in_range("swing_mph", inputs.swing_mph, *(v / MPH for v in SPEED_RANGE), "mph")
+    swing = Swing(swing_mph * MPH, pivot_cm / 100)
+    swing.check_points(
+        racket,
+        positions,
+        head=("swing_mph", inputs.swing_mph, "mph", MPH),
+        pivot=("pivot_cm_from_butt", inputs.pivot_cm_from_butt, "cm", 0.01),
+    )
+    return swing
+
+
 def _page_results(inputs: PageInputs, points: int) -> PageResults:
     if inputs.ball not in BALLS:
         raise ValueError(f"ball must be one of {list(BALLS)}, got {inputs.ball!r}")
     racket, ball = page_racket(inputs), BALLS[inputs.ball]()
-    swing = Swing(inputs.swing_mph * MPH, inputs.pivot_cm_from_butt / 100)
     x = np.linspace(*racket.strings.extent, points)
+    swing = page_swing(inputs, racket, x)
     along = impact_table(impact(racket, ball, x, inputs.ball_speed))
     hit = impact(racket, ball, x, inputs.ball_speed, **swing.impact_kwargs(racket, x))
     along["exit_speed_swung_mph"] = hit.ball_rebound / MPH

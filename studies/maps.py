@@ -15,10 +15,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from ball import Ball
-from common.checks import in_range
+from common.checks import in_range, shown
 from common.checks import speed as check_speed
 from common.units import MPH
-from racket import Racket, Swing, impact
+from racket import TENNIS_BALL_RADIUS, Racket, Swing, impact
 from studies.landmarks import hand_pivot, percussion_centre, whole
 
 SWEET_FRACTION = 0.05
@@ -32,6 +32,14 @@ MAP_GRID = (15, 9)
 
 FIELDS = ("e", "e_A", "exit_speed", "exit_speed_swung", "vibration_energy", "roll_rate")
 """The numbers a :class:`FaceMap` holds on its grid."""
+
+MAX_MAP_POINTS = 100_000
+"""Most grid points a map takes (e.g. 316 x 316, or 1000 x 100).  Measured on this
+project's 2-core machine: 26-35 us per point for the impacts at rest (twice that with a
+swing) and about 2.1 kB per point at the peak, the sweet area's spline being evaluated on a
+grid :data:`_FINE` times finer each way (64 values per point); so 1e5 points take about 3 s
+(6 s swung) and 0.2 GB more, while 1000 x 1000 would take half a minute to a minute and
+2 GB.  TWU measures 15 points over a face; beyond 1e5 no number of a map changes."""
 
 _FINE = 8  # the sweet area is counted on a grid this many times finer, linearly interpolated
 
@@ -74,7 +82,8 @@ class FaceMap:
     center_of_percussion : float
         For a pivot at the hand (:func:`studies.landmarks.hand_pivot`) [m from the tip]: the
         impact point on the axis after which the hand's rigid-body velocity is zero, among
-        the grid's rows (:func:`studies.landmarks.percussion_centre`; NaN if not among them).
+        the grid's rows (:func:`studies.landmarks.percussion_centre`; NaN if not among them,
+        as for a clamped head, which does not recoil).
     sweet_threshold : float
         e_A [-] above which a point is in the sweet area.
     sweet_area_cm2 : float
@@ -86,6 +95,8 @@ class FaceMap:
         How far inside the bed's edge the ball's centre stays [m].
     length : float
         The racket's length [m] (for positions from the butt).
+    support : str
+        The racket's support (a clamped head has no centre of percussion).
     """
 
     positions: np.ndarray
@@ -108,6 +119,7 @@ class FaceMap:
     strings: object
     margin: float
     length: float
+    support: str
 
     def to_frame(self):
         """One row per grid point on the face: position, offset and each field (pandas)."""
@@ -144,6 +156,12 @@ class FaceMap:
             return f"{100 * (self.length - x):.1f} cm from the butt ({100 * x:.1f} from the tip)"
 
         nodes = ", ".join(butt(n) for n in self.node)
+        if self.support == "clamped-head":
+            percussion = "no centre of percussion: a clamped head does not recoil"
+        elif np.isnan(self.center_of_percussion):
+            percussion = "no centre of percussion (hand pivot) among the grid's rows"
+        else:
+            percussion = f"centre of percussion (hand pivot) at {butt(self.center_of_percussion)}"
         lines = [
             f"ball at {self.speed:g} m/s on a racket at rest; grid {self.e_A.shape[0]} x "
             f"{self.e_A.shape[1]} over the face (ball centre >= {100 * self.margin:.1f} cm "
@@ -155,7 +173,7 @@ class FaceMap:
             f"sweet area (e_A within {100 * SWEET_FRACTION:g} % of its largest) "
             f"{self.sweet_area_cm2:.1f} cm^2",
             (f"node of mode 1 at {nodes}" if nodes else "no node on the strings")
-            + f"; centre of percussion (hand pivot) at {butt(self.center_of_percussion)}",
+            + f"; {percussion}",
             f"largest twist rate {np.abs(self.roll_rate).max():.1f} rad/s; vibration energy "
             f"{100 * self.vibration_energy.min():.1f}-{100 * self.vibration_energy.max():.1f} "
             "% of the ball's",
@@ -171,6 +189,24 @@ class FaceMap:
         return lines
 
 
+def check_map_points(nx: int, ny: int, what: str) -> None:
+    """Raise ``ValueError`` if a grid of ``nx`` by ``ny`` points has more than
+    :data:`MAX_MAP_POINTS`.
+
+    Parameters
+    ----------
+    nx, ny : int
+        Grid points along and across the racket [-].
+    what : str
+        What asks for the grid, as the message quotes it (e.g. "--grid 1000 1000").
+    """
+    if nx * ny > MAX_MAP_POINTS:
+        raise ValueError(
+            f"{what} asks for {nx * ny:,} points, more than a map takes, {MAX_MAP_POINTS:,} "
+            "(about 3 s and 0.2 GB; e.g. 316 x 316)"
+        )
+
+
 def face_points(racket: Racket, grid=MAP_GRID, margin: float = 0.0):
     """The grid over the string bed shrunk by ``margin``: rows ``positions`` (nx,) [m from
     the tip], evenly spaced, and in each row ``offsets`` (nx, ny) [m] evenly spaced across
@@ -181,11 +217,18 @@ def face_points(racket: Racket, grid=MAP_GRID, margin: float = 0.0):
     racket : Racket
         The racket (its string bed).
     grid : (int, int)
-        Points along and across [-], each a whole number in [4, 1000].
+        Points along and across [-], each a whole number in [4, 1000], at most
+        :data:`MAX_MAP_POINTS` in all.
     margin : float
         How far inside the bed's edge the points stay [m].
     """
+    if isinstance(grid, str) or np.ndim(grid) != 1 or np.size(grid) != 2:
+        raise ValueError(
+            f"grid must be two whole numbers (along, across the racket), each in [4, 1000], "
+            f"got {shown(grid)}"
+        )
     nx, ny = (whole(f"grid[{i}]", n, 4, 1000) for i, n in enumerate(grid))
+    check_map_points(nx, ny, f"grid ({nx}, {ny})")
     strings = racket.strings
     half_length = 0.5 * (strings.extent[1] - strings.extent[0]) - margin
     half_width = 0.5 * strings.full_width - margin
@@ -222,10 +265,12 @@ def face_map(
         A swing of the (free) racket about a pivot for the swung exit speed, each point at
         its own speed (the ball coming in at ``speed``); None (default) for none.
     grid : (int, int)
-        Grid lines along and across the racket, each in [4, 1000]; default (15, 9).
+        Grid lines along and across the racket, each in [4, 1000], at most
+        :data:`MAX_MAP_POINTS` in all; default (15, 9).
     margin : float, optional
         How far inside the string bed's edge the ball's centre stays [m]; default the
-        ball's radius (the whole ball on the strings).
+        ball's radius (the whole ball on the strings), or the tennis ball's
+        (:data:`racket.TENNIS_BALL_RADIUS`) for a ball without one.
 
     Returns
     -------
@@ -239,6 +284,8 @@ def face_map(
     ((15, 9), 34)
     """
     speed = check_speed("speed", speed)
+    if swing is not None and not isinstance(swing, Swing):
+        raise ValueError(f"swing must be a Swing or None, got {shown(swing)}")
     if swing is not None and racket.support != "free":
         raise ValueError(
             f"swing must be None for a {racket.support} racket (the hand or clamp is at rest; "
@@ -249,10 +296,14 @@ def face_map(
             "a face map needs a racket whose roll inertia is modelled (a spec-sheet racket: "
             "from_specs or a catalogue name)"
         )
-    margin = ball.radius if margin is None else in_range("margin", margin, 0.0, 1.0, "m")
+    if margin is None:
+        margin = TENNIS_BALL_RADIUS if ball.radius is None else ball.radius
+    margin = in_range("margin", margin, 0.0, 1.0, "m")
     positions, offsets, half_width = face_points(racket, grid, margin)
     x = np.broadcast_to(positions[:, None], offsets.shape).ravel()
     y = offsets.ravel()
+    if swing is not None:
+        swing.check_points(racket, x)  # before any impact
     side = 0.5 * racket.strings.full_width - margin
     # The landmarks' points: the string centre on the axis and at 3 o'clock, and each row on
     # the axis (for the centre of percussion); those not on the grid join its impact call.
@@ -276,8 +327,8 @@ def face_map(
         moved = swing.impact_kwargs(racket, x)
         swung = impact(racket, ball, x, speed, offset=y, **moved)
 
-    def on_grid(values):
-        return np.reshape(np.broadcast_to(values, hits.e.shape)[: x.size], offsets.shape)
+    def on_grid(values, result=hits):  # the grid's points lead each call's impacts
+        return np.reshape(np.broadcast_to(values, result.e.shape)[: x.size], offsets.shape)
 
     e_a = on_grid(hits.e_A)
     threshold, area = _sweet_area(positions, half_width, e_a)
@@ -292,7 +343,7 @@ def face_map(
         e=on_grid(hits.e),
         e_A=e_a,
         exit_speed=on_grid(hits.ball_rebound),
-        exit_speed_swung=None if swung is None else on_grid(swung.ball_rebound),
+        exit_speed_swung=None if swung is None else on_grid(swung.ball_rebound, swung),
         vibration_energy=on_grid(hits.vibration_energy / hits.energy_initial),
         roll_rate=on_grid(hits.roll_rate),
         e_A_centre=float(hits.e_A[centre]),
@@ -307,6 +358,7 @@ def face_map(
         strings=racket.strings,
         margin=margin,
         length=racket.beam.length,
+        support=racket.support,
     )
 
 

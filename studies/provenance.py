@@ -11,7 +11,9 @@ libraries, and when it was written.
 from __future__ import annotations
 
 import json
+import os
 import platform
+import stat
 import tempfile
 from datetime import datetime, timezone
 from importlib import metadata
@@ -19,6 +21,9 @@ from pathlib import Path
 
 SIDECAR_SUFFIX = ".meta.json"
 """Appended to a table's file name to name its sidecar."""
+
+SIDECAR_LIMIT = 1_000_000
+"""The largest sidecar ``rerun`` reads [bytes] (one is a few kB)."""
 
 _LIBRARIES = ("racket-impact", "numpy", "scipy", "pandas", "numba", "matplotlib")
 _INPUTS = ("racket", "ball", "a", "b")
@@ -137,16 +142,89 @@ def write_sidecar(table_path, description: dict) -> Path:
     description : dict
         What :func:`describe` returned.
     """
+    from studies.outputs import write
+
     path = sidecar_path(table_path)
-    path.write_text(json.dumps({**description, "table": Path(table_path).name}, indent=2))
+    text = json.dumps({**description, "table": Path(table_path).name}, indent=2)
+    write(path, lambda temp: Path(temp).write_text(text))
     return path
 
 
+def read_sidecar(path) -> dict:
+    """A sidecar's record, checked as untrusted input (anyone can edit or send one): a
+    regular file of at most :data:`SIDECAR_LIMIT` bytes of UTF-8 JSON, made by
+    racket-impact, with a command (a non-empty list of strings) and the inputs it named
+    (each a list of entries whose ``given``, ``toml_file``, ``toml`` and ``preset`` are
+    strings, a ``toml_file`` with its ``toml`` text).  ValueError naming the file as given
+    and the first bad key otherwise.
+
+    Parameters
+    ----------
+    path : str or Path
+        The sidecar file.
+    """
+    shown = repr(str(path))
+    try:  # never blocks: a FIFO is opened without waiting for a writer, then refused
+        handle = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
+    except OSError as err:
+        raise ValueError(
+            f"rerun needs a racket-impact sidecar (*{SIDECAR_SUFFIX}): {shown}: {err.strerror}"
+        ) from None
+    with open(handle, "rb") as file:
+        if not stat.S_ISREG(os.fstat(handle).st_mode):
+            raise ValueError(f"rerun needs a racket-impact sidecar file: {shown} is not a file")
+        data = file.read(SIDECAR_LIMIT + 1)
+    if len(data) > SIDECAR_LIMIT:
+        raise ValueError(f"{shown} is larger than a sidecar may be ({SIDECAR_LIMIT} bytes)")
+    try:
+        record = json.loads(data.decode("utf-8"))
+    except UnicodeDecodeError:
+        raise ValueError(f"{shown} is not a racket-impact sidecar: not UTF-8 text") from None
+    except (ValueError, RecursionError) as err:
+        raise ValueError(f"{shown} is not a racket-impact sidecar: not JSON ({err})") from None
+    if not isinstance(record, dict) or record.get("made_by") != "racket-impact":
+        raise ValueError(f"{shown} is not a racket-impact sidecar (no made_by: racket-impact)")
+
+    def bad(key: str, what: str):
+        return ValueError(f"{shown}: {key} must be {what}")
+
+    command = record.get("command")
+    if not isinstance(command, list) or not command:
+        raise bad("command", "a non-empty list of strings")
+    if not all(isinstance(word, str) for word in command):
+        raise bad("command", "a list of strings")
+    for key, kind in (("options", dict), ("versions", dict), ("written_utc", str), ("table", str)):
+        if key in record and not isinstance(record[key], kind):
+            raise bad(key, f"a {'JSON object' if kind is dict else 'string'}")
+    inputs = record.get("inputs")
+    if not isinstance(inputs, dict):
+        raise bad("inputs", "a JSON object")
+    for name, entries in inputs.items():
+        if name not in _INPUTS:
+            raise bad(f"inputs.{name}", f"one of {', '.join(_INPUTS)} (an unknown input)")
+        if not isinstance(entries, list):
+            raise bad(f"inputs.{name}", "a list")
+        for i, entry in enumerate(entries):
+            where = f"inputs.{name}[{i}]"
+            if not isinstance(entry, dict):
+                raise bad(where, "a JSON object")
+            for key in ("given", "toml_file", "toml", "preset"):
+                if key in entry and not isinstance(entry[key], str):
+                    raise bad(f"{where}.{key}", "a string")
+            if "toml_file" in entry:
+                if "toml" not in entry:
+                    raise bad(f"{where}.toml", "the text of its toml_file")
+                if Path(entry["toml_file"]).name in ("", ".", ".."):
+                    raise bad(f"{where}.toml_file", "a file name")
+    return record
+
+
 def rerun_argv(sidecar, workdir) -> tuple[list[str], dict]:
-    """The command recorded in a sidecar, its TOML inputs written to ``workdir`` from the
-    recorded text wherever the file is gone or now differs, and the map from those copies'
-    paths to the paths first given (for :func:`describe`).  ValueError for a file that is
-    not a racket-impact sidecar.
+    """The command recorded in a sidecar (checked by :func:`read_sidecar`), its TOML inputs
+    always taken from the recorded text (written to ``workdir``, never the file now at the
+    recorded path), and the map from those copies' paths to the paths first given (for
+    :func:`describe`).  ValueError for a file that is not a racket-impact sidecar, or a
+    command naming a TOML file whose text the sidecar does not hold.
 
     Parameters
     ----------
@@ -158,30 +236,26 @@ def rerun_argv(sidecar, workdir) -> tuple[list[str], dict]:
     path = Path(sidecar)
     if not path.name.endswith(SIDECAR_SUFFIX):
         path = sidecar_path(path)
-    try:
-        record = json.loads(path.read_text())
-    except (OSError, ValueError) as err:
-        raise ValueError(
-            f"rerun needs a racket-impact sidecar (*{SIDECAR_SUFFIX}): {err}"
-        ) from None
-    if not isinstance(record, dict) or record.get("made_by") != "racket-impact":
-        raise ValueError(f"{str(path)!r} is not a racket-impact sidecar")
-    argv = list(record["command"])
+    record = read_sidecar(path)
     replaced = {}
-    for entries in record.get("inputs", {}).values():
+    for entries in record["inputs"].values():
         for entry in entries:
             name = entry.get("toml_file")
-            if name is None:
+            if name is None or name in replaced.values():
                 continue
-            current = Path(name)
-            if current.is_file() and current.read_text() == entry["toml"]:
-                continue
-            copy = Path(workdir) / str(len(replaced)) / current.name
+            copy = Path(workdir) / str(len(replaced)) / Path(name).name
             copy.parent.mkdir()
             copy.write_text(entry["toml"])
             replaced[str(copy)] = name
     to_copies = {name: copy for copy, name in replaced.items()}
-    return [_restored(word, to_copies) for word in argv], replaced
+    argv = []
+    for word in record["command"]:
+        argv.append(_restored(word, to_copies))
+        if word.endswith(".toml") and argv[-1] == word:
+            raise ValueError(
+                f"{str(path)!r}: inputs holds no text for {word!r}, which command names"
+            )
+    return argv, replaced
 
 
 def temporary_directory():

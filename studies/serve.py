@@ -35,7 +35,7 @@ import numpy as np
 import pandas as pd
 
 from ball import Ball, LinearHysteresis, SineLaw, serve_speed
-from common.checks import SPEED_RANGE, in_range
+from common.checks import SPEED_RANGE, in_range, shown
 from common.checks import speed as check_speed
 from common.units import MPH
 from racket import Racket, Swing, impact
@@ -136,6 +136,11 @@ def serve_table(
         ``reduction_simulated_percent`` with ``zero_cor`` (0 for the normal ball).
     """
     positions = np.atleast_1d(racket.strings.center if position is None else position)
+    if positions.size == 0 or positions.ndim != 1:
+        raise ValueError(
+            f"position must be one impact point or a list of them [m from the tip], got "
+            f"{shown(position)}"
+        )
     swing = Swing(racket_speed, pivot_from_butt)
     balls = [("normal", ball)]
     if zero_cor:
@@ -184,26 +189,48 @@ def head_speed_for(
 
     target = check_speed("target", target)
     position = racket.strings.center if position is None else float(position)
-    # the head speed searched: from SLOWEST_HEAD_SPEED, and the impact point (faster than
-    # the head towards the tip) within the speeds racket-impact accepts
-    ratio = float(Swing(1.0, pivot_from_butt).point_speeds(racket, position))
-    low, high = SLOWEST_HEAD_SPEED, SPEED_RANGE[1] / max(ratio, 1.0)
+    heads, reach = serve_reach(racket, ball, position, pivot_from_butt)
+    if not reach[0] < target < reach[1]:
+        raise ValueError(
+            f"target ball speed must be in ({reach[0]:.4g}, {reach[1]:.4g}) m/s at "
+            f"{100 * (racket.beam.length - position):.1f} cm from the butt (head speeds of "
+            f"{heads[0]:g}-{heads[1]:.4g} m/s), got {shown(target)}"
+        )
 
     def miss(head):
-        # the swung impact alone (serve() would also run the unused impact at rest)
-        moved = Swing(head, pivot_from_butt).impact_kwargs(racket, position)
-        return impact(racket, ball, position, 0.0, **moved).ball_rebound - target
+        return _serve(racket, ball, position, head, pivot_from_butt) - target
 
     with warnings.catch_warnings():  # the search passes through absurd speeds
         warnings.simplefilter("ignore")
-        reach = miss(low) + target, miss(high) + target
-        if not reach[0] < target < reach[1]:
-            raise ValueError(
-                f"target ball speed must be in ({reach[0]:.4g}, {reach[1]:.4g}) m/s at "
-                f"{100 * (racket.beam.length - position):.1f} cm from the butt (head speeds of "
-                f"{low:g}-{high:.4g} m/s), got {target:.4g}"
-            )
-        return float(brentq(miss, low, high, xtol=1e-9))
+        return float(brentq(miss, *heads, xtol=1e-9))
+
+
+def serve_reach(
+    racket: Racket, ball: Ball, position: float, pivot_from_butt: float = -WRIST_BEYOND_BUTT
+) -> tuple[tuple[float, float], tuple[float, float]]:
+    """The racket-head speeds [m/s] :func:`head_speed_for` searches, and the serve speeds
+    [m/s] they reach (the simulated serve at each end): from :data:`SLOWEST_HEAD_SPEED` to
+    the head speed that moves the impact point at the fastest speed racket-impact accepts.
+
+    Parameters
+    ----------
+    racket, ball, position, pivot_from_butt :
+        As in :func:`head_speed_for` (``position`` given).
+    """
+    ratio = float(Swing(1.0, pivot_from_butt).point_speeds(racket, position))
+    heads = SLOWEST_HEAD_SPEED, SPEED_RANGE[1] / max(ratio, 1.0)
+    with warnings.catch_warnings():  # the ends are absurd speeds
+        warnings.simplefilter("ignore")
+        reach = tuple(_serve(racket, ball, position, h, pivot_from_butt) for h in heads)
+    return heads, reach
+
+
+def _serve(racket, ball, position, head, pivot_from_butt) -> float:
+    """The simulated serve speed [m/s] alone (:func:`serve` would also run the impact at
+    rest).
+    """
+    moved = Swing(head, pivot_from_butt).impact_kwargs(racket, position)
+    return float(impact(racket, ball, position, 0.0, **moved).ball_rebound)
 
 
 def serve_what_if(

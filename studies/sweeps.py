@@ -39,6 +39,34 @@ and VIII)."""
 F1_MAX = 2000.0
 """Highest f1 [Hz] a sweep accepts (a racket's is 100-200 Hz; Taraborrelli et al. 2019)."""
 
+MAX_IMPACTS = 5_000_000
+"""Most impacts a sweep or a comparison runs.  The README's benchmark (2-core machine) runs
+1e6 impacts through :func:`sweep` in 16 s and holds 0.12-0.17 GiB of table at the peak, so
+5e6 take about a minute and a half and under 1 GiB; 1e8 (say 1000 positions times 1e5
+parameter values) would take half an hour and 17 GiB.  Larger studies are run in parts."""
+
+_SECONDS_PER_IMPACT = 16e-6  # through sweep (README benchmark: 1e6 impacts in 16 s)
+_GIB_PER_IMPACT = 0.17e-6  # the table's peak (README benchmark: 0.12-0.17 GiB per 1e6)
+
+
+def check_impacts(count: int, what: str) -> None:
+    """Raise ``ValueError`` if ``count`` impacts are more than :data:`MAX_IMPACTS`.
+
+    Parameters
+    ----------
+    count : int
+        The impacts asked for [-].
+    what : str
+        What asks for them, as the message quotes it (e.g. "positions x speed").
+    """
+    if count > MAX_IMPACTS:
+        raise ValueError(
+            f"{what} ask for {count:,} impacts, more than one run takes, {MAX_IMPACTS:,} "
+            f"(about {MAX_IMPACTS * _SECONDS_PER_IMPACT:.0f} s and "
+            f"{MAX_IMPACTS * _GIB_PER_IMPACT:.2g} GiB); split the study"
+        )
+
+
 COLUMNS = (
     "position_from_butt_cm",
     "position_from_tip_m",
@@ -173,6 +201,7 @@ def sweep(
     -------
     DataFrame
         One row per impact: :data:`COLUMNS`, then one column per parameter that varies.
+        At most :data:`MAX_IMPACTS` rows (positions times the combinations).
     """
     if positions is None:
         positions = np.linspace(*racket.strings.extent, 101)
@@ -187,10 +216,16 @@ def sweep(
     varying = [name for name, values in grid.items() if len(values) > 1]
     # Every value checked before any impact runs.
     racket.check_points(positions, offset)
+    points = np.broadcast(np.asarray(positions), np.asarray(0.0 if offset is None else offset))
+    sizes = {"positions": points.size}
+    sizes.update((name, len(values)) for name, values in grid.items() if len(values) > 1)
+    check_impacts(int(np.prod(list(sizes.values()))), " x ".join(sizes))
     for sp in grid["speed"]:
         check_speed("speed", sp, allow_zero=swing is not None)
     if swing is not None and not isinstance(swing, Swing):
         raise ValueError(f"swing must be a Swing, got {swing!r}")
+    if swing is not None:
+        swing.check_points(racket, positions)
     for sup in grid["support"]:
         if swing is not None:
             check_swung_support(racket.support if sup is None else sup)
@@ -290,7 +325,8 @@ def compare(
     speed : float
         Ball speed towards the strings [m/s] (0 allowed with a swing).
     points : int
-        Impact points across each racket's string bed, in [2, 100000].
+        Impact points across each racket's string bed, in [2, 100000]; times the rackets,
+        at most :data:`MAX_IMPACTS`.
     swing : Swing, optional
         The same swing for every racket (as in :func:`sweep`).
     tension : float, optional
@@ -302,6 +338,7 @@ def compare(
     points = in_range("points", points, 2, 100_000)
     if points != int(points):
         raise ValueError(f"points must be a whole number, got {points:g}")
+    check_impacts(int(points) * len(rackets), "points x rackets")
     check_speed("speed", speed, allow_zero=swing is not None)
     frames = []
     for label, racket in rackets.items():

@@ -23,12 +23,7 @@ for cmd, flags in NUMERIC_FLAGS.items():
     for flag in flags:
         for value in ("0", "-3", "nan", "inf", "1e300"):
             extra = POINTS if cmd != "serve" else []
-            name = (
-                flag.removeprefix("--").replace("-", "_")
-                if flag in ("--string-stiffness", "--f1")
-                else flag
-            )
-            CASES.append(([cmd, flag, value, *extra], name))
+            CASES.append(([cmd, flag, value, *extra], flag))
 for cmd in ("sweep", "compare"):
     for value in ("0", "1", "-3", "1e300", "2.5"):
         CASES.append(([cmd, "--points", value], "--points"))
@@ -128,7 +123,7 @@ TOML = {
         "f1_hz = 150\nhead_size_in2 = 100\ntension_lb = 55\n",
         "swingweight_kgcm2 must be in (",
     ),
-    "soft_frame": ("[racket]\nf1 = 5\n", "first bending frequency must be >= 20 Hz"),
+    "soft_frame": ("[racket]\nf1 = 5\n", "[racket] f1 must be in [20, 2000] Hz, got 5"),
 }
 BALL_TOML = {
     "ball_number": ("ball = 5\n", "[ball] must be a table"),
@@ -149,7 +144,7 @@ BALL_TOML = {
         '[ball]\nmass = 0.05\nlaw = "linear-hysteresis"\nk = 1e4\ne = 1.2\n',
         "e must be in [0, 1]",
     ),
-    "soft_ball": ('[ball]\nmass = 0.057\nlaw = "linear-spring"\nk = 50\n', "too soft"),
+    "soft_ball": ('[ball]\nmass = 0.057\nlaw = "linear-spring"\nk = 1000\n', "too soft"),
 }
 for name, (_, message) in TOML.items():
     CASES.append((["sweep", "--racket", f"{name}.toml", *POINTS], message))

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from beam import SWINGWEIGHT_AXIS
-from common.checks import finite, in_range, positive, shown
+from common.checks import CM_AS_M, GRAMS_AS_KG, finite, in_range, positive, shown
 from common.units import IN2, LB, POINT
 from racket.specs.strings import string_bed_stiffness
 
@@ -132,12 +132,8 @@ def _check_spec(name: str, value) -> float:
     of unit (grams typed as kg, cm as m).
     """
     low, high, unit = SPEC_RANGES[name]
-    x = finite(name, value, unit)
-    hint = ""
-    for factor, slip in ((1e-3, "grams typed as kg?"), (1e-2, "cm typed as m?")):
-        if not low <= x <= high and low <= x * factor <= high and name in ("mass_kg", "length_m"):
-            hint = f" ({slip} {shown(value)} would be {x * factor:g} {unit})"
-    return in_range(name, value, low, high, unit, hint)
+    slips = {"mass_kg": [GRAMS_AS_KG], "length_m": [CM_AS_M]}.get(name, ())
+    return in_range(name, value, low, high, unit, slips=slips)
 
 
 def _one(kind: str, **given):
