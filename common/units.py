@@ -11,3 +11,7 @@ IN2 = 0.00064516
 
 POINT = 0.003175
 """One balance point, 1/8 in [m] (balance is quoted in points head-light)."""
+
+GRAVITY = 9.80665
+"""Standard gravity [m/s^2] (accelerations are quoted in g; the ITF's 8.165 kg deformation
+load is 80.07 N with it)."""

@@ -12,6 +12,7 @@ import threading
 
 from shiny import App, reactive, render, ui
 
+from ball import DEFAULT_BALL
 from racket import CATALOG
 from studies.config import BALLS
 from studies.dashboard import MY_SHEET, PageInputs, page_results
@@ -48,7 +49,7 @@ def _controls():
         sheet,
         ui.input_slider("lead_g", "Lead tape per side [g]", 0, 15, 0, step=0.5),
         ui.input_select("lead_at", "Lead at (o'clock)", _CLOCK),
-        ui.input_select("ball", "Ball", list(BALLS)),
+        ui.input_select("ball", "Ball", list(BALLS), selected=DEFAULT_BALL),
         ui.input_slider("tension", "Tension [lb]", 40, 65, 55, step=1),
         ui.input_slider("ball_speed", "Incoming ball speed [m/s]", 5, 30, 16.5, step=0.5),
         ui.input_slider("swing", "Racket-head speed [mph]", 20, 100, 50, step=1),

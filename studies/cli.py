@@ -19,15 +19,22 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from ball import WALL, collide
+from ball import BALL_PRESETS, DEFAULT_BALL, WALL, collide
 from beam.beam import MAX_MODES
 from common.checks import KN_AS_N, SPEED_RANGE, in_range, shown
-from common.units import MPH
+from common.units import GRAVITY, MPH
 from racket import SUPPORTS
 from racket.swing import WRIST_BEYOND_BUTT
 from studies import outputs
-from studies.bounce import GRAVITY
-from studies.config import BALLS, RACKETS, load_ball, load_racket, racket_specs
+from studies.config import (
+    BALLS,
+    PAPER_BALL,
+    RACKETS,
+    default_ball,
+    load_ball,
+    load_racket,
+    racket_specs,
+)
 from studies.landmarks import HAND_FROM_BUTT
 from studies.maps import MAP_SPEED
 from studies.provenance import sidecar_path
@@ -504,20 +511,44 @@ def cmd_collide(args) -> int:
 
 def cmd_ball(args) -> int:
     """``racket-impact ball``."""
-    from studies.bounce import rigid_bounce_table
+    from studies.bounce import preset_table, rigid_bounce_table, static_test
 
     check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
+    if args.list:
+        _print_table(preset_table().drop(columns="sources").set_index("preset"))
+        print("sources and assumptions: racket-impact ball --list --out presets.csv")
+        if args.out:
+            write_table(preset_table(), args.out)
+        return 0
     speeds = _speed(args, "speeds")
     ball = load_ball(args.ball)
     table = rigid_bounce_table(ball, speeds)
     _print_table(table)
+    _print_static_test(static_test(ball, args.ball))
     if args.out:
         write_table(table, args.out)
     if args.plot:
         from studies.plots import plot_rigid_bounce
 
-        save_plot(plot_rigid_bounce(table, radius=ball.radius), args.plot)
+        preset = BALL_PRESETS.get(args.ball)
+        axes = plot_rigid_bounce(table, radius=ball.radius, bands=preset and preset.bands)
+        save_plot(axes, args.plot)
     return 0
+
+
+def _print_static_test(test: dict) -> None:
+    """The ITF's static deformation test beside the dynamic law (:func:`studies.bounce.
+    static_test`), on its own lines.
+    """
+    force, dynamic, band = test["force_N"], test["dynamic_compression_m"], test["itf_forward_m"]
+    print(f"\nstatic test (ITF, quasi-static, apart from the bounce above), {force:.2f} N:")
+    if band is not None:
+        print(f"  ITF forward deformation of this type: {1e3 * band[0]:.1f}-{1e3 * band[1]:.1f} "
+              f"mm ({force / band[1] / 1e3:.1f}-{force / band[0] / 1e3:.1f} kN/m)")  # fmt: skip
+    if dynamic is not None:
+        stiffness = force / dynamic / 1e3
+        print(f"  this ball's dynamic law: {1e3 * dynamic:.2f} mm ({stiffness:.1f} kN/m): a "
+              "ball is viscoelastic, stiffer in a 4 ms impact than in a 5 s hold")  # fmt: skip
 
 
 def cmd_modes(args) -> int:
@@ -576,7 +607,8 @@ def cmd_specs(args) -> int:
     count = _count("--count", args.count, 1, MAX_MODES)
     racket = load_racket(args.racket)
     specs, sources = racket_specs(args.racket)
-    report = spec_report(racket, specs, count=count)
+    ball_name = default_ball(args.racket)
+    report = spec_report(racket, specs, count=count, ball=load_ball(ball_name))
     if specs is not None:
         print("spec sheet and fitted model (frame stiffness as given, not inferred from RA):")
         _print_table(report.fit, "{:.5g}")
@@ -593,7 +625,7 @@ def cmd_specs(args) -> int:
         f"{100 * racket.hand.grip_length:g} cm)"
     )
     _print_table(report.modes, "{:.4g}")
-    print(f"\nsweet spots (a tennis ball at {MAP_SPEED:g} m/s on the racket at rest):")
+    print(f"\nsweet spots (ball {ball_name} at {MAP_SPEED:g} m/s on the racket at rest):")
     _print_table(report.sweet_spots, "{:.4g}")
     print("\neffective mass along the strings (Eq. 20)")
     _print_table(report.effective_mass, "{:.4g}")
@@ -888,13 +920,16 @@ def _racket_arg(p, default="paper"):
     )
 
 
-def _ball_arg(p, flag="--ball", default="tennis", what="ball", **extra):
+def _ball_arg(p, flag="--ball", default=None, what="ball", **extra):
+    shown_default = default or (
+        f"{DEFAULT_BALL}, a real ball; with the paper's racket the paper's ball, {PAPER_BALL}"
+    )
     p.add_argument(
         flag,
         default=default,
         metavar="PRESET_OR_TOML",
         help=f"{what}: preset ({', '.join(BALLS)}) or TOML file with a [ball] "
-        f"table (default: {default})",
+        f"table (default: {shown_default})",
         **extra,
     )
 
@@ -1084,12 +1119,17 @@ def build_parser(parser_class=_Parser) -> argparse.ArgumentParser:
 
     p = sub.add_parser("ball", help="a ball's bounce on a rigid surface against impact speed")
     _ball_arg(p, "ball", nargs="?")
+    p.add_argument(
+        "--list", action="store_true", help="the real-ball presets, their numbers and sources"
+    )
     from studies.bounce import DEFAULT_SPEEDS
 
     _speed_option(p, "speeds", [round(v, 2) for v in DEFAULT_SPEEDS], "impact speeds", True)
     p.add_argument("--out", metavar="FILE", help="table file: .csv, .json or .parquet")
     p.add_argument(
-        "--plot", metavar="FILE", help="COR, contact time, compression (.png, .svg, .pdf)"
+        "--plot",
+        metavar="FILE",
+        help="COR, contact time, peak force, compression (.png, .svg, .pdf)",
     )
     p.set_defaults(func=cmd_ball)
 
@@ -1201,6 +1241,11 @@ def _start(args, words: list[str], originals: dict | None = None) -> int:
     """Run the parsed ``args`` as the command line ``words``, which its tables' sidecars
     record (``originals``: a rerun's copies of TOML inputs -> the paths first given).
     """
+    if getattr(args, "ball", "") is None:  # the real ball, the paper's with the paper's racket
+        rackets = getattr(args, "racket", None)
+        args.ball = default_ball(
+            *(rackets if isinstance(rackets, list) else [rackets] * bool(rackets))
+        )
     options = {k: v for k, v in vars(args).items() if k != "func" and not k.startswith("_")}
     outer = dict(_RUN)  # a rerun's own run, restored afterwards
     _RUN.clear()

@@ -45,11 +45,13 @@ keys are errors)::
     grip_length = 0.10          # m from the butt
 
     [ball]
-    preset = "tennis"           # or: mass (kg) and law, with the law's parameters:
+    preset = "itf-type-2"       # a real ball (ball.catalog), "tennis" (the paper's), ...
+                                # or: mass (kg) and law, with the law's parameters:
     mass = 0.057
     law = "linear-hysteresis"   # "linear-spring" (k), "linear-hysteresis" (k, e),
     k = 4e4                     # "power-law" (k, a, b, or k, a, e), "sine" (k0),
-                                # "growing-hysteresis" (k, a, e0, slope [, calibrated_to])
+                                # "growing-hysteresis" (k, a, e0, slope [, calibrated_to]),
+                                # "stiffening-hysteresis" (k, x_lim, e0, slope)
     e = 0.75
     radius = 0.0335             # m (default: the tennis ball's, racket.TENNIS_BALL_RADIUS)
 
@@ -64,12 +66,15 @@ from dataclasses import replace
 from pathlib import Path
 
 from ball import (
+    BALL_PRESETS,
+    DEFAULT_BALL,
     Ball,
     GrowingHysteresis,
     LinearHysteresis,
     LinearSpring,
     PowerLawHysteresis,
     SineLaw,
+    StiffeningHysteresis,
 )
 from beam import Beam
 from common.checks import CM_AS_M, GRAMS_AS_KG, KN_AS_N, in_range, positive, shown
@@ -99,13 +104,33 @@ SMALL_BALL_RADIUS = 0.0125
 that mass and a density of about 1.25 g/cm^3 is 2.5 cm across)."""
 
 BALLS = {
+    **{name: preset.ball for name, preset in BALL_PRESETS.items()},
     "tennis": tennis_ball,
     "zero-cor-tennis": lambda: Ball(TENNIS_BALL_MASS, SineLaw(k0=4e4), TENNIS_BALL_RADIUS),
     "happy": lambda: Ball(0.0103, LinearSpring(k=2e4), SMALL_BALL_RADIUS),
     "unhappy": lambda: Ball(0.0103, SineLaw(k0=2e4), SMALL_BALL_RADIUS),
 }
-"""Ball presets by name: the paper's tennis ball, its zero-COR twin (Sec. VIII), and the
-happy and unhappy balls of Secs. IV-VI."""
+"""Ball presets by name: the real balls of :mod:`ball.catalog` (ITF types 1-3, high
+altitude, pressureless, punctured), the paper's tennis ball, its zero-COR twin (Sec. VIII),
+and the happy and unhappy balls of Secs. IV-VI."""
+
+PAPER_BALL = "tennis"
+"""The ball of the paper's racket (the paper's linear ball; Sec. III)."""
+
+
+def default_ball(*rackets) -> str:
+    """The ball a command uses when none is given: the paper's ball when every racket is the
+    paper's (``"paper"``), so that the paper's numbers stay the paper's, and the ITF type 2
+    ball (:data:`ball.catalog.DEFAULT_BALL`) for every real racket.
+
+    Parameters
+    ----------
+    *rackets : str
+        The rackets of the command, as given (presets, TOML files, LABEL=...).
+    """
+    names = [r.partition("=")[2] if "=" in r else r for r in rackets]
+    return PAPER_BALL if names and all(n == "paper" for n in names) else DEFAULT_BALL
+
 
 TOML_RANGES = {
     ("racket", "length"): (0.2, 1.5, "m", (CM_AS_M,)),
@@ -136,6 +161,7 @@ LAWS = {
     "linear-hysteresis": (LinearHysteresis, {"k", "e"}),
     "power-law": (PowerLawHysteresis, {"k", "a", "b"}),
     "growing-hysteresis": (GrowingHysteresis, {"k", "a", "e0", "slope"}),
+    "stiffening-hysteresis": (StiffeningHysteresis, {"k", "x_lim", "e0", "slope"}),
     "sine": (SineLaw, {"k0"}),
 }
 
@@ -360,7 +386,7 @@ def ball_from_table(table: dict) -> Ball:
     if not isinstance(table["law"], str) or table["law"] not in LAWS:
         raise ValueError(f"unknown law {shown(table['law'])}; laws: {', '.join(LAWS)}")
     cls, params = LAWS[table["law"]]
-    linear = cls in (LinearSpring, LinearHysteresis)
+    linear = cls in (LinearSpring, LinearHysteresis, StiffeningHysteresis)  # k in N/m
     _check_ranges(table, "ball", {"mass", "radius", "k0"} | ({"k"} if linear else set()))
     given = set(table) - {"mass", "law", "radius"}
     if cls is PowerLawHysteresis and given == {"k", "a", "e"}:

@@ -11,6 +11,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from ball import DEFAULT_BALL
 from common.checks import SPEED_RANGE, in_range, non_negative
 from common.units import LB, MPH
 from racket import CATALOG, Swing, from_specs, impact
@@ -42,7 +43,7 @@ class PageInputs:
     lead_at : str
         Its clock position ("12", "3 and 9", ...).
     ball : str
-        A ball preset (:data:`studies.config.BALLS`).
+        A ball preset (:data:`studies.config.BALLS`); default the ITF type 2 ball.
     tension_lb : float
         String tension [lb].
     ball_speed : float
@@ -61,7 +62,7 @@ class PageInputs:
     f1_hz: float = 150.0
     lead_g: float = 0.0
     lead_at: str = "3 and 9"
-    ball: str = "tennis"
+    ball: str = DEFAULT_BALL
     tension_lb: float = 55.0
     ball_speed: float = 16.5
     swing_mph: float = 60.0

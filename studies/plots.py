@@ -432,45 +432,63 @@ def plot_serve_what_if(table, ax=None):
     return ax
 
 
-def plot_rigid_bounce(table, ax=None, radius: float | None = None):
+def plot_rigid_bounce(table, ax=None, radius: float | None = None, bands=None):
     """A ball's rigid-surface bounce against impact speed (:func:`studies.bounce.
-    rigid_bounce_table`): COR, contact time [ms] and peak compression [mm], with the ITF
-    type 2 rebound band at the drop test's speed and, if given, the ball's ``radius`` [m].
+    rigid_bounce_table`): COR, contact time [ms], peak force [kN] and peak compression [mm],
+    with what is sourced at the 254 cm drop (the ITF rebound band of the ball's type, a
+    contact time of about 4 ms, a compression of about 6 mm: :mod:`ball.catalog`), the
+    assumed COR of the type 2 ball at 30 m/s with its plausible range, and, if given, the
+    ball's ``radius`` [m].
 
     Parameters
     ----------
     table : DataFrame
         The table of :func:`studies.bounce.rigid_bounce_table` (SI columns).
-    ax : sequence of 3 Axes, optional
-        The Axes of the three panels; None: a new figure's.
+    ax : sequence of 4 Axes, optional
+        The Axes of the four panels; None: a new figure's.
     radius : float, optional
         Ball radius [m], drawn on the compression panel; None: not drawn.
+    bands : ItfBands, optional
+        The ITF bands of the ball's type (:mod:`ball.catalog`); None: the type 2 ball's.
     """
-    from studies.bounce import ITF_DROP_SPEED, ITF_TYPE2_COR
-
-    ax = _axes(ax, 3)
-    v = table["speed_m_s"]
-    ax[0].plot(v, table["e"], "o-", label="simulated")
-    low, high = ITF_TYPE2_COR
-    ax[0].errorbar(
-        [ITF_DROP_SPEED],
-        [0.5 * (low + high)],
-        yerr=[[0.5 * (high - low)]],
-        fmt="s",
-        color="k",
-        capsize=4,
-        label="ITF type 2 (254 cm drop)",
+    from ball.catalog import (
+        CALIBRATION_SPEED,
+        COR_AT_30,
+        COR_AT_30_RANGE,
+        DROP_COMPRESSION,
+        DROP_CONTACT_TIME,
+        ITF_DROP_SPEED,
+        TYPE_2_BANDS,
     )
+
+    ax = _axes(ax, 4)
+    v = table["speed_m_s"]
+
+    def sourced(axis, band, scale, label, at=ITF_DROP_SPEED, marker="s"):
+        low, high = (scale * b for b in band)
+        axis.errorbar([at], [0.5 * (low + high)], yerr=[[0.5 * (high - low)]], fmt=marker,
+                      color="k", capsize=4, label=label)  # fmt: skip
+
+    ax[0].plot(v, table["e"], "o-", label="simulated")
+    sourced(ax[0], (bands or TYPE_2_BANDS).cor, 1.0, "ITF rebound band (254 cm drop)")
+    ax[0].errorbar([CALIBRATION_SPEED], [COR_AT_30], fmt="D", color="tab:red",
+                   yerr=[[COR_AT_30 - COR_AT_30_RANGE[0]], [COR_AT_30_RANGE[1] - COR_AT_30]],
+                   capsize=4, label="type 2 at 30 m/s: assumed, with its range")  # fmt: skip
     ax[0].set_ylabel("COR on a rigid surface")
-    ax[0].legend()
+    ax[0].legend(fontsize="small")
     ax[1].plot(v, 1e3 * table["contact_time_s"], "o-")
+    sourced(ax[1], DROP_CONTACT_TIME, 1e3, "about 4 ms (Cross 2000)")
     ax[1].set_ylabel("contact time [ms]")
-    ax[2].plot(v, 1e3 * table["peak_compression_m"], "o-")
+    ax[1].legend(fontsize="small")
+    ax[2].plot(v, 1e-3 * table["peak_force_N"], "o-")
+    ax[2].set_ylabel("peak force [kN]")
+    ax[3].plot(v, 1e3 * table["peak_compression_m"], "o-")
+    sourced(ax[3], DROP_COMPRESSION, 1e3, "about 6 mm (Cross)")
     if radius is not None:
-        ax[2].axhline(1e3 * radius, ls="--", color="gray", label="ball radius")
-        ax[2].legend()
-    ax[2].set_ylabel("peak compression [mm]")
-    ax[2].set_xlabel("impact speed [m/s]")
+        ax[3].axhline(1e3 * radius, ls="--", color="gray", label="ball radius")
+    ax[3].legend(fontsize="small")
+    ax[3].set_ylabel("peak compression [mm]")
+    ax[3].set_xlabel("impact speed [m/s]")
     return ax
 
 

@@ -12,8 +12,9 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
+from ball import BALL_PRESETS, DEFAULT_BALL, Ball
 from beam import Beam
-from racket import Racket, flex_test_stiffness, tennis_ball
+from racket import Racket, flex_test_stiffness
 from racket.specs import Profile, SpecSheet, fit_profile, spec_sheet
 from racket.system import held_system
 from studies.landmarks import sweet_spots
@@ -165,7 +166,9 @@ def _modes(racket: Racket, count: int) -> pd.DataFrame:
     return pd.DataFrame(rows)
 
 
-def spec_report(racket: Racket, specs: dict | None = None, count: int = 4) -> SpecReport:
+def spec_report(
+    racket: Racket, specs: dict | None = None, count: int = 4, ball: Ball | None = None
+) -> SpecReport:
     """Tables describing ``racket``; with the spec sheet it was fitted to (``specs``, the
     keywords of :func:`racket.from_specs`), also the sheet against the fitted model (before
     any lead tape), the fitted parts with their plausible ranges, and a warning for each
@@ -184,6 +187,8 @@ def spec_report(racket: Racket, specs: dict | None = None, count: int = 4) -> Sp
         their names); None: no fit tables.
     count : int, optional
         Bending modes to list.
+    ball : Ball, optional
+        The ball of the sweet spots; default the ITF type 2 ball (:data:`ball.DEFAULT_BALL`).
     """
     x = np.linspace(*racket.strings.extent, 9)
     effective = pd.DataFrame(
@@ -200,7 +205,7 @@ def spec_report(racket: Racket, specs: dict | None = None, count: int = 4) -> Sp
         fit = _fit_table(sheet, fitted, profile.layout.head_length)
         parts = _parts(profile)
         warnings = tuple(profile.warnings())
-    spots = sweet_spots(racket, tennis_ball())
+    spots = sweet_spots(racket, BALL_PRESETS[DEFAULT_BALL].ball() if ball is None else ball)
     return SpecReport(
         fit=fit,
         properties=_properties(racket, spots),

@@ -34,29 +34,36 @@ from dataclasses import replace
 import numpy as np
 import pandas as pd
 
-from ball import Ball, LinearHysteresis, SineLaw, serve_speed
-from common.checks import SPEED_RANGE, in_range, shown
+from ball import Ball, LinearHysteresis, SineLaw, StiffeningHysteresis, serve_speed
+from common.checks import SPEED_RANGE, in_range, positive, shown
 from common.checks import speed as check_speed
 from common.units import MPH
 from racket import Racket, Swing, impact
 from racket.swing import WRIST_BEYOND_BUTT
 
 
-def zero_cor_ball(ball: Ball, speed: float) -> Ball:
+def zero_cor_ball(ball: Ball, force: float) -> Ball:
     """The paper's what-if ball (Sec. VIII): the same ball with a sine law (COR 0) whose k0
-    is the ball's secant stiffness on a rigid surface at ``speed`` (k for a linear ball); a
-    sine-law ball is returned as it is.
+    is the ball's secant stiffness F / X(F) on its loading curve at the peak ``force`` it
+    reaches in the impact at hand (k for a linear ball, at any force); a sine-law ball is
+    returned as it is.
+
+    The force, not the speed: a ball whose stiffness grows with its compression is squashed
+    far less on strings than on a rigid surface at the same speed, so its secant stiffness
+    on a rigid surface would make the twin much stiffer than the ball it stands for (and,
+    storing less, lose less than the real ball: a "zero-COR" serve faster than the real one).
 
     Parameters
     ----------
     ball : Ball
         The real ball.
-    speed : float
-        Impact speed at which its stiffness is taken [m/s].
+    force : float
+        Peak force [N] of the real ball's impact, > 0.
     """
     if isinstance(ball.law, SineLaw):
         return ball
-    return replace(ball, law=SineLaw(k0=ball.law.secant_stiffness(ball.mass, speed)))
+    force = positive("force", force, "N")
+    return replace(ball, law=SineLaw(k0=force / float(ball.law.compression(force, force))))
 
 
 def serve(racket: Racket, ball: Ball, position: float, swing: Swing) -> dict:
@@ -79,10 +86,10 @@ def serve(racket: Racket, ball: Ball, position: float, swing: Swing) -> dict:
         ``position_from_tip_m``, ``position_from_butt_cm``, ``head_speed_m_s``,
         ``point_speed_m_s`` (v2), ``e``, ``effective_mass_kg``, ``serve_eq22_m_s``,
         ``serve_simulated_m_s``, their ratios to v2 ``ratio_eq22`` and ``ratio_simulated``,
-        and the speeds in mph (``*_mph``).
+        the speeds in mph (``*_mph``), and the peak force ``peak_force_N``.
     """
     v2 = float(swing.point_speeds(racket, position))
-    at_rest = impact(racket, ball, position, v2)
+    at_rest = impact(racket, ball, position, v2)  # the same collision as the swung one
     swung = impact(racket, ball, position, 0.0, **swing.impact_kwargs(racket, position))
     eq22 = serve_speed(min(max(at_rest.e, 0.0), 1.0), ball.mass, at_rest.effective_mass, v2)
     return {
@@ -100,6 +107,7 @@ def serve(racket: Racket, ball: Ball, position: float, swing: Swing) -> dict:
         "point_speed_mph": v2 / MPH,
         "serve_eq22_mph": eq22 / MPH,
         "serve_simulated_mph": swung.ball_rebound / MPH,
+        "peak_force_N": swung.peak_force,
     }
 
 
@@ -125,8 +133,9 @@ def serve_table(
     pivot_from_butt : float
         The swing's pivot [m from the butt, - beyond it]; default the wrist, 5 cm beyond.
     zero_cor : bool
-        Add the rows of the zero-COR twin (:func:`zero_cor_ball` at the racket speed; for a
-        sine-law ball the same ball, so the reduction is 0) and the reductions.
+        Add the rows of the zero-COR twin (:func:`zero_cor_ball` at the peak force of the
+        ball's serve at each position; for a sine-law ball the same ball, so the reduction
+        is 0) and the reductions.
 
     Returns
     -------
@@ -142,17 +151,18 @@ def serve_table(
             f"{shown(position)}"
         )
     swing = Swing(racket_speed, pivot_from_butt)
-    balls = [("normal", ball)]
-    if zero_cor:
-        balls.append(("zero-COR", zero_cor_ball(ball, swing.head_speed)))
-    rows = [
-        {"ball": name, **serve(racket, b, float(x), swing)} for name, b in balls for x in positions
-    ]
+    rows = [{"ball": "normal", **serve(racket, ball, float(x), swing)} for x in positions]
+    if zero_cor:  # each point's twin as stiff as the ball is in that point's serve
+        rows += [
+            {"ball": "zero-COR", **serve(racket, zero_cor_ball(ball, row["peak_force_N"]),
+                                         row["position_from_tip_m"], swing)}
+            for row in list(rows)
+        ]  # fmt: skip
     table = pd.DataFrame(rows).set_index("ball")
     if zero_cor:
         for how in ("eq22", "simulated"):
             col = f"serve_{how}_m_s"
-            normal = np.tile(table.loc[["normal"], col].to_numpy(), len(balls))
+            normal = np.tile(table.loc[["normal"], col].to_numpy(), 2)
             table[f"reduction_{how}_percent"] = 100.0 * (1.0 - table[col].to_numpy() / normal)
     return table
 
@@ -252,7 +262,8 @@ def serve_what_if(
         String-bed stiffnesses [N/m] (tension), each in
         :data:`studies.sweeps.STRING_STIFFNESS_RANGE`; default 1e4 to 1e5 N/m.
     ball_stiffness : sequence of float, optional
-        Ball stiffnesses k [N/m] (the normal ball keeps its COR); default 2e4 to 1e5 N/m.
+        Ball stiffnesses k [N/m] (the normal ball keeps its COR; a StiffeningHysteresis
+        ball's k is its small-compression stiffness); default 2e4 to 1e5 N/m.
 
     Returns
     -------
@@ -260,9 +271,10 @@ def serve_what_if(
         One row per case: ``varied`` ("string_stiffness" or "ball_stiffness"), ``value``,
         then the zero-COR row of :func:`serve_table` (serve speeds and reductions).
     """
-    if not isinstance(ball.law, LinearHysteresis):
+    if not isinstance(ball.law, (LinearHysteresis, StiffeningHysteresis)):
         raise ValueError(
-            f"ball must have a LinearHysteresis law for a stiffness what-if, got {ball.law!r}"
+            "ball must have a LinearHysteresis or StiffeningHysteresis law (a stiffness k in "
+            f"N/m) for a stiffness what-if, got {type(ball.law).__name__}"
         )
     position = racket.strings.center if position is None else position
     from studies.sweeps import STRING_STIFFNESS_RANGE
@@ -279,7 +291,7 @@ def serve_what_if(
         row = serve_table(variant, ball, position, racket_speed, pivot_from_butt).loc["zero-COR"]
         rows.append({"varied": "string_stiffness", "value": float(k_s), **row.to_dict()})
     for k_b in ball_stiffness:
-        stiff = Ball(ball.mass, replace(ball.law, k=float(k_b)))
+        stiff = replace(ball, law=replace(ball.law, k=float(k_b)))
         row = serve_table(racket, stiff, position, racket_speed, pivot_from_butt).loc["zero-COR"]
         rows.append({"varied": "ball_stiffness", "value": float(k_b), **row.to_dict()})
     return pd.DataFrame(rows)

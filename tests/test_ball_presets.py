@@ -164,3 +164,88 @@ def test_the_law_is_linear_when_slow():
 def test_bad_parameters_are_refused(kwargs, match):
     with pytest.raises(ValueError, match=match):
         StiffeningHysteresis(**kwargs)
+
+
+# ----- the presets in the command line, TOML and the studies --------------------------
+@pytest.mark.parametrize("name", list(BALL_PRESETS))
+def test_every_preset_round_trips_through_toml(name, tmp_path):
+    from studies.config import load_ball
+
+    ball = BALL_PRESETS[name].ball()
+    by_name = tmp_path / "named.toml"
+    by_name.write_text(f'[ball]\npreset = "{name}"\n')
+    law = ball.law
+    by_numbers = tmp_path / "numbers.toml"
+    by_numbers.write_text(
+        f'[ball]\nmass = {ball.mass!r}\nradius = {ball.radius!r}\nlaw = "stiffening-hysteresis"\n'
+        f"k = {law.k!r}\nx_lim = {law.x_lim!r}\ne0 = {law.e0!r}\nslope = {law.slope!r}\n"
+    )
+    assert load_ball(str(by_name)) == ball
+    assert load_ball(str(by_numbers)) == ball
+
+
+def test_the_default_ball_is_the_real_one_except_for_the_papers_racket(tmp_path, monkeypatch):
+    import json
+
+    from studies.cli import main
+
+    monkeypatch.chdir(tmp_path)
+    for racket, expected in (("pure-drive-2021", "itf-type-2"), ("paper", "tennis")):
+        assert main(["sweep", "--racket", racket, "--points", "3", "--out", f"{racket}.csv"]) == 0
+        record = json.loads((tmp_path / f"{racket}.csv.meta.json").read_text())
+        assert record["options"]["ball"] == expected
+
+
+def test_a_sweep_over_speeds_gives_a_curve_per_speed_with_the_default_ball(tmp_path):
+    """The paper's linear ball gives the same e at every speed; the real ball's does not."""
+    import pandas as pd
+
+    from studies.cli import main
+
+    out = tmp_path / "s.csv"
+    argv = ["sweep", "--racket", "pure-drive-2021", "--points", "7", "--speed", "10", "20", "30"]
+    assert main([*argv, "--out", str(out)]) == 0
+    curves = pd.read_csv(out).pivot(index="position_from_tip_m", columns="speed_m_s", values="e")
+    assert curves.shape == (7, 3)
+    for a, b in ((10, 20), (20, 30), (10, 30)):
+        assert np.abs(curves[a] - curves[b]).max() > 1e-3
+
+
+def test_ball_command_lists_the_presets_and_reports_the_static_test_apart(capsys, tmp_path):
+    from studies.cli import main
+
+    assert main(["ball", "--list"]) == 0
+    out = capsys.readouterr().out
+    assert all(name in out for name in BALL_PRESETS)
+    plot = tmp_path / "b.png"
+    assert main(["ball", "itf-type-3", "--speeds", "7.06", "70", "--plot", str(plot)]) == 0
+    out = capsys.readouterr().out
+    assert "static test" in out and "5.6-7.4 mm" in out and plot.stat().st_size > 0
+    assert main(["ball", "punctured", "--speeds", "7.06"]) == 0
+    assert "ITF forward" not in capsys.readouterr().out  # no ITF type admits it
+
+
+def test_the_zero_cor_twin_of_a_real_ball_serves_slower():
+    from studies.serve import serve_table
+
+    racket = CATALOG["pure-drive-2021"].racket()
+    table = serve_table(racket, BALL_PRESETS["itf-type-2"].ball(), None, 100 * 0.44704)
+    assert 0 < table.loc["zero-COR", "reduction_simulated_percent"] < 100
+    assert table.loc["zero-COR", "e"] < table.loc["normal", "e"]
+
+
+def test_the_headline_answers_move_with_the_assumed_cor_at_30():
+    from studies.cor_assumption import cor_assumption_table
+    from studies.serve import serve_table
+
+    table = cor_assumption_table()
+    assert table["assumed"].sum() == 1 and list(table["cor_at_30"]) == sorted(table["cor_at_30"])
+    for column in ("serve_mph", "e_node_40"):  # a livelier fast ball: faster, higher e
+        assert np.all(np.diff(table[column]) > 0)
+    # The assumed row is the default ball's answer.
+    racket = CATALOG["pure-drive-2021"].racket()
+    serve = serve_table(racket, BALL_PRESETS["itf-type-2"].ball(), None, 100 * 0.44704)
+    assumed = table[table["assumed"]].iloc[0]
+    assert assumed["serve_mph"] == pytest.approx(
+        serve.loc["normal", "serve_simulated_m_s"] / 0.44704, rel=1e-12
+    )

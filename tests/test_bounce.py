@@ -4,8 +4,11 @@ import math
 
 import pytest
 
+from ball.catalog import ITF_DROP_SPEED, TYPE_2_BANDS
 from racket import tennis_ball
-from studies.bounce import ITF_DROP_SPEED, ITF_TYPE2_COR, rigid_bounce_table
+from studies.bounce import rigid_bounce_table
+
+ITF_TYPE2_COR = TYPE_2_BANDS.cor
 
 
 def test_itf_drop_speed_and_cor_band():

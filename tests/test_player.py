@@ -121,7 +121,8 @@ def test_tables_describe_themselves_and_rerun_from_the_sidecar(tmp_path, capsys,
     record = json.loads((tmp_path / "s.csv.meta.json").read_text())
     assert record["command"] == argv and record["versions"]["numpy"] == np.__version__
     assert record["inputs"]["racket"][0]["spec_sheet"]["swingweight_kgcm2"] == 315
-    assert record["inputs"]["ball"][0]["preset"] == "tennis"  # the default, recorded
+    # the default for a real racket (the real ball, issue 24), recorded
+    assert record["inputs"]["ball"][0]["preset"] == "itf-type-2"
     assert record["options"]["pivot_cm_from_butt"] == -5.0
     first = (tmp_path / "s.csv").read_text()
     sheet.write_text(sheet.read_text().replace("315", "330"))  # the file changes ...
