@@ -143,14 +143,17 @@ def ball_compression(law, params, f, f_max):
 
 
 @njit(cache=True)
-def _branch_force(target, c, f_lo, f_hi, f_max, law, params, b):
+def _branch_force(target, c, f_lo, f_hi, f_max, law, params, b, guess):
     """Solve g(F) + c F = target for F in [f_lo, f_hi] (g the ball's branch, :func:`_branch`),
-    by safeguarded Newton: g + c F rises with F, and the bracket holds the root.
+    by safeguarded Newton from ``guess`` (the bracket's middle if outside it): g + c F rises
+    with F, and the bracket holds the root.
     """
-    f = 0.5 * (f_lo + f_hi)
+    f = guess if f_lo < guess < f_hi else 0.5 * (f_lo + f_hi)
     for _ in range(100):
         g, dg = _branch(law, params, f, f_max, b)
         resid = g + c * f - target
+        if resid == 0.0:  # (the bracket would close on f, and Newton's step leave it)
+            return f
         if resid < 0.0:
             f_lo = f
         else:
@@ -178,9 +181,10 @@ def force_coefficients(law, params, a):
 
 
 @njit(cache=True)
-def monotone_force(law, params, coef, a, z_pred, f_max):
+def monotone_force(law, params, coef, a, z_pred, f_max, guess):
     """Force solving g_ball(F) + a F = z_pred (a = 1/k_s + c), 0 if the contact is open;
-    ``coef`` from :func:`force_coefficients`.
+    ``coef`` from :func:`force_coefficients`; a non-linear law's Newton iteration starts from
+    ``guess`` (the force extrapolated from the last two steps).
     """
     if law == LINEAR:
         f = z_pred * coef[0]  # loading line
@@ -189,11 +193,11 @@ def monotone_force(law, params, coef, a, z_pred, f_max):
         return max((z_pred - f_max * coef[2]) * coef[1], 0.0)  # unloading line
     switch = (_loading(law, params, f_max)[0] if f_max > 0.0 else 0.0) + a * f_max
     if z_pred >= switch:  # loading: b plays no part
-        return _branch_force(z_pred, a, f_max, z_pred / a, f_max, law, params, 1.0)
+        return _branch_force(z_pred, a, f_max, z_pred / a, f_max, law, params, 1.0, guess)
     if z_pred <= 0.0:
         return 0.0
     b = unloading_exponent(law, params, f_max)
-    return _branch_force(z_pred, a, 0.0, f_max, f_max, law, params, b)
+    return _branch_force(z_pred, a, 0.0, f_max, f_max, law, params, b, guess)
 
 
 @njit(cache=True)
@@ -317,7 +321,7 @@ def _one_impact(frame, points, ball, controls, out, p):
         c += out_d[j, 0] * gin1[j, 0] + out_d[j, 1] * gin1[j, 1]
     a = points.series[p] + c
     coef = force_coefficients(law, params, a)
-    force, f_peak, x_ball, snapped = 0.0, 0.0, 0.0, False
+    force, f_before, f_peak, x_ball, snapped = 0.0, 0.0, 0.0, 0.0, False
     residual = -math.inf
     damping_loss, sine_work = 0.0, 0.0
     power_prev = _power(frame.damp_blocks, frame.damp_rows, s)
@@ -360,7 +364,7 @@ def _one_impact(frame, points, ball, controls, out, p):
             elif not snapped:
                 residual = max(residual, step_residual)
         else:
-            f_new = monotone_force(law, params, coef, a, z_pred, f_peak)
+            f_new = monotone_force(law, params, coef, a, z_pred, f_peak, 2.0 * force - f_before)
         # Add the response to the force at the step's end.
         u = u_p + ball.g1[0] * f_new
         ud = ud_p + ball.g1[1] * f_new
@@ -387,7 +391,7 @@ def _one_impact(frame, points, ball, controls, out, p):
             recontacts += 1
             stop_at = -1  # caught again: not over yet
         left = f_new == 0.0 and force > 0.0
-        force = f_new
+        f_before, force = force, f_new
         f_peak = max(f_peak, force)
         step += 1
         if record and step < out.history.shape[2]:

@@ -41,9 +41,10 @@ def test_kernel_formulas_agree_with_the_law_objects(law):
         a = 2.5e-5
         coef = kernel.force_coefficients(code, params, a)
         z = x + a * f
-        assert kernel.monotone_force(code, params, coef, a, z, peak) == pytest.approx(
-            f, rel=1e-9, abs=1e-9
-        )
+        for guess in (0.0, f, 0.5 * f, 3.0 * peak):  # wherever Newton starts
+            assert kernel.monotone_force(code, params, coef, a, z, peak, guess) == pytest.approx(
+                f, rel=1e-9, abs=1e-9
+            )
 
 
 def test_every_law_names_its_kernel_code():
