@@ -464,26 +464,27 @@ def plot_rigid_bounce(table, ax=None, radius: float | None = None, bands=None):
     ax = _axes(ax, 4)
     v = table["speed_m_s"]
 
-    def sourced(axis, band, scale, label, at=ITF_DROP_SPEED, marker="s"):
-        low, high = (scale * b for b in band)
-        axis.errorbar([at], [0.5 * (low + high)], yerr=[[0.5 * (high - low)]], fmt=marker,
+    def sourced(axis, value, band, scale, label):
+        low, high, mid = scale * band[0], scale * band[1], scale * value
+        axis.errorbar([ITF_DROP_SPEED], [mid], yerr=[[mid - low], [high - mid]], fmt="s",
                       color="k", capsize=4, label=label)  # fmt: skip
 
     ax[0].plot(v, table["e"], "o-", label="simulated")
-    sourced(ax[0], (bands or TYPE_2_BANDS).cor, 1.0, "ITF rebound band (254 cm drop)")
+    cor = (bands or TYPE_2_BANDS).cor
+    sourced(ax[0], 0.5 * (cor[0] + cor[1]), cor, 1.0, "ITF rebound band (254 cm drop)")
     ax[0].errorbar([CALIBRATION_SPEED], [COR_AT_30], fmt="D", color="tab:red",
                    yerr=[[COR_AT_30 - COR_AT_30_RANGE[0]], [COR_AT_30_RANGE[1] - COR_AT_30]],
                    capsize=4, label="type 2 at 30 m/s: assumed, with its range")  # fmt: skip
     ax[0].set_ylabel("COR on a rigid surface")
     ax[0].legend(fontsize="small")
     ax[1].plot(v, 1e3 * table["contact_time_s"], "o-")
-    sourced(ax[1], DROP_CONTACT_TIME, 1e3, "about 4 ms (Cross 2000)")
+    sourced(ax[1], *DROP_CONTACT_TIME, 1e3, "about 4 ms (Cross 2000), accepted band")
     ax[1].set_ylabel("contact time [ms]")
     ax[1].legend(fontsize="small")
     ax[2].plot(v, 1e-3 * table["peak_force_N"], "o-")
     ax[2].set_ylabel("peak force [kN]")
     ax[3].plot(v, 1e3 * table["peak_compression_m"], "o-")
-    sourced(ax[3], DROP_COMPRESSION, 1e3, "about 6 mm (Cross)")
+    sourced(ax[3], *DROP_COMPRESSION, 1e3, "about 6 mm (Cross), accepted band")
     if radius is not None:
         ax[3].axhline(1e3 * radius, ls="--", color="gray", label="ball radius")
     ax[3].legend(fontsize="small")
