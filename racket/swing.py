@@ -6,7 +6,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from common.checks import SPEED_RANGE, in_range, shown
+from common.checks import SPEED_RANGE, in_range, positive, shown
 from common.checks import speed as check_speed
 
 WRIST_BEYOND_BUTT = 0.05
@@ -154,3 +154,36 @@ class Swing:
                 f"impact points (each must move at {SPEED_RANGE[0] / size:.4g}-"
                 f"{SPEED_RANGE[1] / size:.4g} {unit}), got {shown(typed)}"
             )
+
+
+EFFORT_EXPONENT = 0.27
+"""Players swing a racket of larger swingweight I0 more slowly, V = C / I0**n with
+n = 0.27 (R. Cross and R. Bower, "Effects of swing-weight on swing speed and racket power",
+J. Sports Sci. 24 (2006) 23-30, abstract; for I0 > 0.03 kg m^2).  I0 is taken as the
+swingweight, the moment of inertia about the axis 10 cm from the butt (an assumption: the
+abstract does not name the axis; a hand-held swing's axis is near it)."""
+
+
+def equal_effort(swing: Swing, reference_swingweight: float, swingweight: float) -> Swing:
+    """The swing a player makes with a racket of ``swingweight`` at the effort that swings a
+    racket of ``reference_swingweight`` at ``swing``: the head speed scaled by
+    (reference_swingweight / swingweight)**:data:`EFFORT_EXPONENT`, about the same pivot.
+
+    Parameters
+    ----------
+    swing : Swing
+        The reference racket's swing.
+    reference_swingweight, swingweight : float
+        Swingweights [kg m^2] (axis 10 cm from the butt) of the reference racket and of
+        the racket swung, each > 0.
+
+    Examples
+    --------
+    >>> slower = equal_effort(Swing(30.0), 0.0320, 0.0330)
+    >>> round(slower.head_speed, 3)
+    29.753
+    """
+    ratio = positive("reference_swingweight", reference_swingweight, "kg m^2") / positive(
+        "swingweight", swingweight, "kg m^2"
+    )
+    return Swing(swing.head_speed * ratio**EFFORT_EXPONENT, swing.pivot_from_butt)

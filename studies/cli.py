@@ -775,7 +775,11 @@ def cmd_compare(args) -> int:
         rackets = {k: replace(r, support=args.support) for k, r in rackets.items()}
     ball = load_ball(args.ball)
     tension = None if args.tension_lb is None else _tension(args.tension_lb)
-    table = compare(rackets, ball, speed, points, swing=swing, tension=tension)
+    if args.equal_effort and swing is None:
+        raise ValueError("--equal-effort needs a swing: --swing-speed or --swing-speed-mph")
+    table = compare(
+        rackets, ball, speed, points, swing=swing, tension=tension, equal_effort=args.equal_effort
+    )
     _print_table(compare_summary(rackets, table, ball, speed))
     if args.out:
         write_table(table, args.out)
@@ -1212,6 +1216,13 @@ def build_parser(parser_class=_Parser) -> argparse.ArgumentParser:
     p.add_argument("--points", type=int, default=101, help="impact points per racket")
     p.add_argument("--support", choices=list(SUPPORTS), help="support for every racket")
     _swing_options(p)
+    p.add_argument(
+        "--equal-effort",
+        action="store_true",
+        help="the swing is the first racket's; every other racket is swung at the same "
+        "effort, slower the larger its swingweight: head speed x (I_first / I)^0.27 (Cross "
+        "and Bower 2006)",
+    )
     _tension_option(p)
     p.add_argument("--out", metavar="FILE", help="table file: .csv, .json or .parquet")
     p.add_argument("--plot", metavar="FILE", help="comparison plot (.png, .svg, .pdf)")

@@ -443,6 +443,9 @@ def compare_summary(rackets, table, ball: Ball, speed: float):
                 np.interp(racket.strings.center, group["position_from_tip_m"], group["e"])
             ),
             "e_at_tip_end": group["e"].iloc[0],
+            "head_speed_mph": (
+                group["head_speed_m_s"].iloc[0] / MPH if "head_speed_m_s" in group else np.nan
+            ),
             "largest_exit_mph": group["exit_speed_mph"].max(),
             "largest_exit_from_butt_cm": 100 * (racket.beam.length - fastest),
             "largest_exit_from_tip_cm": 100 * fastest,

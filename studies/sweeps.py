@@ -26,6 +26,7 @@ from racket.solver import F1_MIN
 from racket.specs.sheet import SPEC_RANGES
 from racket.specs.strings import with_tension
 from racket.swing import check_swung_support
+from racket.swing import equal_effort as same_effort
 from studies.tables import impact_columns, impact_table
 
 TENSION_RANGE = SPEC_RANGES["tension_n"][:2]
@@ -315,6 +316,7 @@ def compare(
     points: int = 101,
     swing: Swing | None = None,
     tension: float | None = None,
+    equal_effort: bool = False,
 ) -> pd.DataFrame:
     """Impacts across the string bed of each racket: one sweep table, a ``racket`` column.
 
@@ -331,7 +333,14 @@ def compare(
         The same swing for every racket (as in :func:`sweep`).
     tension : float, optional
         Every racket strung at this tension [N], in [88.96, 355.9] (20-80 lb, as in :func:`sweep`).
+    equal_effort : bool
+        With a swing: ``swing`` is the first racket's, and each other racket is swung at the
+        same effort, its head speed scaled by its swingweight
+        (:func:`racket.swing.equal_effort`, Cross and Bower 2006).  The table gets a
+        ``head_speed_m_s`` column with a swing.
     """
+    if equal_effort and swing is None:
+        raise ValueError("equal_effort needs a swing (the first racket's)")
     if tension is not None:
         tension = in_range("tension", tension, *TENSION_RANGE, "N")
         rackets = {label: with_tension(r, tension) for label, r in rackets.items()}
@@ -341,10 +350,16 @@ def compare(
     check_impacts(int(points) * len(rackets), "points x rackets")
     check_speed("speed", speed, allow_zero=swing is not None)
     frames = []
+    reference = next(iter(rackets.values())).beam.swingweight
     for label, racket in rackets.items():
         x = np.linspace(*racket.strings.extent, int(points))
-        moved = {} if swing is None else swing.impact_kwargs(racket, x)
+        own = swing
+        if equal_effort:
+            own = same_effort(swing, reference, racket.beam.swingweight)
+        moved = {} if own is None else own.impact_kwargs(racket, x)
         frame = impact_table(impact(racket, ball, x, speed, **moved))
         frame.insert(0, "racket", label)
+        if own is not None:
+            frame["head_speed_m_s"] = own.head_speed
         frames.append(frame)
     return pd.concat(frames, ignore_index=True)
