@@ -9,7 +9,7 @@ test (:func:`flex_test_stiffness`).
 
 from common.version import __version__
 from racket.presets import TENNIS_BALL_MASS, TENNIS_BALL_RADIUS, paper_racket, tennis_ball
-from racket.racket import SUPPORTS, Hand, Racket, StringBed
+from racket.racket import GRIPS, SUPPORTS, Hand, Racket, StringBed
 from racket.solver import Impact, impact
 from racket.specs import from_specs, string_bed_stiffness
 from racket.specs.catalog import CATALOG
@@ -18,6 +18,7 @@ from racket.swing import Swing
 
 __all__ = [
     "CATALOG",
+    "GRIPS",
     "SUPPORTS",
     "TENNIS_BALL_MASS",
     "TENNIS_BALL_RADIUS",

@@ -44,8 +44,9 @@ class HandFeel:
         Energy the hand's dashpot took out of the racket over ``t`` [J] (0 for a free
         racket): the racket's recoil and its vibration.
     hand_vibration_energy : float
-        The part of it from the frame's vibration alone: the dashpot's dissipation of the
-        bending and torsion coordinates' velocities, the cross terms with the rigid-body
+        The part of it from the vibration alone: the dashpot's dissipation of the velocities
+        of the vibration (the blocks that are not the dc motion, :mod:`racket.system`: the
+        racket's rigid-body motion and its rocking on the hand), the cross terms with the dc
         motion left out (so an estimate, not an exact share) [J].
     vibration_energy_end : float
         The energy left at the end in the frame's own bending and torsion modes (their
@@ -140,22 +141,27 @@ def hand_feel(
     velocity = qd @ phi_grip[0]
     acceleration = qdd @ phi_grip[0]
     twist = None
+    frame = np.arange(n)  # the frame's coordinates (not a hand's mass), in order
+    if system.hand_coordinate is not None:
+        frame = np.delete(frame, system.hand_coordinate)
     if face:
-        nb = min(n, racket.beam.modes.count)
-        twist = qd[:, nb:] @ racket.beam.roll_modes.twist(grip)[:, 0]
+        roll = racket.beam.roll_modes
+        twist = qd[:, n - roll.count :] @ roll.twist(grip)[:, 0]
     # The hand's dashpot: the system's damping less the modes' own (2 zeta omega).
     modal = [racket.beam.modes] + ([racket.beam.roll_modes] if face else [])
-    own = np.concatenate([2.0 * m.damping * m.omega for m in modal])[:n]
+    own, omega = np.zeros(n), np.zeros(n)
+    own[frame] = np.concatenate([2.0 * m.damping * m.omega for m in modal])[: frame.size]
+    omega[frame] = np.concatenate([m.omega for m in modal])[: frame.size]
     c_hand = system.damping - np.diag(own)
-    elastic = np.setdiff1d(np.arange(n), system.rigid)  # bending and torsion coordinates
+    elastic = np.setdiff1d(frame, system.rigid)  # bending and torsion coordinates
 
     def absorbed(v, c):
         power = np.einsum("ti,ij,tj->t", v, c, v)
         return float(np.sum(0.5 * (power[1:] + power[:-1])) * dt)
 
     hand_energy = absorbed(qd, c_hand)
-    hand_vibration = absorbed(qd[:, elastic], c_hand[np.ix_(elastic, elastic)])
-    omega = np.concatenate([m.omega for m in modal])[:n]
+    vibrating = system.modal_state(states * ~system.dc[None, :, None])[1]  # the ac blocks
+    hand_vibration = absorbed(vibrating, c_hand)
     vibration_end = 0.5 * float(
         np.sum(qd[-1, elastic] ** 2 + (omega[elastic] * q[-1, elastic]) ** 2)
     )

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, replace
 from functools import cached_property
 
@@ -34,31 +35,65 @@ class Hand:
         Total damping coefficient of the hand [N s/m].
     grip_length : float
         Length of handle the hand covers, from the butt [m].
+    mass : float
+        Effective mass of the hand and forearm that the grip moves [kg], > 0; the grip's
+        springs and dashpots join the handle to it, and it is otherwise free.  ``inf``
+        (default): the grip is held still, the springs and dashpots join the handle to the
+        ground (the model before the hand had a mass).  The grip presets
+        :data:`GRIPS` have a finite mass.
 
     Notes
     -----
-    The defaults (1e4 N/m, 10 N s/m over 0.10 m, a palm's width) are this project's
-    order-of-magnitude choice, not a measurement: the hand-arm system is usually described
-    by lumped masses, springs and dashpots (ISO 10068, the driving-point impedance of the
-    hand-arm system), and how a grip changes a racket's modes depends strongly on how hard
-    it is squeezed (D. Chadefaux et al., "The effects of player grip on the dynamic
-    behaviour of a tennis racket", J. Sports Sci. 35, 2017).  With the defaults a held
-    racket rocks on the hand at about 2 and 45 Hz, and its first bending mode is damped at
-    about 2.5 % of critical (0.5 % free); ``racket-impact specs`` prints both.  The ball's
-    rebound from the string centre hardly depends on them (the impulse reaches the hand
-    after the ball has nearly left, paper Sec. VII): it changes by less than 1 % from the
-    free racket's for stiffness and damping from a tenth to three times the defaults
-    (about 1 % at ten times).
+    A :class:`Racket` is held by the medium grip of :data:`GRIPS` unless told otherwise: a
+    hand of mass, calibrated to measured hand-held frequencies (see :data:`GRIP_MASSES`).
+    ``Hand()`` itself (1e4 N/m, 10 N s/m over 0.10 m, a palm's width, infinite mass) is the
+    grip held still, the model before the hand had a mass: order-of-magnitude values, not a
+    measurement (the hand-arm system is usually described by lumped masses, springs and
+    dashpots, ISO 10068; how a grip changes a racket's modes depends strongly on how hard it
+    is squeezed, D. Chadefaux et al., J. Sports Sci. 35, 2017).  Held still, a racket's
+    first bending mode rises (150 to 152.9 Hz for the Pure Drive), where measured hand-held
+    frequencies fall; with the medium grip it falls to 137.5 Hz.  Either way the ball's
+    rebound from the string centre hardly depends on the hand (the impulse reaches the hand
+    after the ball has nearly left, paper Sec. VII).
     """
 
     stiffness: float = 1e4
     damping: float = 10.0
     grip_length: float = 0.10
+    mass: float = math.inf
 
     def __post_init__(self):
         object.__setattr__(self, "stiffness", positive("hand stiffness", self.stiffness, "N/m"))
         object.__setattr__(self, "damping", non_negative("hand damping", self.damping, "N s/m"))
         object.__setattr__(self, "grip_length", positive("grip_length", self.grip_length, "m"))
+        if not (isinstance(self.mass, float) and math.isinf(self.mass) and self.mass > 0):
+            object.__setattr__(self, "mass", positive("hand mass", self.mass, "kg"))
+
+
+GRIP_STIFFNESS = 2.5e5
+"""Stiffness [N/m] of every grip preset's springs between the handle and the hand's mass
+(calibrated with :data:`GRIP_MASSES`, see there)."""
+
+GRIP_MASSES = {"light": 0.13, "medium": 0.19, "tight": 1.0}
+"""Effective mass [kg] of the hand and forearm that each grip moves.  Calibrated (with
+:data:`GRIP_STIFFNESS`, one stiffness for all, by least squares, rounded) so that the first
+bending mode of a held racket falls from the free one by the fractions Savage measured
+(PhD thesis, RMIT 2006, appendix; ``../shared/data/measurements.md`` section 3): racket A,
+183.75 Hz free, 170.25 / 165.0 / about 145 Hz held lightly / medium / tightly (7.3, 10.2 and
+about 21 %); racket B, 162.5 Hz free, 149 / 146.25 / 142.5 Hz (8.3, 10.0 and 12.3 %).  The
+model frames are the Pure Drive's sheet tuned to those free frequencies (his rackets' mass
+and balance are not given).  The model gives 8.5 and 7.0 % (light), 10.9 and 9.3 %
+(medium), 18 and 16 % (tight): within 2 % of his fractions, and inside the span of his
+tight grips.  These numbers calibrate; they do not validate (a tighter grip engages more of
+the forearm: an interpretation, not a measurement)."""
+
+GRIP_DAMPING = 10.0
+"""Damping coefficient [N s/m] of every grip preset (an assumption: the order-of-magnitude
+default of the hand before it had a mass; Savage's damping is not in the data at hand)."""
+
+GRIPS = {name: Hand(GRIP_STIFFNESS, GRIP_DAMPING, 0.10, mass) for name, mass in GRIP_MASSES.items()}
+"""The grip presets, ``"light"``, ``"medium"`` (the default hand of a
+:class:`Racket`) and ``"tight"``: a hand of mass :data:`GRIP_MASSES` over a 10 cm grip."""
 
 
 @dataclass(frozen=True)
@@ -176,7 +211,7 @@ class Racket:
     beam: Beam
     strings: StringBed
     support: str = "free"
-    hand: Hand = Hand()
+    hand: Hand = GRIPS["medium"]
 
     def __post_init__(self):
         if not isinstance(self.beam, Beam):
@@ -226,6 +261,7 @@ class Racket:
     def point_dynamics(self, x, y=None):
         """The block system for impacts at points (``x`` [m from the tip], ``y`` [m from the
         long axis] or None) and the points' modal shapes: (system, phi (P, N), face) with
+        0 for a hand's coordinate (:attr:`racket.system.BlockSystem.hand_coordinate`), and
         ``face`` True when the roll and torsion modes take part (an offset given on a racket
         whose roll inertia is modelled), :attr:`face_system` then, else :attr:`system`.
         """
@@ -234,6 +270,8 @@ class Racket:
         system = self.face_system if face else self.system
         n = system.count
         phi = self.beam.modes.shape(x).T[:, : min(n, self.beam.modes.count)]
+        if system.hand_coordinate is not None:  # the hand's mass: no force on it
+            phi = np.hstack([phi, np.zeros((x.size, 1))])
         if face and n:
             phi = np.hstack([phi, self.beam.roll_modes.shape(x, y).T])
         return system, np.ascontiguousarray(phi), face

@@ -18,7 +18,7 @@ In both cases the state s (blocks, 2 values each) maps to z by ``basis``: z = ba
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import cached_property
 
 import numpy as np
@@ -50,6 +50,9 @@ class BlockSystem:
     rigid : tuple of int
         The modal coordinates of rigid-body modes (translation and rotation; the roll too
         in a :func:`face_system`): the impact point's dc velocity is theirs.
+    hand_coordinate : int or None
+        The coordinate of a hand with mass (:func:`held_system`), after the frame's bending
+        modes; None without one.  The frame's shapes are 0 there.
     """
 
     blocks: np.ndarray
@@ -59,6 +62,7 @@ class BlockSystem:
     stiffness: np.ndarray
     damping: np.ndarray
     rigid: tuple = (0, 1)
+    hand_coordinate: int | None = None
     _steps: dict = field(default_factory=dict, compare=False, repr=False)
 
     @property
@@ -242,14 +246,21 @@ def hand_matrices(modes: Modes, hand: Hand):
     return hand.stiffness * overlap, hand.damping * overlap
 
 
-def _held_blocks(omega, zeta, k_h, c_h, slow: float, rigid: tuple) -> BlockSystem:
-    """Modes ``omega`` [rad/s] with damping ratios ``zeta`` coupled by the hand's K_h and
-    C_h, in real blocks; blocks slower than ``slow`` [rad/s] are the dc motion.
+def _held_blocks(stiffness, damping, slow: float, rigid: tuple, null=None) -> BlockSystem:
+    """Coordinates of unit mass coupled by ``stiffness`` and ``damping`` (N, N), in real
+    blocks; blocks slower than ``slow`` [rad/s] are the dc motion.  ``null``, a unit vector
+    with stiffness @ null = damping @ null = 0 (a free motion of the whole: the racket and
+    the hand's mass translating together), is split off first as a block [[0, 1], [0, 0]]
+    (the eigenvectors of a free motion are defective; the rest are not).
     """
-    n = omega.size
-    stiffness = np.diag(omega**2) + k_h
-    damping = np.diag(2.0 * zeta * omega) + c_h
-    a = np.block([[np.zeros((n, n)), np.eye(n)], [-stiffness, -damping]])
+    n = stiffness.shape[0]
+    turn = np.eye(n)
+    if null is not None:  # an orthonormal basis whose first vector is the free motion
+        turn = np.linalg.qr(np.column_stack([null, np.eye(n)]))[0][:, :n]
+        turn[:, 0] = null
+    k_t, c_t = turn.T @ stiffness @ turn, turn.T @ damping @ turn
+    m = n - (null is not None)
+    a = np.block([[np.zeros((m, m)), np.eye(m)], [-k_t[n - m :, n - m :], -c_t[n - m :, n - m :]]])
     lam, vec = np.linalg.eig(a)
     scale = np.abs(lam).max()
     complex_ = lam.imag > 1e-10 * scale
@@ -265,7 +276,16 @@ def _held_blocks(omega, zeta, k_h, c_h, slow: float, rigid: tuple) -> BlockSyste
         blocks.append([[lam[i].real, 0.0], [0.0, lam[j].real]])
         columns += [vec[:, i].real, vec[:, j].real]
         freq.append(max(abs(lam[i]), abs(lam[j])))
-    blocks, basis, freq = np.array(blocks), np.column_stack(columns), np.array(freq)
+    reduced = np.column_stack(columns)
+    rows = np.r_[np.arange(n - m, n), n + np.arange(n - m, n)]
+    basis = np.zeros((2 * n, reduced.shape[1] + 2 * (n - m)))
+    basis[rows, 2 * (n - m) :] = reduced
+    if null is not None:
+        basis[0, 0] = basis[n, 1] = 1.0
+        blocks.insert(0, [[0.0, 1.0], [0.0, 0.0]])
+        freq.insert(0, 0.0)
+    basis = np.kron(np.eye(2), turn) @ basis
+    blocks, freq = np.array(blocks), np.array(freq)
     dc = freq < slow
     # A rotating block's output never exceeds |c| |s|; a pair of decaying exponentials
     # never exceeds |c0 s0| + |c1 s1| <= sqrt(2) |c| |s|.
@@ -278,6 +298,11 @@ def held_system(modes: Modes, hand: Hand) -> BlockSystem:
     racket rocking on the hand, slower than half the first bending mode, are its dc
     motion.
 
+    A hand of finite ``mass`` adds its own coordinate, last (its displacement times
+    sqrt(mass)): the grip's springs and dashpots join the handle to that mass, which is
+    otherwise free.  A hand of infinite mass is the grip held still (the springs and
+    dashpots join the handle to the ground).
+
     Parameters
     ----------
     modes : Modes
@@ -286,7 +311,45 @@ def held_system(modes: Modes, hand: Hand) -> BlockSystem:
         The hand holding the grip.
     """
     k_h, c_h = hand_matrices(modes, hand)
-    return _held_blocks(modes.omega, modes.damping, k_h, c_h, 0.5 * modes.omega[2], (0, 1))
+    stiffness = np.diag(modes.omega**2) + k_h
+    damping = np.diag(2.0 * modes.damping * modes.omega) + c_h
+    slow = 0.5 * modes.omega[2]
+    if np.isinf(hand.mass):
+        return _held_blocks(stiffness, damping, slow, (0, 1))
+    # The handle's mean displacement over the grip, per modal coordinate, and the hand's.
+    mean = _grip_overlap(lambda x: np.vstack([modes.shape(x), np.ones_like(x)]),
+                         modes.length, hand)[-1, :-1]  # fmt: skip
+    root = np.sqrt(hand.mass)
+    extra_k = np.r_[-hand.stiffness * mean / root, hand.stiffness / hand.mass]
+    extra_c = np.r_[-hand.damping * mean / root, hand.damping / hand.mass]
+    stiffness = np.block([[stiffness, extra_k[:-1, None]], [extra_k[None, :]]])
+    damping = np.block([[damping, extra_c[:-1, None]], [extra_c[None, :]]])
+    null = np.zeros(modes.count + 1)
+    null[0], null[-1] = np.sqrt(modes.mass), root  # racket and hand translating together
+    system = _held_blocks(stiffness, damping, slow, (0, 1), null / np.linalg.norm(null))
+    return replace(system, hand_coordinate=modes.count)
+
+
+def held_mode(system: BlockSystem, coordinate: int) -> tuple[float, float]:
+    """The held racket's mode that a free mode became: the vibration (not dc) block in which
+    modal ``coordinate`` (2 for the first bending mode) takes the largest part.
+
+    Parameters
+    ----------
+    system : BlockSystem
+        A :func:`held_system`.
+    coordinate : int
+        The free mode's modal coordinate.
+
+    Returns
+    -------
+    tuple of float
+        Frequency [Hz] and damping ratio [-] of that block's eigenvalue sigma +- i w.
+    """
+    share = np.hypot(system.basis[coordinate, 0::2], system.basis[coordinate, 1::2])
+    block = int(np.argmax(np.where(system.dc, -np.inf, share)))
+    root = complex(system.blocks[block, 0, 0], system.blocks[block, 0, 1])
+    return abs(root.imag) / (2.0 * np.pi), -root.real / abs(root)
 
 
 def held_roll_system(roll: RollModes, length: float, hand: Hand) -> BlockSystem:
@@ -306,9 +369,9 @@ def held_roll_system(roll: RollModes, length: float, hand: Hand) -> BlockSystem:
     """
     overlap = _grip_overlap(roll.twist, length, hand) * GRIP_RADIUS**2
     slow = 0.5 * roll.omega[1] if roll.count > 1 else np.inf
-    return _held_blocks(
-        roll.omega, roll.damping, hand.stiffness * overlap, hand.damping * overlap, slow, (0,)
-    )
+    stiffness = np.diag(roll.omega**2) + hand.stiffness * overlap
+    damping = np.diag(2.0 * roll.damping * roll.omega) + hand.damping * overlap
+    return _held_blocks(stiffness, damping, slow, (0,))
 
 
 def face_system(bending: BlockSystem, roll: BlockSystem) -> BlockSystem:
@@ -340,6 +403,7 @@ def face_system(bending: BlockSystem, roll: BlockSystem) -> BlockSystem:
         stiffness=block_diag(bending.stiffness, roll.stiffness),
         damping=block_diag(bending.damping, roll.damping),
         rigid=(*bending.rigid, *(nb + i for i in roll.rigid)),
+        hand_coordinate=bending.hand_coordinate,
     )
 
 

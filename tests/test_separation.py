@@ -17,7 +17,7 @@ from racket.system import held_system
 
 BALL = tennis_ball()
 POSITIONS = np.array([0.0, 0.02, 0.16, 0.30, 0.32])
-HELD = paper_racket("hand-held")
+HELD = replace(paper_racket("hand-held"), hand=Hand())  # the grip held still (issue 9)
 RACKETS = {
     "free": paper_racket(),
     "hand-held": HELD,
