@@ -68,7 +68,8 @@ def center_of_percussion(racket: Racket, pivot: float) -> float:
 def percussion_centre(racket: Racket, positions, v_cm, omega, pivot: float) -> float:
     """Centre of percussion [m from the tip] from simulated impacts: the impact point after
     which the pivot's dc (rigid-body) velocity v_cm + (x_cm - pivot) omega is zero,
-    interpolated linearly between ``positions``; NaN if it is not among them.
+    interpolated linearly between ``positions``; NaN if it is not among them, or if the
+    racket is clamped at the head (at rest after any impact: it has none).
 
     The velocity is taken over v_cm (> 0: the ball pushes the racket), which for a free
     racket is linear in the impact point, so that the interpolation is exact there and the
@@ -89,6 +90,8 @@ def percussion_centre(racket: Racket, positions, v_cm, omega, pivot: float) -> f
         The pivot, e.g. the hand [m from the tip].
     """
     pivot = finite("pivot", pivot, "m")
+    if racket.support == "clamped-head":  # v_cm = omega = 0: never 0/0
+        return float("nan")
     x = np.asarray(positions, dtype=float)
     dc = 1.0 + (racket.beam.center_of_mass - pivot) * np.asarray(omega) / np.asarray(v_cm)
     crossing = np.flatnonzero(np.sign(dc[:-1]) != np.sign(dc[1:]))

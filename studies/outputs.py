@@ -9,8 +9,10 @@ The renames of a run hold an exclusive lock on each target directory (``flock`` 
 directory itself; no lock file is created, and where ``fcntl`` is missing the lock is
 skipped), so that two runs writing the same files leave one run's files, never a mix.  The
 previous file of each target is kept (a hard link, or a copy) until every rename has
-succeeded, so that a failed rename puts back the files already replaced.  Ctrl-C during the
-renames is held back until they are done.
+succeeded, so that a failed rename puts back the files already replaced (one that cannot be
+put back is kept, and named in the error).  Ctrl-C, SIGTERM and SIGHUP during the renames
+are held back until they are done; inside :func:`stoppable`, SIGTERM and SIGHUP end a run as
+Ctrl-C does.
 """
 
 from __future__ import annotations
@@ -34,16 +36,41 @@ PREFIX = ".racket-impact-"
 """The start of every temporary file's name (short: a target's name may be the longest its
 directory allows)."""
 
+STOPS = tuple(
+    getattr(signal, name) for name in ("SIGINT", "SIGTERM", "SIGHUP") if hasattr(signal, name)
+)
+"""The signals that end a run (those the platform has): held back during the renames."""
+
 _OPEN = threading.local()  # each thread's transactions being built, innermost last
+
+
+class Stopped(KeyboardInterrupt):
+    """A run ended by SIGTERM or SIGHUP inside :func:`stoppable`: a KeyboardInterrupt, so
+    that its files are removed as on Ctrl-C.
+
+    Parameters
+    ----------
+    signum : int
+        The signal.
+    """
+
+    def __init__(self, signum: int):
+        super().__init__(signum)
+        self.signum = signum
 
 
 @functools.cache
 def _mode() -> int:
     """The permissions a new file gets under the process's umask (a temporary file is made
-    private; the output it becomes should not be).
+    private; the output it becomes should not be).  The umask is read where the system
+    shows it (Linux), not set and set back: another thread may create files meanwhile.
     """
-    umask = os.umask(0)
-    os.umask(umask)
+    try:
+        with open("/proc/self/status") as status:
+            umask = next(int(line.split()[1], 8) for line in status if line.startswith("Umask:"))
+    except (OSError, StopIteration, IndexError, ValueError):  # not Linux (or a kernel < 4.7)
+        umask = os.umask(0)
+        os.umask(umask)
     return 0o666 & ~umask
 
 
@@ -120,7 +147,8 @@ class Outputs:
 
     def commit(self) -> None:
         """Rename every output into place (the last write of a target wins), or, if one
-        rename fails, put back what was there and remove everything new.
+        rename fails, put back what was there and remove everything new (a previous file
+        that cannot be put back is kept under its second name, which the error names).
         """
         staged = dict(self._files)
         for target, temp in self._files:
@@ -131,7 +159,7 @@ class Outputs:
             self._made, self.committed = [], True
             return
         with _interrupts_held(), _locked({target.parent for target in staged}):
-            backups, placed = {}, []
+            backups, placed, kept = {}, [], {}
             try:
                 for target, temp in staged.items():
                     try:
@@ -140,18 +168,24 @@ class Outputs:
                     except OSError as err:
                         raise _naming(err, target) from None
                     placed.append(target)
-            except BaseException:
+            except BaseException as err:
                 for target in reversed(placed):
-                    with contextlib.suppress(OSError):
-                        if backups[target] is None:
+                    backup = backups[target]
+                    try:
+                        if backup is None:
                             os.unlink(target)
                         else:
-                            os.replace(backups[target], target)
+                            os.replace(backup, target)
+                    except OSError:
+                        if backup is not None:  # the previous file, under its second name
+                            kept[target] = backup
                 self.discard()
+                if kept:
+                    raise _keeping(err, kept) from None
                 raise
             finally:
                 for backup in backups.values():
-                    if backup is not None:
+                    if backup is not None and backup not in kept.values():
                         _remove(backup)
             self._files, self._made = [], []
             self.committed = True
@@ -166,9 +200,23 @@ class Outputs:
         self._files, self._made = [], []
 
 
+def _keeping(err: BaseException, kept: dict) -> OSError:
+    """``err`` (a failed rename) telling where the previous files that could not be put
+    back are kept (``kept``: each target -> its second name).
+    """
+    reason = err.strerror if isinstance(err, OSError) and err.strerror else str(err)
+    where = ", ".join(f"{target} as {backup}" for target, backup in kept.items())
+    return OSError(
+        getattr(err, "errno", None),
+        f"{reason}; the previous files could not be put back and are kept: {where}",
+        getattr(err, "filename", None),
+    )
+
+
 def _backup(target: Path) -> Path | None:
     """A second name in ``target``'s directory for the file ``target`` names now (None if
-    there is none): a hard link, or where links are not supported a copy.
+    there is none): a hard link, or where links are not supported a copy (removed again if
+    the copy fails).
     """
     if not os.path.lexists(target):
         return None
@@ -182,7 +230,11 @@ def _backup(target: Path) -> Path | None:
         except FileExistsError:
             continue
         except OSError:  # a file system without hard links
-            shutil.copy2(target, backup)
+            try:
+                shutil.copy2(target, backup)
+            except BaseException:
+                _remove(backup)
+                raise
         return backup
 
 
@@ -209,23 +261,59 @@ def _locked(directories):
             os.close(handle)  # releases its lock
 
 
+def _handling(handler, signals) -> dict:
+    """Set ``handler`` for each of ``signals``; returns what each had (for :func:`_restore`)."""
+    return {signum: signal.signal(signum, handler) for signum in signals}
+
+
+def _restore(previous: dict) -> None:
+    for signum, handler in previous.items():
+        if handler is None:  # set outside Python: its default
+            handler = signal.default_int_handler if signum == signal.SIGINT else signal.SIG_DFL
+        signal.signal(signum, handler)
+
+
 @contextlib.contextmanager
 def _interrupts_held():
-    """Hold Ctrl-C back until the block is done, then deliver it.  A handler that records
-    it, rather than a blocked signal mask: another thread (the solver's pool) would take a
-    signal this thread blocks, and Python would raise it here all the same.
+    """Hold Ctrl-C, SIGTERM and SIGHUP back until the block is done, then deliver them.  A
+    handler that records them, rather than a blocked signal mask: another thread (the
+    solver's pool) would take a signal this thread blocks, and Python would raise it here all
+    the same.  A signal ignored (``nohup``) stays ignored.
     """
     if threading.current_thread() is not threading.main_thread():
-        yield  # only the main thread ever sees KeyboardInterrupt
+        yield  # only the main thread runs Python's signal handlers
         return
     caught = []
-    previous = signal.signal(signal.SIGINT, lambda signum, frame: caught.append(signum))
+    live = [signum for signum in STOPS if signal.getsignal(signum) != signal.SIG_IGN]
+    previous = _handling(lambda signum, frame: caught.append(signum), live)
     try:
         yield
     finally:
-        signal.signal(signal.SIGINT, signal.default_int_handler if previous is None else previous)
-        if caught:
-            signal.raise_signal(signal.SIGINT)
+        _restore(previous)
+        for signum in dict.fromkeys(caught):
+            signal.raise_signal(signum)
+
+
+@contextlib.contextmanager
+def stoppable():
+    """Inside the block, SIGTERM and SIGHUP raise :class:`Stopped` (as Ctrl-C raises
+    KeyboardInterrupt), so that a run they end removes its files.  Only in the main thread,
+    and only for a signal whose handler is the system's default (one ignored, as under
+    ``nohup``, stays ignored).
+    """
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+
+    def stop(signum, frame):
+        raise Stopped(signum)
+
+    default = [s for s in STOPS if s != signal.SIGINT and signal.getsignal(s) == signal.SIG_DFL]
+    previous = _handling(stop, default)
+    try:
+        yield
+    finally:
+        _restore(previous)
 
 
 def _open() -> list:

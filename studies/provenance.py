@@ -25,6 +25,12 @@ SIDECAR_SUFFIX = ".meta.json"
 SIDECAR_LIMIT = 1_000_000
 """The largest sidecar ``rerun`` reads [bytes] (one is a few kB)."""
 
+NAME_LIMIT = 255
+"""The longest name of a recorded TOML file ``rerun`` takes [bytes] (file systems' limit)."""
+
+TEXT = "text (no NUL, no lone surrogate)"
+"""What every string of a sidecar's command and inputs must be."""
+
 _LIBRARIES = ("racket-impact", "numpy", "scipy", "pandas", "numba", "matplotlib")
 _INPUTS = ("racket", "ball", "a", "b")
 """The options that name rackets and balls (presets or TOML files)."""
@@ -155,8 +161,10 @@ def read_sidecar(path) -> dict:
     regular file of at most :data:`SIDECAR_LIMIT` bytes of UTF-8 JSON, made by
     racket-impact, with a command (a non-empty list of strings) and the inputs it named
     (each a list of entries whose ``given``, ``toml_file``, ``toml`` and ``preset`` are
-    strings, a ``toml_file`` with its ``toml`` text).  ValueError naming the file as given
-    and the first bad key otherwise.
+    strings, a ``toml_file`` with its ``toml`` text and a name of at most
+    :data:`NAME_LIMIT` bytes).  Every string of the command and the inputs is text a file
+    or a command line can hold: no NUL, no lone surrogate.  ValueError naming the file as
+    given and the first bad key otherwise.
 
     Parameters
     ----------
@@ -170,9 +178,10 @@ def read_sidecar(path) -> dict:
         raise ValueError(
             f"rerun needs a racket-impact sidecar (*{SIDECAR_SUFFIX}): {shown}: {err.strerror}"
         ) from None
+    if not stat.S_ISREG(os.fstat(handle).st_mode):  # a directory, a FIFO, a device
+        os.close(handle)
+        raise ValueError(f"rerun needs a racket-impact sidecar file: {shown} is not a file")
     with open(handle, "rb") as file:
-        if not stat.S_ISREG(os.fstat(handle).st_mode):
-            raise ValueError(f"rerun needs a racket-impact sidecar file: {shown} is not a file")
         data = file.read(SIDECAR_LIMIT + 1)
     if len(data) > SIDECAR_LIMIT:
         raise ValueError(f"{shown} is larger than a sidecar may be ({SIDECAR_LIMIT} bytes)")
@@ -193,6 +202,8 @@ def read_sidecar(path) -> dict:
         raise bad("command", "a non-empty list of strings")
     if not all(isinstance(word, str) for word in command):
         raise bad("command", "a list of strings")
+    if not all(_text(word) for word in command):
+        raise bad("command", f"a list of {TEXT}")
     for key, kind in (("options", dict), ("versions", dict), ("written_utc", str), ("table", str)):
         if key in record and not isinstance(record[key], kind):
             raise bad(key, f"a {'JSON object' if kind is dict else 'string'}")
@@ -211,12 +222,24 @@ def read_sidecar(path) -> dict:
             for key in ("given", "toml_file", "toml", "preset"):
                 if key in entry and not isinstance(entry[key], str):
                     raise bad(f"{where}.{key}", "a string")
+                if key in entry and not _text(entry[key]):
+                    raise bad(f"{where}.{key}", TEXT)
             if "toml_file" in entry:
                 if "toml" not in entry:
                     raise bad(f"{where}.toml", "the text of its toml_file")
-                if Path(entry["toml_file"]).name in ("", ".", ".."):
-                    raise bad(f"{where}.toml_file", "a file name")
+                name = Path(entry["toml_file"]).name
+                if name in ("", ".", "..") or len(name.encode()) > NAME_LIMIT:
+                    raise bad(f"{where}.toml_file", f"a file name of at most {NAME_LIMIT} bytes")
     return record
+
+
+def _text(value: str) -> bool:
+    """Whether ``value`` is :data:`TEXT`: UTF-8 encodable, without NUL."""
+    try:
+        value.encode()
+    except UnicodeEncodeError:
+        return False
+    return "\0" not in value
 
 
 def rerun_argv(sidecar, workdir) -> tuple[list[str], dict]:
@@ -245,7 +268,7 @@ def rerun_argv(sidecar, workdir) -> tuple[list[str], dict]:
                 continue
             copy = Path(workdir) / str(len(replaced)) / Path(name).name
             copy.parent.mkdir()
-            copy.write_text(entry["toml"])
+            copy.write_text(entry["toml"], encoding="utf-8")
             replaced[str(copy)] = name
     to_copies = {name: copy for copy, name in replaced.items()}
     argv = []

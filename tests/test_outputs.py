@@ -6,6 +6,7 @@ alone, into the table's own directory."""
 import errno
 import json
 import os
+import shutil
 import signal
 import subprocess
 import sys
@@ -73,6 +74,30 @@ def test_a_run_replaces_its_files_whole_and_leaves_no_temporary_file(folder, cap
     assert (folder / "p.png").read_bytes()[:4] == b"\x89PNG"
     for name in ("t.csv", "p.png"):  # readable as any new file (a temporary file is private)
         assert (folder / name).stat().st_mode & 0o777 == 0o666 & ~umask
+
+
+def _no_status(*args, **kwargs):
+    raise FileNotFoundError(errno.ENOENT, os.strerror(errno.ENOENT), "/proc/self/status")
+
+
+@pytest.mark.parametrize("shown", [True, False], ids=["/proc", "elsewhere"])
+def test_the_umask_is_read_not_set_where_the_system_shows_it(shown, tmp_path, monkeypatch):
+    """Setting the umask to 0 and back races with other threads creating files."""
+    if shown and not Path("/proc/self/status").exists():
+        pytest.skip("the system does not show the umask")
+    previous = os.umask(0o027)
+    try:
+        outputs._mode.cache_clear()
+        if shown:
+            monkeypatch.setattr(os, "umask", lambda mask: pytest.fail("the umask was set"))
+        else:
+            monkeypatch.setattr(outputs, "open", _no_status, raising=False)
+        outputs.write(tmp_path / "x.txt", lambda temp: Path(temp).write_text("x"))
+    finally:
+        monkeypatch.undo()
+        os.umask(previous)
+        outputs._mode.cache_clear()
+    assert (tmp_path / "x.txt").stat().st_mode & 0o777 == 0o640
 
 
 CHILD = """
@@ -173,6 +198,96 @@ def test_ctrl_c_before_the_run_is_one_line_too(capsys, monkeypatch):
     assert _one_line(capsys) == "racket-impact: interrupted; no file written"
 
 
+def test_ctrl_c_while_the_command_starts_is_one_line_too(capsys, monkeypatch):
+    """The console command catches Ctrl-C while studies.cli imports numpy, pandas and
+    matplotlib (about half a second), and starts without them."""
+    import builtins
+    from importlib.metadata import entry_points
+
+    from studies import entry
+
+    (script,) = entry_points(group="console_scripts", name="racket-impact")
+    assert script.value == "studies.entry:main"
+    code = "import sys, studies.entry; print({'numpy', 'pandas', 'matplotlib'} & set(sys.modules))"
+    light = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert light.stdout.strip() == "set()", light.stderr
+    load = builtins.__import__
+
+    def starting(name, *args, **kwargs):
+        if name == "studies.cli":
+            raise KeyboardInterrupt
+        return load(name, *args, **kwargs)
+
+    monkeypatch.setattr(builtins, "__import__", starting)
+    monkeypatch.setattr(sys, "argv", ["racket-impact", *BALL])
+    assert entry.main() == 130
+    assert _one_line(capsys) == "racket-impact: interrupted; no file written"
+
+
+STOP = """
+import os, signal, sys, time
+from pathlib import Path
+import pandas as pd
+from studies.cli import main
+
+signum, where = getattr(signal, sys.argv[1]), sys.argv[2]
+if where == "ignored":  # as under nohup
+    signal.signal(signum, signal.SIG_IGN)
+to_csv, replace = pd.DataFrame.to_csv, os.replace
+
+def torn(self, path, **kwargs):  # half a table written, then the signal
+    Path(path).write_text("speed_m_s,e\\n10,0.7")
+    os.kill(os.getpid(), signum)
+    time.sleep(0.5)
+    to_csv(self, path, **kwargs)
+
+def between(source, target):  # the signal between two renames
+    replace(source, target)
+    if str(target).endswith("t.csv"):
+        os.kill(os.getpid(), signum)
+
+if where == "renames":
+    os.replace = between
+else:
+    pd.DataFrame.to_csv = torn
+sys.exit(main(["ball", "--speeds", "10", "20", "--out", "t.csv", "--plot", "p.png"]))
+"""
+
+
+@pytest.mark.parametrize("name", ["SIGTERM", "SIGHUP"])
+@pytest.mark.parametrize("where", ["writing", "renames", "ignored"])
+def test_sigterm_and_sighup_end_a_run_as_ctrl_c_does(name, where, folder):
+    """While a table is written: nothing new (no hidden temporary file), one line, status
+    128 + the signal's number; between the renames: held back until every file is in place;
+    ignored (nohup): ignored."""
+    signum = getattr(signal, name)
+    before = _listing(folder)
+    run = subprocess.run(
+        [sys.executable, "-c", STOP, name, where],
+        cwd=folder,
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.PIPE,
+        text=True,
+        timeout=120,
+    )
+    if where == "writing":
+        assert (run.returncode, run.stderr) == (
+            128 + signum,
+            f"racket-impact ball: stopped by {name}; no file written\n",
+        )
+        assert _listing(folder) == before
+        return
+    if where == "renames":
+        assert (run.returncode, run.stderr) == (
+            128 + signum,
+            f"racket-impact ball: stopped by {name}; its files were all written\n",
+        )
+    else:
+        assert (run.returncode, run.stderr) == (0, "")
+    assert sorted(_listing(folder)) == ["p.png", "t.csv", "t.csv.meta.json"]
+    assert len(pd.read_csv(folder / "t.csv")) == 2
+
+
 def test_a_full_disk_at_the_second_output_leaves_nothing_new(folder, capsys, monkeypatch):
     from matplotlib.figure import Figure
 
@@ -236,6 +351,45 @@ def test_a_failed_rename_puts_back_the_files_already_replaced(folder, capsys, mo
     assert _listing(folder) == before
 
 
+def test_a_previous_file_that_cannot_be_put_back_is_kept_and_named(folder, capsys, monkeypatch):
+    (folder / "t.csv.meta.json").write_text("old sidecar\n")
+    replace, calls = os.replace, []
+
+    def failing(source, target):  # the sidecar's rename fails, then putting the table back
+        calls.append(target)
+        if len(calls) > 1:
+            raise OSError(errno.EIO, os.strerror(errno.EIO), source, None, target)
+        replace(source, target)
+
+    monkeypatch.setattr(os, "replace", failing)
+    assert main([*BALL, "--out", "t.csv"]) == 2
+    line = _one_line(capsys)
+    after = _listing(folder)
+    kept = [name for name, data in after.items() if data == b"old table\n"]
+    assert len(kept) == 1 and kept[0].startswith(outputs.PREFIX), after
+    assert f"could not be put back and are kept: t.csv as {kept[0]} (t.csv.meta.json)" in line
+    assert after["t.csv.meta.json"] == b"old sidecar\n" and len(after) == 3
+
+
+def test_a_backup_copy_that_fails_is_removed(folder, capsys, monkeypatch):
+    """Where hard links are not supported the previous file is copied; a copy cut short
+    (a full disk) leaves nothing."""
+
+    def no_links(source, target, **kwargs):
+        raise OSError(errno.EPERM, os.strerror(errno.EPERM), source, None, target)
+
+    def full(source, target, **kwargs):
+        Path(target).write_text("old")
+        raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC), str(target))
+
+    monkeypatch.setattr(os, "link", no_links)
+    monkeypatch.setattr(shutil, "copy2", full)
+    before = _listing(folder)
+    assert main([*BALL, "--out", "t.csv"]) == 2
+    assert _one_line(capsys) == f"racket-impact ball: error: {os.strerror(errno.ENOSPC)} (t.csv)"
+    assert _listing(folder) == before
+
+
 @pytest.mark.parametrize(
     "argv, made, message",
     [
@@ -249,18 +403,24 @@ def test_a_failed_rename_puts_back_the_files_already_replaced(folder, capsys, mo
         (["--out", "f.csv"], "f.csv.meta.json|", "--out's sidecar: 'f.csv.meta.json' exists"),
         (["--out", "LONGEST.csv"], "", "--out's sidecar: the name of 'xxx"),
         (["--out", "LONGEST+.csv"], "", "--out: the name of 'xxx"),
+        (["--out", "l.csv"], "l.csv@", "--out: 'l.csv' is a symbolic link; name the file"),
+        (["--out", "l.csv"], "l.csv.meta.json@", "--out's sidecar: 'l.csv.meta.json' is a symb"),
+        (["--plot", "p.png"], "p.png@", "--plot: 'p.png' is a symbolic link"),
     ],
 )
 def test_outputs_that_cannot_be_replaced_are_refused_up_front(argv, made, message, folder, capsys):
     """A directory, a FIFO (never opened: no reader would block the run forever), a name
     longer than the directory allows (LONGEST: a table's name just short enough, but not
-    its sidecar's)."""
+    its sidecar's), a symbolic link (the rename would replace the link, not the file it
+    names, which would stay as it was; the last one names no file yet)."""
     longest = "x" * (os.pathconf(folder, "PC_NAME_MAX") - len(".csv"))
     argv = [word.replace("LONGEST+", longest + "x").replace("LONGEST", longest) for word in argv]
     if made.endswith("/"):
         (folder / made[:-1]).mkdir()
     elif made.endswith("|"):
         os.mkfifo(folder / made[:-1])
+    elif made.endswith("@"):
+        os.symlink("t.csv" if made.endswith(".csv@") else "nowhere.png", folder / made[:-1])
     before = _listing(folder)
     assert _within(30, [*BALL, *argv]) == 2
     assert message in _one_line(capsys)
@@ -309,6 +469,24 @@ def test_a_failed_paper_run_removes_the_figures_directory_it_made(folder, capsys
     assert _listing(folder) == before
 
 
+def test_a_reader_that_goes_stops_nothing(tmp_path):
+    """``racket-impact modes --out m.csv | head -3``: the rest of the output is dropped, the
+    run's files are written, status 0, nothing on stderr (unbuffered: every print meets the
+    closed pipe)."""
+    read, write = os.pipe()
+    os.close(read)  # the reader has gone
+    try:
+        run = subprocess.run(
+            [sys.executable, "-u", "-c", "import studies.entry as e, sys; sys.exit(e.main())",
+             "modes", "--out", "m.csv"],
+            cwd=tmp_path, stdout=write, stderr=subprocess.PIPE, text=True, timeout=120,
+        )  # fmt: skip
+    finally:
+        os.close(write)
+    assert (run.returncode, run.stderr) == (0, "")
+    assert sorted(_listing(tmp_path)) == ["m.csv", "m.csv.meta.json"]
+
+
 def test_writing_outside_a_run_is_whole_too(tmp_path):
     outputs.write(tmp_path / "x.txt", lambda temp: Path(temp).write_text("whole"))
     with pytest.raises(ZeroDivisionError):
@@ -342,7 +520,9 @@ def test_rerun_writes_only_into_the_tables_directory(tmp_path, capsys, monkeypat
     after = _listing(tmp_path)
     assert after["sub/t.csv"].decode() == first
     record = json.loads(after["sub/t.csv.meta.json"])
-    assert record["command"] == argv  # the paths first given
+    # the TOML input as first given, the outputs where they went
+    assert record["command"] == [*argv[:-4], "--out", "sub/t.csv", "--plot", "sub/p.png"]
+    assert (record["options"]["out"], record["options"]["plot"]) == ("sub/t.csv", "sub/p.png")
     assert record["inputs"]["ball"][0]["toml_file"] == "b.toml"
     assert record["inputs"]["ball"][0]["toml"] == ball
 
@@ -367,6 +547,13 @@ def test_every_output_of_a_recorded_command_lands_in_the_tables_directory(
         "elsewhere", "sub", "sub/c.csv", "sub/c.csv.meta.json", "sub/h.csv",
         "sub/h.csv.meta.json", "sub/p.png",
     ]  # fmt: skip
+    for table in ("c.csv", "h.csv"):  # the new sidecars say where the files went
+        record = json.loads((tmp_path / "sub" / f"{table}.meta.json").read_text())
+        assert record["command"] == [
+            "collide", "--out", "sub/c.csv", "--history=sub/h.csv", "--plot", "sub/p.png"
+        ]  # fmt: skip
+        written = {k: record["options"][k] for k in ("out", "history", "plot")}
+        assert written == {"out": "sub/c.csv", "history": "sub/h.csv", "plot": "sub/p.png"}
 
 
 def test_every_command_is_replayable_or_refused_and_its_outputs_known():
@@ -430,6 +617,26 @@ EDITS = {
         _with_ball({"toml_file": "..", "toml": ""}),
         "inputs.ball[0].toml_file must be a file name",
     ),
+    "toml_file too long": (
+        _with_ball({"toml_file": "x" * 300 + ".toml", "toml": ""}),
+        "inputs.ball[0].toml_file must be a file name of at most 255 bytes",
+    ),
+    "toml_file with a NUL": (
+        _with_ball({"toml_file": "b\0.toml", "toml": ""}),
+        "inputs.ball[0].toml_file must be text (no NUL, no lone surrogate)",
+    ),
+    "toml_file with a lone surrogate": (
+        _with_ball({"toml_file": "b\ud800.toml", "toml": ""}),
+        "inputs.ball[0].toml_file must be text",
+    ),
+    "toml with a lone surrogate": (
+        _with_ball({"toml_file": "b.toml", "toml": "# \ud800"}),
+        "inputs.ball[0].toml must be text",
+    ),
+    "a NUL in the command": (
+        _with("command", ["ball", "--out", "t\0.csv"]),
+        "command must be a list of text (no NUL",
+    ),
     "options a list": (_with("options", []), "options must be a JSON object"),
     "a TOML file without its text": (
         lambda r: {**r, "command": ["ball", "mine.toml", "--out", "t.csv"]},
@@ -472,10 +679,16 @@ def test_an_edited_sidecar_gets_one_line_and_status_2(name, tmp_path, capsys, mo
     assert _listing(tmp_path) == before
 
 
-def test_a_sidecar_that_is_a_fifo_is_refused_without_blocking(tmp_path, capsys):
-    os.mkfifo(tmp_path / "t.csv.meta.json")
-    assert _within(30, ["rerun", str(tmp_path / "t.csv")]) == 2
-    assert "is not a file" in _one_line(capsys)
+@pytest.mark.parametrize("kind", ["FIFO", "directory"])
+def test_a_sidecar_that_is_not_a_file_is_refused_naming_it(kind, tmp_path, capsys, monkeypatch):
+    """A FIFO without blocking; a directory named as given, not by its handle's number."""
+    monkeypatch.chdir(tmp_path)
+    (os.mkfifo if kind == "FIFO" else os.mkdir)("t.csv.meta.json")
+    assert _within(30, ["rerun", "t.csv"]) == 2
+    assert _one_line(capsys) == (
+        "racket-impact rerun: error: rerun needs a racket-impact sidecar file: "
+        "'t.csv.meta.json' is not a file"
+    )
 
 
 def test_errors_of_a_replayed_run_name_the_recorded_file_not_its_copy(
