@@ -6,6 +6,9 @@ MPH = 0.44704
 LB = 4.4482216152605
 """One pound-force [N] (string tensions are quoted in lb)."""
 
+INCH = 0.0254
+"""One inch [m] (lengths are quoted in inches)."""
+
 IN2 = 0.00064516
 """One square inch [m^2] (head sizes are quoted in in^2)."""
 

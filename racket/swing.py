@@ -181,7 +181,7 @@ def equal_effort(swing: Swing, reference_swingweight: float, swingweight: float)
     --------
     >>> slower = equal_effort(Swing(30.0), 0.0320, 0.0330)
     >>> round(slower.head_speed, 3)
-    29.753
+    29.752
     """
     ratio = positive("reference_swingweight", reference_swingweight, "kg m^2") / positive(
         "swingweight", swingweight, "kg m^2"

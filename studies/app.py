@@ -42,7 +42,17 @@ def _controls():
         ui.input_numeric("balance_cm", "Balance [cm from the butt]", 33, min=30, max=37, step=0.1),
         ui.input_numeric("swingweight", "Swingweight [kg cm²]", 315, min=270, max=370, step=1),
         ui.input_numeric("head", "Head size [in²]", 100, min=85, max=120, step=1),
-        ui.input_numeric("f1", "Frame frequency f1 [Hz]", 150, min=100, max=200, step=1),
+        ui.input_radio_buttons(
+            "stiffness", "Frame stiffness given as", {"f1": "frequency f1", "ra": "RA"}
+        ),
+        ui.panel_conditional(
+            "input.stiffness === 'f1'",
+            ui.input_numeric("f1", "Frame frequency f1 [Hz]", 150, min=100, max=200, step=1),
+        ),
+        ui.panel_conditional(
+            "input.stiffness === 'ra'",
+            ui.input_numeric("ra", "RA (f1 from the TWU regression)", 66, min=50, max=80, step=1),
+        ),
     )
     return [
         racket,
@@ -103,7 +113,8 @@ def server(input, output, session):
             balance_cm=input.balance_cm() or 33.0,
             swingweight_kgcm2=input.swingweight() or 315.0,
             head_size_in2=input.head() or 100.0,
-            f1_hz=input.f1() or 150.0,
+            f1_hz=(input.f1() or 150.0) if input.stiffness() == "f1" else None,
+            ra=(input.ra() or 66.0) if input.stiffness() == "ra" else None,
             lead_g=input.lead_g(),
             lead_at=input.lead_at(),
             ball=input.ball(),
@@ -127,9 +138,12 @@ def server(input, output, session):
         s = r.summary
         racket = (
             f"{s['mass_g']:.0f} g, balance {s['balance_cm']:.1f} cm, swingweight "
-            f"{s['swingweight_kgcm2']:.0f}, twistweight {s['twistweight_kgcm2']:.1f}"
+            f"{s['swingweight_kgcm2']:.0f}, twistweight {s['twistweight_kgcm2']:.1f}, f1 "
+            f"{s['f1_hz']:.0f} Hz"
         )
         notes = [ui.div(f"Note: {w}", class_="text-warning small") for w in r.warnings]
+        if "f1_from_ra" in s:
+            notes.insert(0, ui.div(s["f1_from_ra"], class_="text-muted small"))
         return ui.div(
             ui.tags.b(racket),
             ui.br(),

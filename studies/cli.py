@@ -9,6 +9,7 @@ line naming the problem and exits with status 2.
 from __future__ import annotations
 
 import argparse
+import contextlib
 import json
 import os
 import re
@@ -23,7 +24,9 @@ from ball import BALL_PRESETS, DEFAULT_BALL, WALL, collide
 from beam.beam import MAX_MODES
 from common.checks import KN_AS_N, SPEED_RANGE, in_range, shown
 from common.units import GRAVITY, MPH
-from racket import SUPPORTS
+from racket import GRIPS, SUPPORTS
+from racket.specs.ra import f1_from_ra, ra_note
+from racket.specs.sheet import SPEC_RANGES
 from racket.swing import WRIST_BEYOND_BUTT
 from studies import outputs
 from studies.config import (
@@ -35,6 +38,7 @@ from studies.config import (
     load_racket,
     racket_specs,
 )
+from studies.entry import interrupted
 from studies.landmarks import HAND_FROM_BUTT
 from studies.maps import MAP_SPEED
 from studies.provenance import sidecar_path
@@ -89,8 +93,9 @@ TABLE_COMMANDS = (
 
 def check_outputs(tables=(), plots=(), directories=()) -> None:
     """Check every output path before any work: a known extension, an existing, writable
-    directory, a name the directory can hold, nothing there but a regular file (for a
-    table, its sidecar too), and no file named twice.  ValueError naming the path otherwise.
+    directory, a name the directory can hold, nothing there but a regular file, not a
+    symbolic link (for a table, its sidecar too), and no file named twice.  ValueError
+    naming the path otherwise.
     """
     seen = {}
     for paths, kinds, what in ((tables, TABLE_FORMATS, "table"), (plots, PLOT_FORMATS, "plot")):
@@ -123,7 +128,8 @@ def check_outputs(tables=(), plots=(), directories=()) -> None:
 
 def _check_file(flag: str, path: Path) -> None:
     """An output file that can be replaced: a name its directory can hold, and nothing there
-    yet but a writable regular file (not a directory, FIFO or device; never opened).
+    yet but a writable regular file (not a directory, FIFO or device; never opened), nor a
+    symbolic link (the rename would replace the link and leave the file it names stale).
     """
     try:
         longest = os.pathconf(path.parent, "PC_NAME_MAX")
@@ -134,6 +140,8 @@ def _check_file(flag: str, path: Path) -> None:
             f"{flag}: the name of {str(path)!r} is longer than its directory allows "
             f"({longest} bytes)"
         )
+    if path.is_symlink():
+        raise ValueError(f"{flag}: {str(path)!r} is a symbolic link; name the file it links to")
     if path.exists() and not path.is_file():
         raise ValueError(f"{flag}: {str(path)!r} exists and is not a regular file")
     if path.exists() and not os.access(path, os.W_OK):
@@ -336,9 +344,11 @@ def cmd_sweep(args) -> int:
         in_range("--string-stiffness", k_s, *STRING_STIFFNESS_RANGE, "N/m", slips=(KN_AS_N,))
     for f1 in args.f1 or ():
         in_range("--f1", f1, F1_MIN, F1_MAX, "Hz")
+    for ra in args.ra or ():
+        in_range("--ra", ra, *SPEC_RANGES["ra"][:2])
     grid = {f"--{name.replace('_', '-')}": getattr(args, name) or () for name in
             ("speed" if args.speed_mph is None else "speed_mph", "string_stiffness",
-             "tension_lb", "f1", "support")}  # fmt: skip
+             "tension_lb", "f1", "ra", "support")}  # fmt: skip
     sizes = [f"--points {points}"] + [f"{len(v)} {f} values" for f, v in grid.items() if len(v) > 1]
     check_impacts(points * int(np.prod([max(len(v), 1) for v in grid.values()])), " x ".join(sizes))
     swing = _swing(args)
@@ -348,6 +358,8 @@ def cmd_sweep(args) -> int:
         if value is not None:
             ends[k] = in_range(flag, value, *racket.strings.extent, "m from the tip (the strings)")
     _check_swing(args, swing, racket, ends)
+    for ra in args.ra or ():
+        print(ra_note(ra))
     table = sweep(
         racket,
         ball,
@@ -355,7 +367,7 @@ def cmd_sweep(args) -> int:
         speeds,
         string_stiffness=args.string_stiffness,
         tension=_tensions(args),
-        f1=args.f1,
+        f1=args.f1 or ([f1_from_ra(ra) for ra in args.ra] if args.ra else None),
         support=args.support,
         offset=args.offset,
         swing=swing,
@@ -609,8 +621,11 @@ def cmd_specs(args) -> int:
     specs, sources = racket_specs(args.racket)
     ball_name = default_ball(args.racket)
     report = spec_report(racket, specs, count=count, ball=load_ball(ball_name))
-    if specs is not None:
+    if specs is not None and specs.get("ra") is not None:
+        print(f"{ra_note(specs['ra'])}\nspec sheet and fitted model:")
+    elif specs is not None:
         print("spec sheet and fitted model (frame stiffness as given, not inferred from RA):")
+    if specs is not None:
         _print_table(report.fit, "{:.5g}")
         print("\nfitted parts and their plausible ranges:")
         _print_table(report.parts.drop(columns="source"), "{:.4g}")
@@ -622,7 +637,7 @@ def cmd_specs(args) -> int:
     print(
         "\nmodes: free-free, and held by the hand (stiffness "
         f"{racket.hand.stiffness:g} N/m, damping {racket.hand.damping:g} N s/m over "
-        f"{100 * racket.hand.grip_length:g} cm)"
+        f"{100 * racket.hand.grip_length:g} cm, to a hand of {racket.hand.mass:g} kg)"
     )
     _print_table(report.modes, "{:.4g}")
     print(f"\nsweet spots (ball {ball_name} at {MAP_SPEED:g} m/s on the racket at rest):")
@@ -667,7 +682,7 @@ def cmd_rerun(args) -> int:
 
     from studies.provenance import _restored, rerun_argv, temporary_directory
 
-    folder = Path(args.sidecar).parent
+    folder, moved = Path(args.sidecar).parent, {}
     with temporary_directory() as workdir:
         argv, originals = rerun_argv(args.sidecar, workdir)
         if argv[0] not in TABLE_COMMANDS:
@@ -684,12 +699,14 @@ def cmd_rerun(args) -> int:
                 continue
             if Path(value).name in ("", ".", ".."):
                 raise ValueError(f"the sidecar's command: --{dest} {value!r} names no file")
-            setattr(replay, dest, str(folder / Path(value).name))
+            moved[value] = str(folder / Path(value).name)
+            setattr(replay, dest, moved[value])
         replay.debug = args.debug
         shown = shlex.join(_restored(word, originals) for word in argv)
         into = "" if folder == Path(".") else f"  (files written into {folder}/)"
         print(f"racket-impact {shown}{into}")  # stdout: stderr is for one line of trouble
-        return _start(replay, argv, originals)
+        # the new sidecars record where the files went
+        return _start(replay, [_restored(word, moved) for word in argv], originals)
 
 
 def cmd_feel(args) -> int:
@@ -700,6 +717,8 @@ def cmd_feel(args) -> int:
     from dataclasses import replace
 
     racket = replace(load_racket(args.racket), support=args.support)  # always given (default)
+    if args.grip:
+        racket = replace(racket, hand=GRIPS[args.grip])
     position = racket.strings.center if args.position is None else args.position
     in_range("--position", position, *racket.strings.extent, "m from the tip")
     duration = in_range("--duration-ms", args.duration_ms, 5.0, 1000.0, "ms") / 1e3
@@ -841,7 +860,6 @@ def _tension(value_lb: float) -> float:
     N.
     """
     from common.units import LB
-    from racket.specs.sheet import SPEC_RANGES
 
     low, high, unit = SPEC_RANGES["tension_lb"]
     return in_range("--tension-lb", value_lb, low, high, unit) * LB
@@ -1038,12 +1056,20 @@ def build_parser(parser_class=_Parser) -> argparse.ArgumentParser:
         metavar="N_M",
         help="string-bed stiffness(es) [N/m] (default: the racket's)",
     )
-    p.add_argument(
+    stiffness = p.add_mutually_exclusive_group()
+    stiffness.add_argument(
         "--f1",
         type=float,
         nargs="+",
         metavar="HZ",
         help="frame's first bending frequency(ies) [Hz] (default: the racket's)",
+    )
+    stiffness.add_argument(
+        "--ra",
+        type=float,
+        nargs="+",
+        metavar="RA",
+        help="or RA rating(s), f1 from the TWU regression (racket.specs.ra; +/- 6 Hz)",
     )
     p.add_argument(
         "--support",
@@ -1177,6 +1203,8 @@ def build_parser(parser_class=_Parser) -> argparse.ArgumentParser:
                    "the long axis [m, + towards 3 o'clock]")  # fmt: skip
     p.add_argument("--support", choices=["free", "hand-held"], default="hand-held",
                    help="support (default hand-held)")  # fmt: skip
+    p.add_argument("--grip", choices=list(GRIPS), help="how the hand holds it (default: the "
+                   "racket's hand, the medium grip unless its file says otherwise)")  # fmt: skip
     p.add_argument("--duration-ms", type=float, default=50.0, metavar="MS",
                    help="how long to follow the racket (default 50 ms)")  # fmt: skip
     p.add_argument("--out", metavar="FILE", help="histories: .csv, .json or .parquet")
@@ -1230,22 +1258,79 @@ def build_parser(parser_class=_Parser) -> argparse.ArgumentParser:
     return parser
 
 
+class _Stdout:
+    """``sys.stdout`` while the command line runs: when its reader has gone (``| head``),
+    the rest of the output goes to ``os.devnull``, as Python's documentation advises for
+    SIGPIPE, and the run goes on to write its files.
+
+    Parameters
+    ----------
+    stream : file
+        The standard output.
+    """
+
+    def __init__(self, stream):
+        self._stream = stream
+
+    def write(self, text: str) -> int:
+        """Write ``text``, or nothing once the reader has gone; returns its length."""
+        try:
+            return self._stream.write(text)
+        except BrokenPipeError:
+            self._gone()
+            return len(text)
+
+    def flush(self) -> None:
+        """Flush, or nothing once the reader has gone."""
+        try:
+            self._stream.flush()
+        except BrokenPipeError:
+            self._gone()
+
+    def _gone(self) -> None:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, self._stream.fileno())  # what is still buffered goes there too
+        os.close(devnull)
+
+    def __getattr__(self, name):
+        return getattr(self._stream, name)
+
+
+@contextlib.contextmanager
+def _reader_may_go():
+    """Inside the block, ``sys.stdout`` is a :class:`_Stdout`, flushed at its end (a reader
+    gone shows there, not as Python exits).
+    """
+    stream = sys.stdout
+    if stream is None:  # no standard output at all (``>&-``): print writes nothing
+        yield
+        return
+    sys.stdout = _Stdout(stream)
+    try:
+        yield
+    finally:
+        sys.stdout.flush()
+        sys.stdout = stream
+
+
 def main(argv=None) -> int:
     """Run the CLI; returns the exit status: 0, 1 if ``paper`` finds a claim out of
-    tolerance or on an internal error, 2 for bad input, 130 when interrupted (Ctrl-C): one
-    line on stderr each.  Every file a run writes is put in place only when it succeeds
-    (:mod:`studies.outputs`).
+    tolerance or on an internal error, 2 for bad input, 130 when interrupted (Ctrl-C), 143
+    or 129 when stopped by SIGTERM or SIGHUP: one line on stderr each.  Every file a run
+    writes is put in place only when it succeeds (:mod:`studies.outputs`).  A reader of the
+    output that goes (``racket-impact modes | head -3``) stops nothing.
     """
     argv = sys.argv[1:] if argv is None else list(argv)
     words = [a for a in argv if a != "--debug"]
-    try:
-        args = build_parser().parse_args(words)
-        args.debug = len(words) < len(argv)  # before or after the subcommand
-        return _start(args, words)
-    except KeyboardInterrupt:  # before the run (a run reports its own)
-        if "--debug" in argv:
-            raise
-        return _interrupted("racket-impact", written=False)
+    with _reader_may_go():
+        try:
+            args = build_parser().parse_args(words)
+            args.debug = len(words) < len(argv)  # before or after the subcommand
+            return _start(args, words)
+        except KeyboardInterrupt as err:  # before the run (a run reports its own)
+            if "--debug" in argv:
+                raise
+            return interrupted("racket-impact", err, written=False)
 
 
 def _start(args, words: list[str], originals: dict | None = None) -> int:
@@ -1268,16 +1353,10 @@ def _start(args, words: list[str], originals: dict | None = None) -> int:
         _RUN.update(outer)
 
 
-def _interrupted(prefix: str, written: bool) -> int:
-    """Ctrl-C: one line, and the shell's status for it (128 + SIGINT)."""
-    done = "its files were all written" if written else "no file written"
-    print(f"{prefix}: interrupted; {done}", file=sys.stderr)
-    return 130
-
-
 def _run(args, prefix: str) -> int:
     """Run the parsed command, its files put in place together when it returns: warnings
-    one line each, bad input status 2 (one line), Ctrl-C status 130 (one line).
+    one line each, bad input status 2 (one line), Ctrl-C status 130 and SIGTERM or SIGHUP
+    128 + its number (one line; its files removed, as :func:`studies.outputs.stoppable`).
     """
     kinds = set()
 
@@ -1287,17 +1366,17 @@ def _run(args, prefix: str) -> int:
             kinds.add(kind)
             print(f"{prefix}: warning: {message}", file=sys.stderr)
 
-    with warnings.catch_warnings():
+    with warnings.catch_warnings(), outputs.stoppable():
         warnings.showwarning = one_line
         files = None
         try:
             with outputs.transaction() as files:
                 status = args.func(args)
             return status
-        except KeyboardInterrupt:
+        except KeyboardInterrupt as err:  # Stopped too: SIGTERM, SIGHUP
             if args.debug:
                 raise
-            return _interrupted(prefix, written=files is not None and files.committed)
+            return interrupted(prefix, err, written=files is not None and files.committed)
         except (ValueError, OSError) as err:
             if args.debug:
                 raise

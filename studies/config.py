@@ -26,8 +26,8 @@ keys are errors)::
     mass_kg = 0.321
     balance_cm = 33.0           # or balance_pts_hl (1 pt = 1/8 in head-light)
     swingweight_kgcm2 = 325
-    f1_hz = 150                 # or flex_deflection_mm with flex_load_n (ra is refused
-                                # until the RA scale is calibrated)
+    f1_hz = 150                 # or ra = 66 (f1 from the TWU regression, racket.specs.ra),
+                                # or flex_deflection_mm with flex_load_n
     head_size_cm2 = 645         # or head_size_in2
     tension_lb = 55             # or tension_n, or string_stiffness_n_m
     beam_width_mm = [23, 26, 22]  # optional: tip, sides, throat (or one width)
@@ -39,10 +39,11 @@ keys are errors)::
     extent = [0.0, 0.32]        # m from the tip
     profile = "membrane"        # or "uniform": stiffness over the face
 
-    [racket.hand]               # the hand of a hand-held racket (racket.Hand)
-    stiffness = 1e4             # N/m
-    damping = 10.0              # N s/m
-    grip_length = 0.10          # m from the butt
+    [racket.hand]               # the hand of a hand-held racket (racket.Hand): a preset,
+    grip = "medium"             # "light", "medium" (the default) or "tight" (racket.GRIPS),
+                                # or your own (no mass: the grip held still):
+                                # stiffness = 1e4 (N/m), damping = 10.0 (N s/m),
+                                # grip_length = 0.10 (m from the butt), mass = 0.2 (kg)
 
     [ball]
     preset = "itf-type-2"       # a real ball (ball.catalog), "tennis" (the paper's), ...
@@ -80,6 +81,7 @@ from beam import Beam
 from common.checks import CM_AS_M, GRAMS_AS_KG, KN_AS_N, in_range, positive, shown
 from racket import (
     CATALOG,
+    GRIPS,
     TENNIS_BALL_MASS,
     TENNIS_BALL_RADIUS,
     Hand,
@@ -206,7 +208,7 @@ _SPEC_KEYS = {
     "torsion_hz",
 }
 _LEAD_KEYS = {"mass_g", "from_butt_cm", "at"}
-_HAND_KEYS = {"stiffness", "damping", "grip_length"}
+_HAND_KEYS = {"grip", "stiffness", "damping", "grip_length", "mass"}
 _BALL_KEYS = {"preset", "mass", "radius", "law", "calibrated_to"} | {
     p for _, params in LAWS.values() for p in params
 }
@@ -340,7 +342,13 @@ def racket_from_table(table: dict) -> Racket:
     )
     hand_table = table.get("hand", {})
     _check_keys(hand_table, _HAND_KEYS, "racket.hand")
-    racket = Racket(beam, strings, table.get("support", base.support), Hand(**hand_table))
+    if "grip" in hand_table and len(hand_table) > 1:
+        raise ValueError("[racket.hand] takes a grip preset or its own values, not both")
+    grip = hand_table.get("grip")
+    if grip is not None and (not isinstance(grip, str) or grip not in GRIPS):
+        raise ValueError(f"unknown grip {grip!r}; grips: {', '.join(GRIPS)}")
+    hand = GRIPS[grip] if grip else Hand(**hand_table) if hand_table else base.hand
+    racket = Racket(beam, strings, table.get("support", base.support), hand)
     for tape in _list(table, "lead_tape", "racket"):
         racket = _with_lead_tape(racket, tape)
     return racket

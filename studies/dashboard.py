@@ -15,6 +15,7 @@ from ball import DEFAULT_BALL
 from common.checks import SPEED_RANGE, in_range, non_negative
 from common.units import LB, MPH
 from racket import CATALOG, Swing, from_specs, impact
+from racket.specs.ra import ra_note
 from racket.specs.sheet import SPEC_RANGES
 from racket.specs.strings import with_tension
 from racket.swing import PIVOT_RANGE
@@ -36,8 +37,11 @@ class PageInputs:
     ----------
     racket : str
         A catalogue name (:data:`racket.CATALOG`) or :data:`MY_SHEET`.
-    mass_g, balance_cm, swingweight_kgcm2, head_size_in2, f1_hz : float
-        The spec sheet used with :data:`MY_SHEET` [g, cm from the butt, kg cm^2, in^2, Hz].
+    mass_g, balance_cm, swingweight_kgcm2, head_size_in2 : float
+        The spec sheet used with :data:`MY_SHEET` [g, cm from the butt, kg cm^2, in^2].
+    f1_hz, ra : float or None
+        Its frame stiffness, one of the two (the other None): the first free frequency [Hz],
+        or the RA rating [-] (f1 from it by :func:`racket.specs.ra.f1_from_ra`).
     lead_g : float
         Lead tape per side [g] (0 for none).
     lead_at : str
@@ -59,7 +63,8 @@ class PageInputs:
     balance_cm: float = 33.0
     swingweight_kgcm2: float = 315.0
     head_size_in2: float = 100.0
-    f1_hz: float = 150.0
+    f1_hz: float | None = 150.0
+    ra: float | None = None
     lead_g: float = 0.0
     lead_at: str = "3 and 9"
     ball: str = DEFAULT_BALL
@@ -87,7 +92,8 @@ class PageResults:
     serve : DataFrame
         The serve at the centre and 5 cm towards the tip (:func:`studies.serve.serve_table`).
     summary : dict
-        The page's headline numbers (g, cm, kg cm^2, e_A, cm^2, mph).
+        The page's headline numbers (g, cm, kg cm^2, Hz, e_A, cm^2, mph); with an RA rating,
+        ``f1_from_ra`` says which f1 it gave and how uncertain (:func:`racket.specs.ra.ra_note`).
     warnings : tuple of str
         The simulation's warnings, one of each.
     """
@@ -118,6 +124,7 @@ def page_racket(inputs: PageInputs):
             swingweight_kgcm2=inputs.swingweight_kgcm2,
             head_size_in2=inputs.head_size_in2,
             f1_hz=inputs.f1_hz,
+            ra=inputs.ra,
             tension_lb=inputs.tension_lb,
         )
     elif inputs.racket in CATALOG:
@@ -197,6 +204,7 @@ def _page_results(inputs: PageInputs, points: int) -> PageResults:
         "balance_cm": 100 * racket.beam.balance,
         "swingweight_kgcm2": racket.beam.swingweight_kgcm2,
         "twistweight_kgcm2": racket.beam.twistweight_kgcm2,
+        "f1_hz": float(racket.beam.modes.frequencies[0]),
         "e_A_centre": face.e_A_centre,
         "e_A_3_oclock": face.e_A_side,
         "largest_e_A": float(along["e_A"].iloc[best]),
@@ -205,4 +213,6 @@ def _page_results(inputs: PageInputs, points: int) -> PageResults:
         "serve_centre_mph": float(serve["serve_simulated_mph"].iloc[0]),
         "serve_tipward_mph": float(serve["serve_simulated_mph"].iloc[1]),
     }
+    if inputs.racket == MY_SHEET and inputs.ra is not None:
+        summary["f1_from_ra"] = ra_note(inputs.ra)
     return PageResults(racket, along, face, spots, serve, summary)

@@ -16,7 +16,8 @@ from ball import BALL_PRESETS, DEFAULT_BALL, Ball
 from beam import Beam
 from racket import Racket, flex_test_stiffness
 from racket.specs import Profile, SpecSheet, fit_profile, spec_sheet
-from racket.system import held_system
+from racket.specs.ra import RA_ROWS, RA_SCATTER, f1_from_ra
+from racket.system import held_mode, held_system
 from studies.landmarks import sweet_spots
 
 
@@ -29,7 +30,8 @@ class SpecReport:
     Parameters
     ----------
     fit : DataFrame
-        The spec sheet against the fitted model (empty without a spec sheet).
+        The spec sheet against the fitted model (empty without a spec sheet); an RA rating
+        appears as the f1 it gives (:func:`racket.specs.ra.f1_from_ra`) with the scatter.
     properties : DataFrame
         Mass properties, centre of percussion, string bed and flex-test stiffness.
     modes : DataFrame
@@ -68,6 +70,15 @@ def _fit_table(sheet: SpecSheet, beam: Beam, throat: float) -> pd.DataFrame:
         rows.append(("twistweight", 1e4 * sheet.twistweight, beam.twistweight_kgcm2, "kg cm^2"))
     if sheet.f1 is not None:
         rows.append(("f1 (free-free)", sheet.f1, beam.modes.frequencies[0], "Hz"))
+    elif sheet.ra is not None:
+        rows.append(
+            (
+                f"f1 from RA {sheet.ra:g}",
+                f1_from_ra(sheet.ra),
+                beam.modes.frequencies[0],
+                f"Hz (+/- {RA_SCATTER:.1f}, TWU regression of {RA_ROWS} rackets)",
+            )
+        )
     else:
         deflection, load = sheet.flex
         rows.append(
@@ -138,7 +149,6 @@ def _modes(racket: Racket, count: int) -> pd.DataFrame:
     held = held_system(modes, racket.hand)
     lam = held.blocks[:, 0, 0] + 1j * held.blocks[:, 0, 1]
     order = np.argsort(np.abs(lam))
-    bending = order[~held.dc[order]]
     rows = []
     for k in range(1, min(count, modes.count - 2) + 1):
         row = {
@@ -149,12 +159,11 @@ def _modes(racket: Racket, count: int) -> pd.DataFrame:
             ),
             "nodes_cm_from_tip": ", ".join(f"{100 * n:.1f}" for n in modes.nodes(k)),
         }
-        if k <= bending.size:
-            root = lam[bending[k - 1]]
-            row["hand_held_Hz"] = abs(root.imag) / (2 * np.pi)
-            row["hand_held_damping_ratio"] = -root.real / abs(root)
+        row["hand_held_Hz"], row["hand_held_damping_ratio"] = held_mode(held, k + 1)
         rows.append(row)
-    for i, j in enumerate(order[held.dc[order]]):
+    free = np.all(held.blocks == [[0.0, 1.0], [0.0, 0.0]], axis=(1, 2))  # racket and hand
+    rocking = [j for j in order[held.dc[order]] if not free[j]]
+    for i, j in enumerate(rocking):
         root = lam[j]
         rows.append(
             {

@@ -12,7 +12,7 @@ from racket import Hand, impact, paper_racket, tennis_ball
 from studies.cli import main
 
 NUMERIC_FLAGS = {
-    "sweep": ["--speed", "--speed-mph", "--string-stiffness", "--f1"],
+    "sweep": ["--speed", "--speed-mph", "--string-stiffness", "--f1", "--ra"],
     "compare": ["--speed", "--speed-mph"],
     "serve": ["--racket-speed", "--racket-speed-mph"],
 }
@@ -77,7 +77,8 @@ TOML = {
         '[racket]\nlead_tape = [{mass_g = 3, at = "12", from_butt_cm = 60}]\n',
         "needs mass_g and one of from_butt_cm or at",
     ),
-    "hand_key": ("[racket.hand]\ngrip = 0.1\n", "unknown key 'grip' in [racket.hand]"),
+    "hand_key": ("[racket.hand]\ngrip_force = 0.1\n", "unknown key 'grip_force' in [racket.hand]"),
+    "hand_grip": ("[racket.hand]\ngrip = 0.1\n", "unknown grip 0.1; grips: light, medium, tight"),
     "hand_negative": ("[racket.hand]\nstiffness = -1\n", "hand stiffness must be > 0"),
     "support": ('[racket]\nsupport = "glued"\n', "support must be one of"),
     "extent_number": ("[racket.strings]\nextent = 5\n", "racket"),
@@ -114,9 +115,14 @@ TOML = {
         "unknown key 'balance' in [racket.specs]",
     ),
     "specs_ra": (
-        "[racket.specs]\nmass_kg = 0.32\nbalance_cm = 33\nra = 66\nswingweight_kgcm2 = 320\n"
+        "[racket.specs]\nmass_kg = 0.32\nbalance_cm = 33\nra = 95\nswingweight_kgcm2 = 320\n"
         "head_size_in2 = 100\ntension_lb = 55\n",
-        "RA scale has no public calibration",
+        "ra must be in [40, 90], got 95",
+    ),
+    "specs_ra_and_f1": (
+        "[racket.specs]\nmass_kg = 0.32\nbalance_cm = 33\nra = 66\nf1_hz = 150\n"
+        "swingweight_kgcm2 = 320\nhead_size_in2 = 100\ntension_lb = 55\n",
+        "give exactly one frame stiffness: f1_hz or ra or flex_deflection_mm (got f1_hz, ra)",
     ),
     "specs_sw": (
         "[racket.specs]\nmass_kg = 0.32\nbalance_cm = 33\nswingweight_kgcm2 = 420\n"
@@ -159,6 +165,7 @@ CASES += [
     (["collide", "--a", "wall"], "unknown ball preset 'wall'"),
     (["sweep", "--support", "glued"], "invalid choice: 'glued'"),
     (["sweep", "--speed"], "expected at least one argument"),
+    (["sweep", "--f1", "150", "--ra", "66", *POINTS], "--ra: not allowed with argument --f1"),
     (["paper", "--bogus"], "unrecognized arguments"),
     # Outputs: checked before any work, nothing written.
     (["sweep", "--out", "t.xlsx", *POINTS], "--out must be a table file ending in"),

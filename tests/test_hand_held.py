@@ -131,7 +131,8 @@ def test_grip_presets_lower_the_first_mode_as_savage_measured(free_hz, light, me
     """Savage (RMIT 2006): racket A 183.75 Hz free, 170.25 / 165.0 / about 145 Hz held
     lightly / medium / tightly; racket B 162.5 Hz, 149 / 146.25 / 142.5 Hz.  The presets are
     calibrated to these fractions (so this checks the calibration, it does not validate)."""
-    racket = from_specs(**{**CATALOG["pure-drive-2021"].specs, "f1_hz": free_hz})
+    sheet = {k: v for k, v in CATALOG["pure-drive-2021"].specs.items() if k != "ra"}
+    racket = from_specs(**sheet, f1_hz=free_hz)
     modes = racket.beam.modes
     assert modes.frequencies[0] == pytest.approx(free_hz, rel=1e-9)
     drop = {g: 100 * (1 - held_mode(held_system(modes, GRIPS[g]), 2)[0] / free_hz) for g in GRIPS}
@@ -159,3 +160,21 @@ def test_a_hand_mass_must_be_positive():
     with pytest.raises(ValueError, match="hand mass must be > 0"):
         Hand(mass=0.0)
     assert Hand().mass == float("inf")  # Hand(stiffness, damping, ...) as before
+
+
+def test_grips_in_toml_and_on_the_command_line(tmp_path, capsys):
+    from studies.cli import main
+    from studies.config import load_racket
+
+    toml = tmp_path / "r.toml"
+    for hand, expected in (("", GRIPS["medium"]), ('grip = "tight"\n', GRIPS["tight"]),
+                           ("stiffness = 2e4\ndamping = 5.0\n", Hand(2e4, 5.0))):  # fmt: skip
+        toml.write_text(f'[racket]\npreset = "pure-drive-2021"\n[racket.hand]\n{hand}')
+        assert load_racket(str(toml)).hand == expected
+    toml.write_text('[racket]\npreset = "pure-drive-2021"\n[racket.hand]\ngrip = "firm"\n')
+    assert main(["feel", "--racket", str(toml)]) == 2
+    assert "unknown grip 'firm'; grips: light, medium, tight" in capsys.readouterr().err
+    toml.write_text('[racket]\npreset = "paper"\n[racket.hand]\ngrip = "tight"\nmass = 1.0\n')
+    assert main(["feel", "--racket", str(toml)]) == 2
+    assert "not both" in capsys.readouterr().err
+    assert main(["feel", "--grip", "light", "--duration-ms", "20"]) == 0

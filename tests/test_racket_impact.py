@@ -66,7 +66,7 @@ def test_energy_budget_closes_without_damping():
 
 
 def test_default_is_within_2e5_of_a_64_mode_fine_step_solution_everywhere():
-    # The default (8 modes with the static correction, 300 steps per contact) against 64
+    # The default (12 modes with the static correction, 300 steps per contact) against 64
     # modes and 16x the steps, at every point of the paper racket's strings, free and held.
     x = np.linspace(0.0, 0.32, 65)
     for support in ("free", "hand-held"):

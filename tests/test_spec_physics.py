@@ -6,7 +6,8 @@ import pytest
 
 from racket import CATALOG, from_specs, impact, tennis_ball
 
-SHEET = CATALOG["pure-drive-2021"].specs  # 321 g, 33 cm, 325 kg cm^2, 645 cm^2
+# 321 g, 33 cm, 325 kg cm^2, 645 cm^2; the frame's stiffness given as f1 below
+SHEET = {k: v for k, v in CATALOG["pure-drive-2021"].specs.items() if k != "ra"}
 BALL = tennis_ball()
 
 

@@ -131,14 +131,6 @@ def test_missing_or_doubled_specs(specs, match):
         from_specs(**specs)
 
 
-def test_ra_is_refused_with_the_reason():
-    specs = dict(mass_kg=0.32, balance_cm=33, swingweight_kgcm2=320, head_size_in2=100)
-    with pytest.raises(
-        ValueError, match=r"RA scale has no public calibration.*give f1_hz.*flex_deflection_mm"
-    ):
-        from_specs(ra=66, tension_lb=55, **specs)
-
-
 def test_membrane_model_calibration_and_trends():
     assert string_bed_stiffness(245.0, 100 * IN2) == pytest.approx(3e4, rel=1e-12)
     small, large = string_bed_stiffness(245.0, 90 * IN2), string_bed_stiffness(245.0, 115 * IN2)

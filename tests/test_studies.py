@@ -3,6 +3,7 @@
 import numpy as np
 import pytest
 
+from beam.beam import DEFAULT_MODES
 from racket import impact, paper_racket, tennis_ball
 from studies.paper import paper_table
 from studies.serve import serve_table, serve_what_if
@@ -85,7 +86,7 @@ def test_sweep_on_a_process_pool_matches_the_serial_sweep(monkeypatch):
     monkeypatch.setattr(config, "NUMBA_NUM_THREADS", 2)  # threads even on a one-core runner
 
     racket = paper_racket()
-    assert racket.beam.modes.count == 10  # computed modes travel with the racket
+    assert racket.beam.modes.count == 2 + DEFAULT_MODES  # computed modes travel with the racket
     assert pickle.loads(pickle.dumps(racket)).beam.modes.frequencies[0] == pytest.approx(120.0)
     # 40 points: the serial sweep runs the kernel on threads before the pool forks.
     x = np.linspace(0.0, 0.32, 40)

@@ -7,6 +7,8 @@ fitting in ``ivtools``).
 * :mod:`~racket.specs.mass_fit`: the part masses that meet the sheet (constrained least
   squares);
 * :mod:`~racket.specs.stiffness`: the bending-stiffness profile and the flex test;
+* :mod:`~racket.specs.ra`: the first free frequency from the RA rating (a regression on 622
+  measured rackets);
 * :mod:`~racket.specs.strings`: the string bed's stiffness from the tension;
 * :mod:`~racket.specs.fit`: the fitted beam and :func:`from_specs`;
 * :mod:`~racket.specs.catalog`: well-known rackets with sourced sheets.
@@ -14,6 +16,7 @@ fitting in ``ivtools``).
 
 from racket.specs.fit import Profile, fit_profile, from_specs
 from racket.specs.parts import PARTS
+from racket.specs.ra import f1_from_ra, fit_ra_regression
 from racket.specs.sheet import SPEC_RANGES, SpecSheet, spec_sheet
 from racket.specs.stiffness import flex_test_stiffness
 from racket.specs.strings import string_bed_stiffness
@@ -23,7 +26,9 @@ __all__ = [
     "SPEC_RANGES",
     "Profile",
     "SpecSheet",
+    "f1_from_ra",
     "fit_profile",
+    "fit_ra_regression",
     "flex_test_stiffness",
     "from_specs",
     "spec_sheet",

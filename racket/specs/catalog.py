@@ -1,11 +1,12 @@
 """Well-known rackets from their published spec sheets, each number with its source.
 
 Every entry holds the keyword arguments of :func:`racket.specs.from_specs` and, for each, where
-it comes from.  Two numbers are not on any spec sheet and are the same assumption for all:
+it comes from.  Two numbers are not on the sheets as the model needs them:
 
-* ``f1_hz``: spec sheets give the RA rating, which cannot be converted yet (see
-  :mod:`racket.specs.stiffness`), so the first free-free frequency is set to
-  :data:`ASSUMED_F1`.  The published RA is kept in ``published_ra`` for when a calibration exists.
+* the frame stiffness: each sheet gives its published RA (``ra``), turned into the first
+  free-free frequency by the TWU regression (:mod:`racket.specs.ra`: 150, 157 and 154 Hz for
+  RA 66, 69 and 68, each +/- 6 Hz), so that a comparison of rackets keeps their main
+  difference (before the regression every entry assumed :data:`ASSUMED_F1`).
 * ``tension_lb``: a racket is strung to the player's taste; 55 lb is the paper's "typical of
   most rackets" (Sec. VIII).
 """
@@ -18,13 +19,18 @@ from racket.racket import Racket
 from racket.specs.fit import from_specs
 
 ASSUMED_F1 = 150.0
-"""First free-free frequency [Hz] assumed for catalogue rackets.  Composite rackets made after
-1980 ring higher than the wooden rackets before 1970, which were "typically characterised by
-... natural frequencies below 120 Hz" (L. Taraborrelli et al., "Materials have driven the
-historical development of the tennis racket", Appl. Sci. 9, 4352, 2019); the paper's 1990s
-graphite racket is at 120 Hz.  150 Hz is an assumption, not a measurement of these models."""
+"""First free-free frequency [Hz] assumed where a sheet gives no frame stiffness (the
+catalogue's entries did before the RA regression; the tests' sample sheets still do).
+Composite rackets made after 1980 ring higher than the wooden rackets before 1970, which
+were "typically characterised by ... natural frequencies below 120 Hz" (L. Taraborrelli et
+al., "Materials have driven the historical development of the tennis racket", Appl. Sci. 9,
+4352, 2019); the paper's 1990s graphite racket is at 120 Hz.  150 Hz is an assumption, not
+a measurement of these models."""
 
-ASSUMED = "assumption (see racket.specs.catalog)"
+_RECORDED = (
+    "the RA published with this sheet, recorded when the entry was made (the line of the page "
+    "was not quoted: unverified)"
+)
 PAPER_TENSION = "the paper, Sec. VIII: 55 lb is typical of most rackets"
 OUNCE = 0.028349523125
 """One ounce [kg] (US spec sheets quote strung weight in oz)."""
@@ -43,9 +49,6 @@ class Entry:
         names, e.g. ``mass_kg``).
     sources : dict
         Where each of ``specs`` comes from, by the same keywords.
-    published_ra : float, optional
-        The RA rating [-] the maker or a test publishes (kept for when the RA scale is
-        calibrated; not used in the fit).
     notes : str, optional
         Remarks on the numbers.
     """
@@ -53,7 +56,6 @@ class Entry:
     name: str
     specs: dict
     sources: dict
-    published_ra: float | None = None
     notes: str = ""
 
     def racket(self, support: str = "free") -> Racket:
@@ -82,7 +84,7 @@ CATALOG = {
             balance_cm=33.0,
             swingweight_kgcm2=325.0,
             head_size_cm2=645.0,
-            f1_hz=ASSUMED_F1,
+            ra=66.0,
             tension_lb=55.0,
         ),
         sources=dict(
@@ -91,10 +93,9 @@ CATALOG = {
             balance_cm=_TENNISADDICT + ": equilibre 330 mm",
             swingweight_kgcm2=_TENNISADDICT + ": inertie 325",
             head_size_cm2=_TENNISADDICT + ": tamis 645 cm2",
-            f1_hz=ASSUMED,
+            ra=_TENNISADDICT + ": RA 66 strung (68 unstrung)",
             tension_lb=PAPER_TENSION,
         ),
-        published_ra=66.0,
         notes="RA 66 strung (68 unstrung) measured by tennisaddict.fr; Babolat quotes 72.",
     ),
     "pure-drive-2025": Entry(
@@ -105,7 +106,7 @@ CATALOG = {
             balance_pts_hl=4.0,
             swingweight_kgcm2=315.0,
             head_size_in2=100.0,
-            f1_hz=ASSUMED_F1,
+            ra=69.0,
             tension_lb=55.0,
         ),
         sources=dict(
@@ -114,10 +115,9 @@ CATALOG = {
             balance_pts_hl=_TENNIS_COM + ": Balance 4 pts HL",
             swingweight_kgcm2=_TENNIS_COM + ": Swingweight 315",
             head_size_in2=_TENNIS_COM + ": Head Size 100 sq. in.",
-            f1_hz=ASSUMED,
+            ra=_RECORDED,
             tension_lb=PAPER_TENSION,
         ),
-        published_ra=69.0,
     ),
     "pro-staff-97l-cv": Entry(
         name="Wilson Pro Staff 97L CV",
@@ -127,7 +127,7 @@ CATALOG = {
             balance_pts_hl=6.0,
             swingweight_kgcm2=313.0,
             head_size_in2=97.0,
-            f1_hz=ASSUMED_F1,
+            ra=68.0,
             tension_lb=55.0,
         ),
         sources=dict(
@@ -136,10 +136,9 @@ CATALOG = {
             balance_pts_hl=_TENNIS_EXPRESS + ": Balance 6 Pts Head Light",
             swingweight_kgcm2=_TENNIS_EXPRESS + ": Swing Weight 313",
             head_size_in2=_TENNIS_EXPRESS + ": Head Size 97 sq. in.",
-            f1_hz=ASSUMED,
+            ra=_RECORDED,
             tension_lb=PAPER_TENSION,
         ),
-        published_ra=68.0,
     ),
 }
 """Catalogue rackets by preset name."""

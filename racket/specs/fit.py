@@ -2,8 +2,9 @@
 
 :func:`fit_profile` builds the beam: the part masses of :mod:`racket.specs.parts` fitted to
 the sheet's mass, balance and swingweight (and twistweight) by :mod:`racket.specs.mass_fit`,
-the bending-stiffness profile of :mod:`racket.specs.stiffness` scaled to the sheet's f1 or
-flex test; :func:`from_specs` adds the string bed and the support.
+the bending-stiffness profile of :mod:`racket.specs.stiffness` scaled to the sheet's f1
+(given, or from its RA rating by :mod:`racket.specs.ra`) or flex test; :func:`from_specs` adds
+the string bed and the support.
 """
 
 from __future__ import annotations
@@ -16,9 +17,9 @@ from beam import Beam
 from racket.racket import Racket, StringBed
 from racket.specs.mass_fit import fit_masses
 from racket.specs.parts import PARTS, Layout, layout
+from racket.specs.ra import f1_from_ra
 from racket.specs.sheet import SPEC_RANGES, SpecSheet, spec_sheet
 from racket.specs.stiffness import (
-    RA_UNCALIBRATED,
     TYPICAL_BEAM_WIDTHS,
     bending_profile,
     flex_test_stiffness,
@@ -97,8 +98,9 @@ class Profile:
 
 
 def fit_profile(sheet: SpecSheet) -> tuple[Beam, Profile]:
-    """The beam whose mass, balance, swingweight and f1 (or flex-test stiffness) equal the
-    spec sheet's, and the fitted model.
+    """The beam whose mass, balance, swingweight and f1 (given, or from the RA rating by
+    :func:`~racket.specs.ra.f1_from_ra`, or the flex-test stiffness) equal the spec sheet's,
+    and the fitted model.
 
     Raises ValueError, naming the quantity and the range plausible rackets reach, when no
     racket with parts in their plausible ranges meets the sheet.
@@ -108,8 +110,6 @@ def fit_profile(sheet: SpecSheet) -> tuple[Beam, Profile]:
     sheet : SpecSheet
         The checked spec sheet, in SI (see :func:`~racket.specs.sheet.spec_sheet`).
     """
-    if sheet.ra is not None:
-        raise ValueError(RA_UNCALIBRATED)
     lay = layout(sheet.length, sheet.head_area)
     fit = fit_masses(
         lay,
@@ -127,8 +127,8 @@ def fit_profile(sheet: SpecSheet) -> tuple[Beam, Profile]:
         tuple(shape),
         roll_inertia_per_length=tuple(fit.masses @ lay.roll_shapes),
     )
-    if sheet.f1 is not None:
-        beam = beam.with_f1(sheet.f1)
+    if sheet.flex is None:  # f1 given, or from the RA rating by the TWU regression
+        beam = beam.with_f1(sheet.f1 if sheet.ra is None else f1_from_ra(sheet.ra))
     else:  # the flex test's stiffness scales as EI, the frequencies as its square root
         deflection, load = sheet.flex
         ratio = load / deflection / flex_test_stiffness(beam, lay.head_length)
@@ -178,10 +178,11 @@ def from_specs(*, support: str = "free", **specs) -> Racket:
         Moment of inertia about the long axis [kg cm^2]: met exactly when parts in their
         ranges can, else as closely as they can (the residual is reported).
     f1_hz, ra, flex_deflection_mm : float
-        Frame stiffness: the first free-free bending frequency [Hz], the RA rating, or the
-        tip deflection [mm] in a flex test under ``flex_load_n`` [N] at the tip (supports
-        7 cm from the butt and at the bottom of the head).  Give one; ``ra`` is refused
-        until the RA scale is calibrated (see :mod:`racket.specs.stiffness`).
+        Frame stiffness: the first free-free bending frequency [Hz], the RA rating [-]
+        (f1 from it by the regression on 622 rackets measured by Tennis Warehouse
+        University, :func:`~racket.specs.ra.f1_from_ra`: 150 +/- 6 Hz at RA 66), or the tip
+        deflection [mm] in a flex test under ``flex_load_n`` [N] at the tip (supports 7 cm
+        from the butt and at the bottom of the head).  Give one.
     flex_load_n : float
         The flex test's load [N] (with ``flex_deflection_mm``).
     torsion_hz : float, optional

@@ -82,10 +82,14 @@ PARTS = (
         f"assumption: two arms, some 30 cm of frame tube, at 0.5-4 g/cm; {_FRAME_TUBE}",
     ),
     Part(
-        "handle", 0.040, 0.160, 0.085,
-        "assumption: the frame's shaft, the pallet and the grip; a leather grip alone adds "
-        "about 10 g over a synthetic one (Tennis.com, 'Question of the day: leather grips', "
-        "2012); the high end allows weight in the handle",
+        "handle", 0.030, 0.160, 0.085,
+        "assumption: the frame's shaft, the pallet and the grip; a synthetic grip weighs "
+        "'high single digits to mid-teens of grams' (tennisyard.com, 'Tennis grips: how to "
+        "know when to replace'), a leather one about 10 g more (Tennis.com, 'Question of the "
+        "day: leather grips', 2012); the low end is some 17 cm of a light frame's tube at "
+        "1 g/cm, a thin foam pallet and a synthetic grip (the super-light handles of head-heavy "
+        "frames: the Head Graphene Instinct PWR of the TWU table needs 32 g); the high end "
+        "allows weight in the handle",
     ),
     Part(
         "butt cap", 0.004, 0.030, 0.012,

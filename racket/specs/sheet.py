@@ -34,7 +34,7 @@ class SpecSheet:
     f1 : float or None
         Frame stiffness as the first free-free bending frequency of the strung frame [Hz],
     ra : float or None
-        or as its RA rating [-] (refused by the fit, see :mod:`racket.specs.stiffness`),
+        or as its RA rating [-] (f1 from it by :func:`racket.specs.ra.f1_from_ra`),
     flex : (float, float) or None
         or as a flex test: tip deflection [m] under a tip load [N].  Exactly one of the three.
     head_area : float
@@ -121,7 +121,9 @@ rackets start at 19 in (48 cm), but the mass model's 19 cm handle, 5 cm of throa
 60 in^2 head need 51.5 cm, so lengths start at 52 cm here; strung adult rackets weigh
 230-370 g, balance 30-36 cm, swing 280-360 kg cm^2 and have beam widths of 17.5-29 mm
 (retailers' spec sheets, e.g. tests/data/racket_specs_sample.csv); frames ring at
-100-200 Hz (Taraborrelli et al., Appl. Sci. 2019); strings are strung at 40-65 lb.  The
+100-200 Hz (Taraborrelli et al., Appl. Sci. 2019); strings are strung at 40-65 lb; RA
+ratings are 44-76 over the 622 rackets of the TWU table (:mod:`racket.specs.ra`; 55-76 on
+the sample), widened to 40-90 (the regression is extrapolated outside 44-76).  The
 rest (recoil weight 50-300 and twistweight 5-40 kg cm^2, f1 60-400 Hz, torsion
 150-1500 Hz, a flex test of
 0.1-100 mm under 1-2000 N, string-bed 5e3-2e5 N/m) is this project's assumption."""
@@ -206,7 +208,8 @@ def spec_sheet(
     f1_hz : float, optional
         First free-free bending frequency of the strung frame [Hz].
     ra : float, optional
-        RA rating [-] (dimensionless; refused by the fit until the RA scale is calibrated).
+        RA rating [-] (Babolat RDC): f1 from it by the regression on 622 rackets measured by
+        Tennis Warehouse University (:mod:`racket.specs.ra`, uncertain by about 6 Hz).
     flex_deflection_mm : float, optional
         Tip deflection in a flex test [mm] under ``flex_load_n``.  Give exactly one of
         ``f1_hz``, ``ra`` and ``flex_deflection_mm``.

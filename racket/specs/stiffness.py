@@ -19,8 +19,8 @@ The shape is then set by the beam widths alone: a thicker throat (BeamWidth3) st
 throat and handle against the head; equal widths give a uniform EI.  With the sheets'
 typical widths (tip 23, sides 24, throat 22.5 mm) EI varies by about 20 % along the frame.
 The scale then follows from the frame stiffness given: f1 (frequencies scale as sqrt(EI)
-at a fixed mass), or a measured flex-test deflection (:func:`flex_test_stiffness` scales
-as EI).
+at a fixed mass; an RA rating gives f1 by :mod:`racket.specs.ra`), or a measured flex-test
+deflection (:func:`flex_test_stiffness` scales as EI).
 
 Torsion
 -------
@@ -41,14 +41,12 @@ measurement of how much the racquet tip is deflected" (Tennis Warehouse Universi
 simple supports at :data:`HANDLE_SUPPORT` from the butt and at the throat end of the head, a
 point load at the tip, and the tip stiffness F / deflection.
 
-Calibration status.  Babolat publishes neither the machine's load nor the scale from the
-deflection to RA.  The one public analysis found (Sten Solli, racquetTune, on the Tennis
-Warehouse forum thread "Racquet stiffness - RDC/RA and frame frequency") shows RA rising with
-the beam-theory stiffness 4 M f1^2 over the TWU frequency database, with a scatter too large
-to compute one from the other.  Without paired (RA, f1 or deflection) data the RA -> stiffness
-scale cannot be calibrated, so :func:`racket.from_specs` asks for f1 and refuses an RA-only
-spec sheet with that reason; ``racket-impact specs`` prints the modelled test stiffness of
-every fitted racket so that such data can calibrate it.
+RA and frequency.  Babolat publishes neither the machine's load nor the scale from the
+deflection to RA, so the modelled test cannot be converted to RA.  An RA rating is used
+instead through the regression of f1 on RA over 622 rackets measured both ways by Tennis
+Warehouse University (:mod:`racket.specs.ra`): the first free frequency it gives sets the
+scale as a given f1 does.  ``racket-impact specs`` prints the modelled test stiffness of every
+fitted racket.
 """
 
 from __future__ import annotations
@@ -62,14 +60,6 @@ POISSON = 0.3
 
 HANDLE_SUPPORT = 0.07
 """Handle support of the modelled flex test [m from the butt] (the middle of the grip)."""
-
-RA_UNCALIBRATED = (
-    "ra cannot be used yet: the RA scale has no public calibration against a measurable "
-    "stiffness (see racket.specs.stiffness); give f1_hz, the frame's first free-free "
-    "frequency [Hz] (tap the frame hanging free and read the ring's pitch), or "
-    "flex_deflection_mm with flex_load_n, the tip's deflection under a load at the tip with "
-    "the racket supported 7 cm from the butt and at the bottom of the head"
-)
 
 TYPICAL_BEAM_WIDTHS = (0.023, 0.024, 0.0225)
 """Beam widths [m] (tip, sides, throat) used when a sheet gives none: the medians of the
