@@ -177,6 +177,26 @@ def falling_cor(e0: float, slope: float, x_max):
     return np.maximum(e0 - slope * np.asarray(x_max, dtype=float), COR_FLOOR)
 
 
+def falling_cor_parameters(e0, slope) -> tuple[float, float]:
+    """``e0`` in (COR_FLOOR, 1] and ``slope`` >= 0 [1/m] of :func:`falling_cor`, checked;
+    ValueError naming the bad one otherwise.
+
+    Parameters
+    ----------
+    e0 : float
+        COR of a vanishingly slow bounce [-].
+    slope : float
+        Fall of the COR per metre of peak compression [1/m].
+    """
+    e0 = finite("e0", e0)
+    if not COR_FLOOR < e0 <= 1.0:
+        raise ValueError(f"e0 must be in ({COR_FLOOR:g}, 1], got {shown(e0)}")
+    slope = finite("slope", slope, "1/m")
+    if slope < 0:
+        raise ValueError(f"slope must be >= 0 [1/m], got {shown(slope)}")
+    return e0, slope
+
+
 class _PowerBranches(MonotoneLaw):
     """A loading curve X_load(F) and a power unloading F = F_max (X / X_max)**b from the
     largest force: the branches shared by the power-law balls (:class:`_PowerLoading`) and
@@ -370,13 +390,8 @@ class GrowingHysteresis(_PowerLoading):
     def __post_init__(self):
         object.__setattr__(self, "k", positive("k", self.k, "N/m**a"))
         object.__setattr__(self, "a", in_range("a", self.a, 1.0, 3.0))
-        e0 = finite("e0", self.e0)
-        if not COR_FLOOR < e0 <= 1.0:
-            raise ValueError(f"e0 must be in ({COR_FLOOR:g}, 1], got {shown(e0)}")
+        e0, slope = falling_cor_parameters(self.e0, self.slope)
         object.__setattr__(self, "e0", e0)
-        slope = finite("slope", self.slope, "1/m")
-        if slope < 0:
-            raise ValueError(f"slope must be >= 0 [1/m], got {shown(slope)}")
         object.__setattr__(self, "slope", slope)
         if self.calibrated_to is not None:
             object.__setattr__(

@@ -28,8 +28,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ball.laws import COR_FLOOR, STIFFENING, _PowerBranches, falling_cor
-from common.checks import finite, positive, shown
+from ball.laws import STIFFENING, _PowerBranches, falling_cor, falling_cor_parameters
+from common.checks import positive
 
 _SERIES_BELOW = 1e-3
 """Below this r = F / F_c the stored energy is summed as a series (the closed form
@@ -84,13 +84,8 @@ class StiffeningHysteresis(_PowerBranches):
     def __post_init__(self):
         object.__setattr__(self, "k", positive("k", self.k, "N/m"))
         object.__setattr__(self, "x_lim", positive("x_lim", self.x_lim, "m"))
-        e0 = finite("e0", self.e0)
-        if not COR_FLOOR < e0 <= 1.0:
-            raise ValueError(f"e0 must be in ({COR_FLOOR:g}, 1], got {shown(e0)}")
+        e0, slope = falling_cor_parameters(self.e0, self.slope)
         object.__setattr__(self, "e0", e0)
-        slope = finite("slope", self.slope, "1/m")
-        if slope < 0:
-            raise ValueError(f"slope must be >= 0 [1/m], got {shown(slope)}")
         object.__setattr__(self, "slope", slope)
 
     @property
