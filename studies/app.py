@@ -144,6 +144,14 @@ def server(input, output, session):
         notes = [ui.div(f"Note: {w}", class_="text-warning small") for w in r.warnings]
         if "f1_from_ra" in s:
             notes.insert(0, ui.div(s["f1_from_ra"], class_="text-muted small"))
+        if "effort_head_taped_mph" in s:  # lead tape: the swing at equal effort
+            notes.insert(0, ui.div(
+                f"At equal effort (a heavier swingweight swings slower, Cross and Bower 2006): "
+                f"without the tape {s['effort_head_untaped_mph']:.1f} mph head speed, "
+                f"{s['effort_exit_untaped_mph']:.1f} mph off the centre; with it "
+                f"{s['effort_head_taped_mph']:.1f} mph, {s['effort_exit_taped_mph']:.1f} mph",
+                id="equal-effort", class_="small",
+            ))  # fmt: skip
         return ui.div(
             ui.tags.b(racket),
             ui.br(),

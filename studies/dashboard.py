@@ -18,7 +18,7 @@ from racket import CATALOG, Swing, from_specs, impact
 from racket.specs.ra import ra_note
 from racket.specs.sheet import SPEC_RANGES
 from racket.specs.strings import with_tension
-from racket.swing import PIVOT_RANGE
+from racket.swing import PIVOT_RANGE, equal_effort
 from studies.config import BALLS
 from studies.landmarks import sweet_spots
 from studies.maps import face_map
@@ -184,6 +184,27 @@ def page_swing(inputs: PageInputs, racket, positions) -> Swing:
     return swing
 
 
+def _equal_effort(inputs: PageInputs, racket, ball, swing: Swing) -> dict:
+    """With lead tape: the swing the player makes with the taped racket at the effort that
+    swings the untaped one at the page's swing (:func:`racket.swing.equal_effort`, Cross
+    and Bower 2006), and the exit speed at the string centre of each [mph]; {} without.
+    """
+    if not inputs.lead_g > 0:
+        return {}
+    base = page_racket(replace(inputs, lead_g=0.0))
+    taped = equal_effort(swing, base.beam.swingweight, racket.beam.swingweight)
+    exits = [
+        impact(r, ball, r.strings.center, inputs.ball_speed, **s.impact_kwargs(r, r.strings.center))
+        for r, s in ((base, swing), (racket, taped))
+    ]  # fmt: skip
+    return {
+        "effort_head_untaped_mph": swing.head_speed / MPH,
+        "effort_head_taped_mph": taped.head_speed / MPH,
+        "effort_exit_untaped_mph": float(exits[0].ball_rebound) / MPH,
+        "effort_exit_taped_mph": float(exits[1].ball_rebound) / MPH,
+    }
+
+
 def _page_results(inputs: PageInputs, points: int) -> PageResults:
     if inputs.ball not in BALLS:
         raise ValueError(f"ball must be one of {list(BALLS)}, got {inputs.ball!r}")
@@ -200,6 +221,7 @@ def _page_results(inputs: PageInputs, points: int) -> PageResults:
                         swing.pivot_from_butt, zero_cor=False)  # fmt: skip
     best = int(np.argmax(along["e_A"]))
     summary = {
+        **_equal_effort(inputs, racket, ball, swing),
         "mass_g": 1e3 * racket.beam.mass,
         "balance_cm": 100 * racket.beam.balance,
         "swingweight_kgcm2": racket.beam.swingweight_kgcm2,

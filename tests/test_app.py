@@ -13,6 +13,7 @@ import urllib.request
 
 import pytest
 
+from racket.swing import EFFORT_EXPONENT
 from studies.dashboard import MY_SHEET, PageInputs, page_results
 
 CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
@@ -33,6 +34,15 @@ def test_page_results_follow_the_controls():
     assert taped.summary["twistweight_kgcm2"] > base.summary["twistweight_kgcm2"]
     assert taped.summary["e_A_3_oclock"] > base.summary["e_A_3_oclock"]
     assert base.summary["serve_tipward_mph"] > base.summary["serve_centre_mph"]
+    # lead tape: the swing at equal effort is slower by the swingweight law (issue 25)
+    assert "effort_head_taped_mph" not in base.summary
+    heavier = page_results(PageInputs(lead_g=5.0, lead_at="12")).summary
+    ratio = heavier["effort_head_taped_mph"] / heavier["effort_head_untaped_mph"]
+    assert ratio == pytest.approx(
+        (base.summary["swingweight_kgcm2"] / heavier["swingweight_kgcm2"]) ** EFFORT_EXPONENT,
+        rel=1e-9,
+    )
+    assert heavier["effort_exit_taped_mph"] > 0 and heavier["effort_exit_untaped_mph"] > 0
     mine = page_results(PageInputs(racket=MY_SHEET, mass_g=310, swingweight_kgcm2=320))
     assert mine.summary["mass_g"] == pytest.approx(310.0)
     with pytest.raises(ValueError, match="racket must be one of"):
