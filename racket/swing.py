@@ -97,8 +97,8 @@ class Swing:
     def reach(self, racket, position) -> tuple[float, float, float]:
         """What this swing may be for the impact points ``position`` [m from the tip]: the
         pivot must be short of every point and of the string centre, < the first value [m
-        from the butt], so that each moves towards the ball; and the head speed in [the
-        second, the third] [m/s], so that it and each point's speed are in
+        from the butt], so that each moves towards the ball; and the head speed between the
+        second and the third [m/s], so that it and each point's speed are in
         :data:`common.checks.SPEED_RANGE` (the point nearest the tip is the fastest; both
         are ``inf`` when the pivot is not short of the points).
 

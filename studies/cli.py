@@ -86,7 +86,8 @@ class _Replay(_Parser):
 
 
 TABLE_COMMANDS = (
-    "sweep", "map", "serve", "collide", "ball", "modes", "specs", "feel", "sweetspots", "compare"
+    "sweep", "map", "serve", "collide", "ball", "modes", "specs", "feel", "sweetspots", "compare",
+    "validate",
 )  # fmt: skip
 """The commands that write tables (with sidecars): the only ones ``rerun`` replays."""
 
@@ -545,6 +546,24 @@ def cmd_ball(args) -> int:
         preset = BALL_PRESETS.get(args.ball)
         axes = plot_rigid_bounce(table, radius=ball.radius, bands=preset and preset.bands)
         save_plot(axes, args.plot)
+    return 0
+
+
+def cmd_validate(args) -> int:
+    """``racket-impact validate``."""
+    from studies import validation
+
+    check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
+    table = validation.validation_table()
+    with pd.option_context("display.max_colwidth", 80):
+        _print_table(table.drop(columns="conditions"))
+    print(f"\n{validation.summary(table)} (each one's conditions: --out FILE)")
+    if args.out:
+        write_table(table.reset_index(), args.out)
+    if args.plot:
+        from studies.plots import plot_validation
+
+        save_plot(plot_validation(table), args.plot)
     return 0
 
 
@@ -1255,6 +1274,11 @@ def build_parser(parser_class=_Parser) -> argparse.ArgumentParser:
     p.add_argument("--out", metavar="FILE", help="table file: .csv, .json or .parquet")
     p.add_argument("--plot", metavar="FILE", help="comparison plot (.png, .svg, .pdf)")
     p.set_defaults(func=cmd_compare)
+
+    p = sub.add_parser("validate", help="the model against published measurements")
+    p.add_argument("--out", metavar="FILE", help="table file: .csv, .json or .parquet")
+    p.add_argument("--plot", metavar="FILE", help="measured band vs model (.png, .svg, .pdf)")
+    p.set_defaults(func=cmd_validate)
     return parser
 
 

@@ -1,0 +1,119 @@
+"""The model against published measurements (:mod:`studies.validation`; issue 26).
+
+One test per comparison, asserting the model's value lies in the measured band.  The
+calibration comparisons (numbers the model was set from) are in
+:class:`TestCalibration`, apart from the validations: their agreement checks that the
+calibration holds, it does not validate.  Where the model disagrees beyond the band, the
+test is a strict expected failure whose reason is the measured gap; nothing was tuned to
+move it in (the docs page, ``docs/validation.md``, says what would close each gap).
+"""
+
+import pytest
+
+from studies.validation import COLUMNS, KINDS, comparisons, summary, validation_table
+
+ITEMS = {c.name: c for c in comparisons()}
+
+KNOWN_GAPS = {
+    # calibration: the presets' compromises, kept visible
+    "concrete-compression": "model 7.96 mm vs about 6 mm (5-7 mm): a loading curve that only "
+    "stiffens cannot give both 6 mm and 4 ms; the presets accept up to 8.5 mm",
+    "savage-A-tight": "model drop 18.0 % vs 20.0-22.7 % (142-147 Hz): one grip stiffness "
+    "for all grips, fitted to both rackets by least squares",
+    "savage-B-tight": "model drop 15.8 % vs 12.3 % (10.3-14.3 %): racket B's tight grip "
+    "drops less than A's; one tight grip cannot meet both",
+    # validation
+    "seed-clamped-e": "model 0.901 vs about 0.88 (0.86-0.90): no loss in the strings or the "
+    "clamped frame",
+    "cross-1m-drop-e": "model 0.917 vs 0.837 (0.81-0.87): no loss in the strings or the "
+    "clamped frame",
+    "clamped-energy-loss": "model 16 % vs about 30 % (25-35 %): only the ball loses energy "
+    "on clamped strings",
+    "hamori-drive-polyester-67-forehand": "model 4.51 ms vs 3.8 ms (3.3-4.3)",
+    "hamori-drive-polyester-67-volley": "model 4.65 ms vs 3.75 ms (3.25-4.25)",
+    "hamori-drive-polyester-37-forehand": "model 5.55 ms vs 4.9 ms (4.4-5.4)",
+    "hamori-drive-polyester-37-volley": "model 5.65 ms vs 4.1 ms (3.6-4.6)",
+    "hamori-drive-polyester-37-serve": "model 5.43 ms vs 4.0 ms (3.5-4.5)",
+    "hamori-85-polyester-54-forehand": "model 4.74 ms vs 3.6 ms (3.1-4.1): no string "
+    "material, polyester as soft as gut",
+    "hamori-97-gut-54-volley": "model 4.92 ms vs 4.1 ms (3.6-4.6)",
+    "hamori-97-gut-54-serve": "model 4.65 ms vs 3.7 ms (3.2-4.2)",
+    "twu-held-3-oclock-lead": "model 0.21 vs about 0.3 (0.25-0.35)",
+    "twu-pivot-centre": "model 0.47 vs about 0.4 (0.35-0.45)",
+    "twu-pivot-throat": "model 0.41 vs about 0.5 (0.45-0.55)",
+    "typical-throat": "model 0.41 vs 0.50 (0.45-0.55)",
+}
+"""The comparisons the model is known to miss, and by how much (the measured gap)."""
+
+
+@pytest.fixture(scope="module")
+def table():
+    return validation_table()
+
+
+def _params(kind):
+    return [
+        pytest.param(
+            name,
+            id=name,
+            marks=[pytest.mark.xfail(strict=True, reason=KNOWN_GAPS[name])]
+            if name in KNOWN_GAPS
+            else [],
+        )
+        for name, c in ITEMS.items()
+        if c.kind == kind
+    ]
+
+
+def _check(table, name):
+    row = table.loc[name]
+    print(f"\n{name}: measured {row.measured:.4g} ({row.low:.4g}-{row.high:.4g}), "
+          f"model {row.model:.4g}")  # fmt: skip
+    assert row.low <= row.model <= row.high
+
+
+class TestCalibration:
+    """Numbers the model was set from: these check that the calibration holds."""
+
+    @pytest.mark.parametrize("name", _params("calibration"))
+    def test_calibration_in_measured_band(self, table, name):
+        _check(table, name)
+
+
+@pytest.mark.parametrize("name", _params("validation"))
+def test_validation_in_measured_band(table, name):
+    _check(table, name)
+
+
+def test_table_columns_kinds_and_sources(table):
+    assert tuple(table.columns) == COLUMNS
+    assert set(table["kind"]) == set(KINDS)
+    assert table["source"].str.len().min() > 10
+    assert (table["low"] <= table["measured"]).all() and (table["measured"] <= table["high"]).all()
+    assert table["agrees"].dtype == bool
+    assert set(KNOWN_GAPS) <= set(ITEMS)
+    # at least 15 distinct published sources of validation and calibration numbers
+    assert table["source"].nunique() >= 10 and len(table) >= 15
+    line = summary(table)
+    agreed = int(table["agrees"].sum())
+    assert f"{len(table)} comparisons" in line and agreed == len(table) - len(KNOWN_GAPS)
+
+
+def test_a_comparison_fails_outside_its_band():
+    c = ITEMS["rebound-itf-type-2"]
+    assert c.agrees(c.measured) and not c.agrees(c.high + 1e-6) and not c.agrees(c.low - 1e-6)
+
+
+def test_cli_validate_writes_table_and_plot(tmp_path, capsys, table, monkeypatch):
+    import studies.validation as validation
+    from studies.cli import main
+
+    monkeypatch.setattr(validation, "validation_table", lambda: table)
+    out, plot = tmp_path / "v.csv", tmp_path / "v.png"
+    assert main(["validate", "--out", str(out), "--plot", str(plot)]) == 0
+    printed = capsys.readouterr().out
+    assert "comparisons with published measurements" in printed and "Hamori" in printed
+    assert out.exists() and plot.exists() and plot.stat().st_size > 1000
+    assert main(["validate", "--out", str(tmp_path / "v.txt")]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err.count("\n") == 0 and "--out must be a table file" in err
