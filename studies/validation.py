@@ -518,6 +518,30 @@ def validation_table(items: list[Comparison] | None = None) -> pd.DataFrame:
     return pd.DataFrame(rows, index=pd.Index([c.name for c in items], name="name"))
 
 
+GROUPS = {
+    "the ball on a rigid surface": ("rebound", "concrete"),
+    "the ball on clamped strings": ("seed", "cross", "clamped", "strings"),
+    "the hand": ("savage", "grabiner"),
+    "the frame's stiffness (RA)": ("ra",),
+    "dwell times in real strokes (Hamori)": ("hamori",),
+    "power over the face (e_A)": ("twu", "typical"),
+}
+"""The comparisons by what they test: group -> the first words of their names."""
+
+
+def groups(table: pd.DataFrame):
+    """The rows of a :func:`validation_table` by :data:`GROUPS`: (group, rows) pairs.
+
+    Parameters
+    ----------
+    table : DataFrame
+        The table of :func:`validation_table`.
+    """
+    first = table.index.str.split("-").str[0]
+    for group, words in GROUPS.items():
+        yield group, table[first.isin(words)]
+
+
 def summary(table: pd.DataFrame) -> str:
     """One line: how many comparisons agree, by kind.
 

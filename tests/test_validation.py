@@ -117,3 +117,10 @@ def test_cli_validate_writes_table_and_plot(tmp_path, capsys, table, monkeypatch
     assert main(["validate", "--out", str(tmp_path / "v.txt")]) == 2
     err = capsys.readouterr().err.strip()
     assert err.count("\n") == 0 and "--out must be a table file" in err
+
+
+def test_every_comparison_is_in_exactly_one_group(table):
+    from studies.validation import groups
+
+    named = [name for _, rows in groups(table) for name in rows.index]
+    assert sorted(named) == sorted(table.index)  # each once, none left out
