@@ -41,6 +41,10 @@ class Hand:
         (default): the grip is held still, the springs and dashpots join the handle to the
         ground (the model before the hand had a mass).  The grip presets
         :data:`GRIPS` have a finite mass.
+    resists_twist : bool
+        Whether the grip resists the racket's twist about its long axis (default True: a
+        hand's springs act at the handle's surface, :data:`GRIP_RADIUS`).  False: the
+        racket rolls freely in it, as about a pin at the butt.
 
     Notes
     -----
@@ -61,6 +65,7 @@ class Hand:
     damping: float = 10.0
     grip_length: float = 0.10
     mass: float = math.inf
+    resists_twist: bool = True
 
     def __post_init__(self):
         object.__setattr__(self, "stiffness", positive("hand stiffness", self.stiffness, "N/m"))
@@ -68,6 +73,8 @@ class Hand:
         object.__setattr__(self, "grip_length", positive("grip_length", self.grip_length, "m"))
         if not (isinstance(self.mass, float) and math.isinf(self.mass) and self.mass > 0):
             object.__setattr__(self, "mass", positive("hand mass", self.mass, "kg"))
+        if not isinstance(self.resists_twist, bool):
+            raise ValueError(f"resists_twist must be True or False, got {self.resists_twist!r}")
 
 
 GRIP_STIFFNESS = 2.5e5

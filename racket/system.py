@@ -444,8 +444,9 @@ def roll_system(roll: RollModes, length: float, support: str, hand: Hand) -> Blo
     support : str
         ``"free"`` or ``"hand-held"`` (anything else is treated as free).
     hand : Hand
-        The hand of a hand-held racket (ignored otherwise).
+        The hand of a hand-held racket (ignored otherwise); one that does not resist twist
+        leaves the roll free.
     """
-    if support == "hand-held":
+    if support == "hand-held" and hand.resists_twist:
         return held_roll_system(roll, length, hand)
     return _free_blocks(roll.omega, roll.damping, (0,))

@@ -73,12 +73,11 @@ EDGE_INSET = 0.04
 axis]: the ball's centre 4 cm inside, its edge (radius 3.35 cm) just clear of the frame.
 **An assumption**: the sources do not give the distance."""
 
-PIN = Hand(stiffness=1e6, damping=0.0, grip_length=0.02)
+PIN = Hand(stiffness=1e6, damping=0.0, grip_length=0.02, resists_twist=False)
 """A pin at the handle end (TWU part 2, "free to twist and rotate about the handle end"):
-a stiff (1e6 N/m), undamped, short (2 cm) grip held still.  **An approximation**: the model
-has no hinge support; this grip stops the butt translating and lets the racket rotate about
-it.  It also resists the handle's twist (a hand acts at the grip's surface), so it is used
-on the long axis only (TWU's periphery impacts are left out)."""
+a stiff (1e6 N/m), undamped, short (2 cm) grip held still that lets the racket roll freely.
+**An approximation** of a hinge: the grip stops the butt translating, and over 2 cm resists
+the racket's rotation about it only weakly."""
 
 STROKE_SPEEDS = {"forehand": 30.0, "volley": 20.0, "serve": 45.0}
 """Closing speeds [m/s] of ball and racket assumed for Hamori's strokes (recreational
@@ -272,11 +271,15 @@ def _along(racket) -> np.ndarray:
 @cache
 def _twu_part_2() -> np.ndarray:
     """e_A at the tip, centre and throat of the Pure Drive (2021) pinned at its butt
-    (:data:`PIN`), 17.9 m/s.
+    (:data:`PIN`), 17.9 m/s, and at 3 o'clock beside the centre with the ball's edge at the
+    frame (the periphery).
     """
     racket = CATALOG["pure-drive-2021"].racket(support="hand-held")
     racket = replace(racket, hand=PIN)
-    return impact(racket, _ball(), _along(racket), TWU_PIVOT_SPEED).e_A
+    ball, x = _ball(), _along(racket)
+    side = 0.5 * racket.strings.full_width - ball.radius
+    x, y = np.r_[x, racket.strings.center], np.r_[0.0, 0.0, 0.0, side]
+    return impact(racket, ball, x, TWU_PIVOT_SPEED, offset=y).e_A
 
 
 @cache
@@ -468,14 +471,16 @@ def comparisons() -> list[Comparison]:
         *(
             Comparison(
                 f"twu-pivot-{where}", f"e_A at the {where}, pivoting about the handle end [-]",
-                f"Pure Drive (2021) pinned at the butt (approximation: a stiff 2 cm grip), "
-                f"ITF type 2, 17.9 m/s, {where}", value, low, high, _TWU_2, "validation",
+                f"Pure Drive (2021) pinned at the butt, free to roll (approximation: a stiff "
+                f"2 cm grip), ITF type 2, 17.9 m/s, {where}", value, low, high, _TWU_2,
+                "validation",
                 note, lambda i=i: float(_twu_part_2()[i]),
             )
             for i, where, value, low, high, note in (
                 (0, "tip", 0.15, 0.1, 0.2, "the source's range 0.1-0.2"),
                 (1, "centre", *_about(0.4, 0.05), _ABOUT_E),
                 (2, "throat", *_about(0.5, 0.05), _ABOUT_E),
+                (3, "periphery", 0.15, 0.1, 0.2, "the source's range 0.1-0.2 (3 o'clock)"),
             )
         ),
         *(

@@ -178,3 +178,17 @@ def test_grips_in_toml_and_on_the_command_line(tmp_path, capsys):
     assert main(["feel", "--racket", str(toml)]) == 2
     assert "not both" in capsys.readouterr().err
     assert main(["feel", "--grip", "light", "--duration-ms", "20"]) == 0
+
+
+def test_a_grip_that_does_not_resist_twist_leaves_the_roll_free():
+    from racket.system import roll_system
+
+    roll = RACKET.beam.roll_modes
+    pin = Hand(1e6, 0.0, 0.02, resists_twist=False)
+    free = roll_system(roll, RACKET.beam.length, "free", pin)
+    held = roll_system(roll, RACKET.beam.length, "hand-held", pin)
+    assert np.array_equal(held.blocks, free.blocks) and np.array_equal(held.basis, free.basis)
+    gripped = roll_system(roll, RACKET.beam.length, "hand-held", Hand(1e6, 0.0, 0.02))
+    assert not np.array_equal(gripped.blocks, free.blocks)
+    with pytest.raises(ValueError, match="resists_twist must be True or False"):
+        Hand(resists_twist="no")
