@@ -87,7 +87,7 @@ class _Replay(_Parser):
 
 TABLE_COMMANDS = (
     "sweep", "map", "serve", "collide", "ball", "modes", "specs", "feel", "sweetspots", "compare",
-    "validate",
+    "validate", "drop",
 )  # fmt: skip
 """The commands that write tables (with sidecars): the only ones ``rerun`` replays."""
 
@@ -519,6 +519,47 @@ def cmd_collide(args) -> int:
         from studies.plots import plot_collision
 
         save_plot(plot_collision(r), args.plot)
+    return 0
+
+
+def cmd_drop(args) -> int:
+    """``racket-impact drop``."""
+    from studies.drop import drop
+
+    check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
+    ball = load_ball(args.ball)
+    onto, where = None, "the floor"
+    if args.onto != "floor":
+        from dataclasses import replace
+
+        support = "clamped-head" if args.onto == "strings" else "free"
+        onto = replace(load_racket(args.racket), support=support)
+        where = (
+            f"the strings of {args.racket}, its head clamped"
+            if args.onto == "strings"
+            else f"the string centre of {args.racket}, lying free"
+        )
+    try:
+        result = drop(ball, args.height_m, onto)
+    except ValueError as err:  # the height as typed, under its flag
+        raise ValueError(str(err).replace("height", "--height-m", 1)) from None
+    print(f"ball {args.ball} dropped from {result.height:g} m onto {where}: it arrives at "
+          f"{result.speed:.3g} m/s")  # fmt: skip
+    print(f"bounces back at {result.rebound_speed:.3g} m/s, up to {result.bounce_height:.3g} m "
+          f"({100 * result.bounce_height:.1f} cm)")  # fmt: skip
+    meaning = "the ball's COR, bounce/drop = e^2" if onto is None else "the apparent COR e_A"
+    print(f"rebound ratio {result.rebound_ratio:.4f} ({meaning})")
+    print(f"contact {1e3 * result.contact_time:.3g} ms, peak force {result.peak_force:.4g} N, "
+          f"largest compression {1e3 * float(np.max(result.compression)):.3g} mm")  # fmt: skip
+    if args.out:
+        table = pd.DataFrame(
+            {"t_s": result.t, "force_N": result.force, "compression_m": result.compression}
+        )
+        write_table(table, args.out)
+    if args.plot:
+        from studies.plots import plot_drop
+
+        save_plot(plot_drop(result), args.plot)
     return 0
 
 
@@ -1165,6 +1206,19 @@ def build_parser(parser_class=_Parser) -> argparse.ArgumentParser:
     p.add_argument("--history", metavar="FILE", help="time history: .csv, .json or .parquet")
     p.add_argument("--plot", metavar="FILE", help="history plot (.png, .svg, .pdf)")
     p.set_defaults(func=cmd_collide)
+
+    p = sub.add_parser("drop", help="a ball dropped on the floor, on strings or on a racket")
+    _ball_arg(p, "ball", nargs="?")
+    p.add_argument("--height-m", type=float, default=2.54, metavar="M",
+                   help="drop height [m] (default 2.54, the ITF rebound test)")  # fmt: skip
+    p.add_argument("--onto", choices=["floor", "strings", "racket"], default="floor",
+                   help="the floor (default), the strings of --racket with its head clamped, "
+                   "or --racket lying free (at its string centre)")  # fmt: skip
+    _racket_arg(p, default="pure-drive-2021")
+    p.add_argument("--out", metavar="FILE", help="force and compression against time "
+                   "(.csv, .json or .parquet)")  # fmt: skip
+    p.add_argument("--plot", metavar="FILE", help="force and compression (.png, .svg, .pdf)")
+    p.set_defaults(func=cmd_drop)
 
     p = sub.add_parser("ball", help="a ball's bounce on a rigid surface against impact speed")
     _ball_arg(p, "ball", nargs="?")

@@ -371,6 +371,31 @@ def plot_collision(collision, ax=None, title: str | None = None):
     return axes
 
 
+def plot_drop(result, ax=None):
+    """A dropped ball's contact (:func:`studies.drop.drop`): the force [N] and the ball's
+    compression [mm] against time [ms].
+
+    Parameters
+    ----------
+    result : Drop
+        The drop.
+    ax : sequence of 2 Axes, optional
+        The Axes of the two panels; None: a new figure's.
+    """
+    axes = _axes(ax, 2)
+    t = 1e3 * result.t
+    axes[0].plot(t, result.force, color="C0")
+    axes[0].set_ylabel("contact force [N]")
+    axes[1].plot(t, 1e3 * result.compression, color="C1")
+    axes[1].set_ylabel("ball compression [mm]")
+    axes[1].set_xlabel("time since first contact [ms]")
+    axes[0].set_title(
+        f"dropped from {result.height:g} m, bounces to {result.bounce_height:.3g} m "
+        f"(rebound ratio {result.rebound_ratio:.3f})"
+    )
+    return axes
+
+
 def plot_cor_vs_stiffness(
     ax=None, k0: float = 2e4, ratios=None, mass: float = 0.0103, speed: float = 4.0
 ):
