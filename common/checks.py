@@ -19,6 +19,11 @@ fastest recorded serve (73 m/s, 163 mph).  The solvers are scale-free and resolv
 outside this range a number is almost surely a typo (or the wrong unit)."""
 
 
+FASTEST_STROKE = 73.0
+"""The fastest recorded serve [m/s] (163 mph; an assumption as to the exact record, which
+is about this): a speed typed in m/s above it is more likely mph typed as m/s."""
+
+
 def _unit(unit: str) -> str:
     return f" {unit}" if unit else ""
 

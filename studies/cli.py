@@ -22,7 +22,7 @@ import pandas as pd
 
 from ball import BALL_PRESETS, DEFAULT_BALL, WALL, collide
 from beam.beam import MAX_MODES
-from common.checks import KN_AS_N, SPEED_RANGE, in_range, shown
+from common.checks import FASTEST_STROKE, KN_AS_N, SPEED_RANGE, in_range, shown
 from common.units import GRAVITY, MPH
 from racket import GRIPS, SUPPORTS
 from racket.specs.ra import f1_from_ra, ra_note
@@ -231,6 +231,13 @@ def _speed(args, name: str, allow_zero: bool = False, signed: bool = False):
             checked.append(0.0)
         else:
             checked.append(in_range(flag, value, low, high, unit) * scale)
+        if unit == "m/s" and abs(checked[-1]) > FASTEST_STROKE:  # allowed, but likely a slip
+            warnings.warn(
+                f"{flag} {shown(value)} m/s is faster than any recorded stroke (about "
+                f"{FASTEST_STROKE:g} m/s): mph typed as m/s? {shown(value)} mph would be "
+                f"{value * MPH:.3g} m/s ({flag}-mph {shown(value)})",
+                stacklevel=2,
+            )
     return checked if isinstance(values, list) else checked[0]
 
 
@@ -1433,16 +1440,15 @@ def _start(args, words: list[str], originals: dict | None = None) -> int:
 
 def _run(args, prefix: str) -> int:
     """Run the parsed command, its files put in place together when it returns: warnings
-    one line each, bad input status 2 (one line), Ctrl-C status 130 and SIGTERM or SIGHUP
+    one line each, said when it has succeeded, bad input status 2 (one line, the warnings
+    before it left unsaid), Ctrl-C status 130 and SIGTERM or SIGHUP
     128 + its number (one line; its files removed, as :func:`studies.outputs.stoppable`).
     """
-    kinds = set()
+    said = {}  # kind -> line: the first warning of each kind, said when the run succeeds
 
     def one_line(message, category, filename, lineno, file=None, line=None):
-        kind = re.sub(r"\d[\d.eE+-]*", "#", str(message))
-        if kind not in kinds:  # the first of each kind (a grid repeats them with new numbers)
-            kinds.add(kind)
-            print(f"{prefix}: warning: {message}", file=sys.stderr)
+        kind = re.sub(r"\d[\d.eE+-]*", "#", str(message))  # a grid repeats them, new numbers
+        said.setdefault(kind, f"{prefix}: warning: {message}")
 
     with warnings.catch_warnings(), outputs.stoppable():
         warnings.showwarning = one_line
@@ -1450,6 +1456,8 @@ def _run(args, prefix: str) -> int:
         try:
             with outputs.transaction() as files:
                 status = args.func(args)
+            for line in said.values():  # (a run refused says one line: its error)
+                print(line, file=sys.stderr)
             return status
         except KeyboardInterrupt as err:  # Stopped too: SIGTERM, SIGHUP
             if args.debug:

@@ -217,3 +217,20 @@ def test_toml_unit_slips_are_refused_with_a_hint(kind, text, expected, tmp_path,
     path.write_text(text)
     argv = ["ball", str(path)] if kind == "ball" else ["modes", "--racket", str(path)]
     assert expected in _one_line_exit_2(argv, capsys)
+
+
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ["sweep", "--speed", "120", "--points", "3"],
+        ["serve", "--racket-speed", "110"],
+        ["ball", "--speeds", "7.06", "100"],
+    ],
+)
+def test_a_speed_faster_than_any_stroke_is_asked_about(argv, capsys):
+    """Allowed (the solvers are scale-free), but a warning names the likely slip (issue 28)."""
+    assert main(argv) == 0
+    err = capsys.readouterr().err
+    flag, value = argv[1], argv[2] if argv[0] != "ball" else "100"
+    assert f"{flag} {value} m/s is faster than any recorded stroke" in err
+    assert f"mph typed as m/s? {value} mph would be" in err and f"({flag}-mph {value})" in err
