@@ -33,7 +33,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from functools import partial
+from functools import cache, partial
 
 from ball.bodies import Ball
 from ball.stiffening import StiffeningHysteresis
@@ -230,6 +230,7 @@ def pressurised_law(
     )
 
 
+@cache  # solved once (a root search), shared by the pressureless ball
 def _punctured() -> StiffeningHysteresis:
     """A punctured ball: COR 20 % and secant stiffness at 7.06 m/s 35 % below type 2."""
     from scipy.optimize import brentq  # scipy loads on first use

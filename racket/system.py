@@ -310,20 +310,23 @@ def held_system(modes: Modes, hand: Hand) -> BlockSystem:
     hand : Hand
         The hand holding the grip.
     """
-    k_h, c_h = hand_matrices(modes, hand)
-    stiffness = np.diag(modes.omega**2) + k_h
-    damping = np.diag(2.0 * modes.damping * modes.omega) + c_h
     slow = 0.5 * modes.omega[2]
     if np.isinf(hand.mass):
+        k_h, c_h = hand_matrices(modes, hand)
+        stiffness = np.diag(modes.omega**2) + k_h
+        damping = np.diag(2.0 * modes.damping * modes.omega) + c_h
         return _held_blocks(stiffness, damping, slow, (0, 1))
-    # The handle's mean displacement over the grip, per modal coordinate, and the hand's.
-    mean = _grip_overlap(lambda x: np.vstack([modes.shape(x), np.ones_like(x)]),
-                         modes.length, hand)[-1, :-1]  # fmt: skip
+    # The grip's springs stretch by y(x) - w: over the grip the shapes of (q, w sqrt(m)) are
+    # (phi(x), -1/sqrt(m)), so K_h = k D O D with O the overlap of (phi, 1) and D scaling
+    # the last by -1/sqrt(m) (and C_h likewise): one overlap for all of it.
+    overlap = _grip_overlap(
+        lambda x: np.vstack([modes.shape(x), np.ones_like(x)]), modes.length, hand
+    )
     root = np.sqrt(hand.mass)
-    extra_k = np.r_[-hand.stiffness * mean / root, hand.stiffness / hand.mass]
-    extra_c = np.r_[-hand.damping * mean / root, hand.damping / hand.mass]
-    stiffness = np.block([[stiffness, extra_k[:-1, None]], [extra_k[None, :]]])
-    damping = np.block([[damping, extra_c[:-1, None]], [extra_c[None, :]]])
+    scale = np.r_[np.ones(modes.count), -1.0 / root]
+    grip = scale[:, None] * overlap * scale[None, :]
+    stiffness = np.diag(np.r_[modes.omega**2, 0.0]) + hand.stiffness * grip
+    damping = np.diag(np.r_[2.0 * modes.damping * modes.omega, 0.0]) + hand.damping * grip
     null = np.zeros(modes.count + 1)
     null[0], null[-1] = np.sqrt(modes.mass), root  # racket and hand translating together
     system = _held_blocks(stiffness, damping, slow, (0, 1), null / np.linalg.norm(null))

@@ -22,7 +22,7 @@ import pandas as pd
 
 from ball import BALL_PRESETS, DEFAULT_BALL, WALL, collide
 from beam.beam import MAX_MODES
-from common.checks import FASTEST_STROKE, KN_AS_N, SPEED_RANGE, in_range, shown
+from common.checks import CM_AS_M, FASTEST_STROKE, KN_AS_N, SPEED_RANGE, in_range, shown
 from common.units import GRAVITY, MPH
 from racket import GRIPS, SUPPORTS
 from racket.specs.ra import f1_from_ra, ra_note
@@ -531,9 +531,10 @@ def cmd_collide(args) -> int:
 
 def cmd_drop(args) -> int:
     """``racket-impact drop``."""
-    from studies.drop import drop
+    from studies.drop import HEIGHT_RANGE, drop
 
     check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
+    height = in_range("--height-m", args.height_m, *HEIGHT_RANGE, "m", slips=(CM_AS_M,))
     ball = load_ball(args.ball)
     onto, where = None, "the floor"
     if args.onto != "floor":
@@ -546,10 +547,7 @@ def cmd_drop(args) -> int:
             if args.onto == "strings"
             else f"the string centre of {args.racket}, lying free"
         )
-    try:
-        result = drop(ball, args.height_m, onto)
-    except ValueError as err:  # the height as typed, under its flag
-        raise ValueError(str(err).replace("height", "--height-m", 1)) from None
+    result = drop(ball, height, onto)
     print(f"ball {args.ball} dropped from {result.height:g} m onto {where}: it arrives at "
           f"{result.speed:.3g} m/s")  # fmt: skip
     print(f"bounces back at {result.rebound_speed:.3g} m/s, up to {result.bounce_height:.3g} m "

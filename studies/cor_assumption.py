@@ -23,6 +23,8 @@ from ball.catalog import (
     TYPE_2_BANDS,
     pressurised_law,
 )
+from ball.laws import COR_FLOOR
+from common.checks import in_range
 from common.units import MPH
 from racket import CATALOG, impact
 from studies.serve import serve_table
@@ -40,7 +42,8 @@ def cor_assumption_table(cors=(COR_AT_30_RANGE[0], COR_AT_30, COR_AT_30_RANGE[1]
     Parameters
     ----------
     cors : sequence of float
-        Values of the type 2 ball's rigid-surface COR at 30 m/s [-], each in (0, 0.745).
+        Values of the type 2 ball's rigid-surface COR at 30 m/s [-], each in [COR_FLOOR,
+        0.745] (below the COR at 7.06 m/s).
 
     Returns
     -------
@@ -51,13 +54,16 @@ def cor_assumption_table(cors=(COR_AT_30_RANGE[0], COR_AT_30, COR_AT_30_RANGE[1]
     cors = np.atleast_1d(np.asarray(cors, dtype=float))
     if cors.size == 0 or cors.ndim != 1:
         raise ValueError(f"cors must be one or more CORs at 30 m/s, got {cors!r}")
+    slow = 0.5 * sum(TYPE_2_BANDS.cor)  # the COR at 7.06 m/s: it must fall from there
+    cors = [in_range("cor_at_30", c, COR_FLOOR, slow, hint=" (below the COR at 7.06 m/s)")
+            for c in cors]  # fmt: skip
     racket = CATALOG["pure-drive-2021"].racket()
     nodes = racket.beam.modes.nodes(1)
     start, end = racket.strings.extent
     node = float(nodes[(nodes >= start) & (nodes <= end)][0])
     rows = []
     for cor in cors:
-        ball = Ball(BALL_MASS, pressurised_law(TYPE_2_BANDS, RADIUS, float(cor)), RADIUS)
+        ball = Ball(BALL_MASS, pressurised_law(TYPE_2_BANDS, RADIUS, cor), RADIUS)
         serve = serve_table(racket, ball, None, HEAD_SPEED_MPH * MPH, zero_cor=True)
         rows.append(
             {

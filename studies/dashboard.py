@@ -115,6 +115,11 @@ def page_racket(inputs: PageInputs):
     inputs : PageInputs
         The page's controls.
     """
+    return _with_tape(_untaped(inputs), inputs)
+
+
+def _untaped(inputs: PageInputs):
+    """The racket the controls describe, before its lead tape."""
     if inputs.racket == MY_SHEET:
         low, high, _ = SPEC_RANGES["mass_kg"]  # checked in grams, as the page asks for them
         mass_g = in_range("mass_g", inputs.mass_g, 1e3 * low, 1e3 * high, "g")
@@ -133,10 +138,13 @@ def page_racket(inputs: PageInputs):
         racket = with_tension(CATALOG[inputs.racket].racket(), tension)
     else:
         raise ValueError(f"racket must be one of {[*CATALOG, MY_SHEET]}, got {inputs.racket!r}")
-    lead_g = non_negative("lead_g", inputs.lead_g, "g")
-    if lead_g > 0:
-        racket = racket.with_lead_tape(lead_g / 1e3, inputs.lead_at)
     return racket
+
+
+def _with_tape(racket, inputs: PageInputs):
+    """``racket`` with the controls' lead tape (if any)."""
+    lead_g = non_negative("lead_g", inputs.lead_g, "g")
+    return racket.with_lead_tape(lead_g / 1e3, inputs.lead_at) if lead_g > 0 else racket
 
 
 def page_results(inputs: PageInputs, points: int = 61) -> PageResults:
@@ -184,14 +192,13 @@ def page_swing(inputs: PageInputs, racket, positions) -> Swing:
     return swing
 
 
-def _equal_effort(inputs: PageInputs, racket, ball, swing: Swing) -> dict:
+def _equal_effort(inputs: PageInputs, base, racket, ball, swing: Swing) -> dict:
     """With lead tape: the swing the player makes with the taped racket at the effort that
     swings the untaped one at the page's swing (:func:`racket.swing.equal_effort`, Cross
     and Bower 2006), and the exit speed at the string centre of each [mph]; {} without.
     """
-    if not inputs.lead_g > 0:
+    if racket is base:  # no tape
         return {}
-    base = page_racket(replace(inputs, lead_g=0.0))
     taped = equal_effort(swing, base.beam.swingweight, racket.beam.swingweight)
     exits = [
         impact(r, ball, r.strings.center, inputs.ball_speed, **s.impact_kwargs(r, r.strings.center))
@@ -208,7 +215,8 @@ def _equal_effort(inputs: PageInputs, racket, ball, swing: Swing) -> dict:
 def _page_results(inputs: PageInputs, points: int) -> PageResults:
     if inputs.ball not in BALLS:
         raise ValueError(f"ball must be one of {list(BALLS)}, got {inputs.ball!r}")
-    racket, ball = page_racket(inputs), BALLS[inputs.ball]()
+    base, ball = _untaped(inputs), BALLS[inputs.ball]()
+    racket = _with_tape(base, inputs)
     x = np.linspace(*racket.strings.extent, points)
     swing = page_swing(inputs, racket, x)
     along = impact_table(impact(racket, ball, x, inputs.ball_speed))
@@ -221,7 +229,7 @@ def _page_results(inputs: PageInputs, points: int) -> PageResults:
                         swing.pivot_from_butt, zero_cor=False)  # fmt: skip
     best = int(np.argmax(along["e_A"]))
     summary = {
-        **_equal_effort(inputs, racket, ball, swing),
+        **_equal_effort(inputs, base, racket, ball, swing),
         "mass_g": 1e3 * racket.beam.mass,
         "balance_cm": 100 * racket.beam.balance,
         "swingweight_kgcm2": racket.beam.swingweight_kgcm2,

@@ -253,3 +253,10 @@ def test_the_headline_answers_move_with_the_assumed_cor_at_30():
     assert assumed["serve_mph"] == pytest.approx(
         serve.loc["normal", "serve_simulated_m_s"] / 0.44704, rel=1e-12
     )
+
+
+def test_an_assumed_cor_at_30_above_the_slow_one_is_refused():
+    from studies.cor_assumption import cor_assumption_table
+
+    with pytest.raises(ValueError, match=r"cor_at_30 must be in \[0.1, 0.7448"):
+        cor_assumption_table([0.8])
