@@ -21,9 +21,9 @@ from common.units import GRAVITY
 from racket import Racket, impact
 
 HEIGHT_RANGE = (0.01, 50.0)
-"""Drop heights [m] accepted: from a centimetre to a tall building's roof (50 m, where a
-tennis ball's terminal speed, about 30 m/s, makes the drag-free speed an overestimate: an
-assumption, generous on purpose)."""
+"""Drop heights [m] accepted: from a centimetre to a tall building's roof, 50 m (an
+assumption, generous on purpose: from that high a real ball, slowed by the air, arrives well
+below the drag-free 31 m/s that :func:`drop` assumes)."""
 
 
 @dataclass(frozen=True)

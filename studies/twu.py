@@ -9,8 +9,10 @@ swingweight, the measured frequency as ``f1_hz``) and reports, per row, whether 
 refused and why; the twistweight the mass model predicts when it is not given; and how
 closely the fit meets it when it is.  ``python -m studies.twu [CSV]`` prints the summary.
 
-The twistweight is a validation here, not a calibration: no parameter of the mass model was
-fitted to these rows.
+The twistweight is a validation here, not a calibration: no parameter of the roll inertia
+was fitted to these rows.  One row did set a range: the handle's lower bound (30 g,
+:mod:`racket.specs.parts`) was lowered for the Head Graphene Instinct PWR, so that row's fit
+calibrates and does not validate.
 """
 
 from __future__ import annotations

@@ -34,6 +34,7 @@ from ball import BALL_PRESETS, WALL, collide
 from ball.catalog import DROP_COMPRESSION, DROP_CONTACT_TIME, ITF_DROP_SPEED
 from common.units import GRAVITY
 from racket import CATALOG, GRIPS, Hand, from_specs, impact
+from racket.specs.ra import f1_from_ra
 from racket.system import held_mode, held_system
 
 KINDS = ("validation", "calibration")
@@ -64,6 +65,14 @@ TWU_SPEED = 16.5
 
 TWU_PIVOT_SPEED = 17.9
 """Ball speed [m/s] of TWU "Racquet Control" part 2."""
+
+TWU_OFFSET = 0.08
+"""Offset [m] from the long axis of TWU part 1's impacts at 3 and 9 o'clock: the largest it
+measured (its lateral offsets run from -80 to +60 mm; ``measurements.md`` section 4)."""
+
+GRABINER_SPEED = math.sqrt(2.0 * GRAVITY * 5.75)
+"""Ball speed [m/s] of Grabiner, Groppel and Campbell's drops, from 5.75 m: 10.62 m/s
+(``measurements.md`` section 3)."""
 
 TWU_LEAD = 0.0134
 """Lead tape per side [kg] in TWU part 1: 26.8 g in all, at 3 and at 9 o'clock."""
@@ -228,8 +237,8 @@ def _savage_drops() -> dict:
 def _grabiner_ratio() -> float:
     racket = CATALOG["pure-drive-2021"].racket()
     centre = racket.strings.center
-    free = impact(racket, _ball(), centre, 10.62)
-    held = impact(replace(racket, support="hand-held"), _ball(), centre, 10.62)
+    free = impact(racket, _ball(), centre, GRABINER_SPEED)
+    held = impact(replace(racket, support="hand-held"), _ball(), centre, GRABINER_SPEED)
     return float(held.ball_rebound / free.ball_rebound)
 
 
@@ -240,6 +249,7 @@ def _hamori_racket(racket: str, tension_lb: float):
     )
 
 
+@cache  # (two of Hamori's rows differ only in the string, which the model has not)
 def _hamori_ms(racket: str, tension_lb: float, stroke: str) -> float:
     r = _hamori_racket(racket, tension_lb)
     return 1e3 * float(impact(r, _ball(), r.strings.center, STROKE_SPEEDS[stroke]).contact_time)
@@ -247,17 +257,17 @@ def _hamori_ms(racket: str, tension_lb: float, stroke: str) -> float:
 
 @cache
 def _twu_part_1() -> dict:
-    """e_A of TWU's hand-held 291 g racket at the centre and at 3 o'clock (the ball's edge at
-    the frame), with and without the lead.  The racket: the Pure Drive (2021) sheet at 291 g
-    and swingweight 315 kg cm^2 (assumption: TWU gives the mass and a 100 in^2 class head,
-    not the swingweight), the medium grip; the tip resting on the floor is left out.
+    """e_A of TWU's hand-held 291 g racket at the centre and at 3 o'clock
+    (:data:`TWU_OFFSET` off the axis), with and without the lead.  The racket: the Pure
+    Drive (2021) sheet at 291 g and swingweight 315 kg cm^2 (assumption: TWU gives the mass
+    and a 100 in^2 class head, not the swingweight), the medium grip; the tip resting on the
+    floor is left out.
     """
     specs = CATALOG["pure-drive-2021"].specs | dict(mass_kg=0.291, swingweight_kgcm2=315.0)
     plain = from_specs(support="hand-held", **specs)
     out = {}
     for name, racket in (("plain", plain), ("lead", plain.with_lead_tape(TWU_LEAD, "3 and 9"))):
-        side = 0.5 * racket.strings.full_width - _ball().radius
-        r = impact(racket, _ball(), racket.strings.center, TWU_SPEED, offset=[0.0, side])
+        r = impact(racket, _ball(), racket.strings.center, TWU_SPEED, offset=[0.0, TWU_OFFSET])
         out[name] = r.e_A
     return out
 
@@ -300,8 +310,7 @@ def _ra_groups() -> pd.DataFrame:
 
 
 def _ra_frequency(ra: float) -> float:
-    sheet = {k: v for k, v in CATALOG["pure-drive-2021"].specs.items() if k != "ra"}
-    return float(from_specs(**sheet, ra=ra).beam.modes.frequencies[0])
+    return float(f1_from_ra(ra))
 
 
 # ----- the comparisons ---------------------------------------------------------------------
@@ -415,13 +424,6 @@ def comparisons() -> list[Comparison]:
             "(e = sqrt(h), derived)", lambda: float(_clamped(CROSS_BED).e),
         ),
         Comparison(
-            "clamped-energy-loss", "energy lost on head-clamped strings [%]",
-            f"ITF type 2, {DROP_1M_SPEED:.2f} m/s, uniform bed {CROSS_BED:.0e} N/m "
-            "(probably the same drops as the 1 m bounce)", *_about(30.0, 5.0), _CROSS_PAGE,
-            "validation", "assumption: 'about 30 %' read as +/-5 points",
-            lambda: 100.0 * (1.0 - float(_clamped(CROSS_BED).e) ** 2),
-        ),
-        Comparison(
             "strings-contact-time", "contact time on strings [ms]",
             f"ITF type 2, {DROP_1M_SPEED:.2f} m/s (low speed, assumed), head-clamped, "
             f"uniform bed {SEED_BED:.0e} N/m", *_about(5.0, 0.5), _SEED + ", citing Cross 1999",
@@ -460,7 +462,8 @@ def comparisons() -> list[Comparison]:
         ),
         Comparison(
             "twu-held-3-oclock", "e_A near the frame at 3 / 9 o'clock [-]",
-            "as mid-face, the ball's edge at the frame", 0.15, 0.1, 0.2, _TWU_1, "validation",
+            "as mid-face, 8 cm off the axis (TWU's largest offset)", 0.15, 0.1, 0.2, _TWU_1,
+            "validation",
             "the source's range 0.1-0.2", lambda: float(_twu_part_1()["plain"][1]),
         ),
         Comparison(
