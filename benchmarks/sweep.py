@@ -1,18 +1,23 @@
-"""Speed of the impact solver, each figure printed beside its target (issue 10).
+"""Speed of the impact solver, each figure printed beside its target (issues 10 and 27).
 
     python benchmarks/sweep.py
 
 Every figure is measured in this one run (the machine is shared and noisy; read the ratios
-to the targets, not the absolute times):
+to the targets, not the absolute times; the load average is printed before and after):
+
+* the lockstep kernel against the scalar kernel on the same inputs, batch by batch size
+  (interleaved runs, medians): where the lockstep kernel starts to pay is
+  :data:`racket.dispatch.LOCKSTEP_MIN`;
 
 * a 200-point sweep of the paper racket (median of warm calls), and the straightforward
   implementation side by side: for each impact point, integrate the ball and every mode
   (rigid-body and bending, the strings in series with the residual flexibility of the
   modes left out, as the model has it) with scipy's solve_ivp (RK45, rtol 1e-8) in two
   phases, loading until the compression peaks and unloading until the force vanishes;
-* one position; 1e5 positions in one call and 1e6 impacts through ``studies.sweep`` (time
-  and the peak of traced memory); the unhappy ball's 200-point sweep (its Xo search
-  included); the hand-held sweep and the fit to a spec sheet; a 15 x 9 face map (issue 13);
+* one position (a new one each call); 1e5 positions in one call and 1e6 impacts through
+  ``studies.sweep`` (untraced, then the peak of traced memory in a second run); the unhappy
+  ball's 200-point sweep (its Xo search included); the default accuracy against 16 times the
+  steps; the hand-held sweep and the fit to a spec sheet; a 15 x 9 face map (issue 13);
 * whole processes: ``python -c "import racket"``, a cached ``racket-impact sweep`` and
   ``racket-impact paper`` (warm: the compiled kernel on disk).
 
@@ -21,6 +26,7 @@ The accuracy of the defaults is measured by ``benchmarks/accuracy.py``.
 
 from __future__ import annotations
 
+import os
 import subprocess
 import sys
 import tempfile
@@ -33,7 +39,9 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from ball import Ball, SineLaw
-from racket import CATALOG, impact, paper_racket, tennis_ball
+from racket import CATALOG, dispatch, impact, paper_racket, tennis_ball
+from racket.solver import DEFAULT_STEPS_PER_CONTACT
+from racket.stepper import Stepper
 from studies.maps import face_map
 from studies.sweeps import sweep
 
@@ -80,6 +88,28 @@ def baseline_e(racket, ball, position, speed):
     return (phi[:2] @ qd[:2] - s2[1]) / speed
 
 
+SCALAR, LOCKSTEP = 10**12, 0
+
+
+def _kernels_side_by_side(call, runs: int) -> tuple[float, float]:
+    """Median times [s] of ``call()`` with the scalar and with the lockstep kernel, their
+    runs interleaved (so that the machine's load falls on both alike).
+    """
+    times = {SCALAR: [], LOCKSTEP: []}
+    for _ in range(runs):
+        for which in times:
+            with dispatch.lockstep_from(which):
+                t0 = time.perf_counter()
+                call()
+                times[which].append(time.perf_counter() - t0)
+    return float(np.median(times[SCALAR])), float(np.median(times[LOCKSTEP]))
+
+
+def _load() -> str:
+    """The load averages over 1, 5 and 15 minutes (`uptime`)."""
+    return "load average " + ", ".join(f"{v:.2f}" for v in os.getloadavg())
+
+
 def _median_time(call, runs: int = 10) -> float:
     times = []
     for _ in range(runs):
@@ -120,49 +150,82 @@ def _process(args, runs: int = 3, cwd=None) -> float:
     return float(np.median(times))
 
 
+def kernel_table(racket, ball) -> None:
+    """The lockstep kernel against the scalar one by batch size (the kernel alone, on the
+    threads the batch is worth).
+    """
+    print(f"{'impacts':>8} {'scalar ms':>10} {'lockstep ms':>12} {'speed-up':>9}")
+    for count in (8, 16, 24, 32, 48, 64, 200, 10_000):
+        x = np.linspace(0.0, 0.32, count)
+        stepper = Stepper(racket, ball, x, None, SPEED, 0.0, None, DEFAULT_STEPS_PER_CONTACT)
+        x_o = np.full(count, np.nan)
+        runs = 5 if count > 1000 else 40
+        scalar, lockstep = _kernels_side_by_side(lambda s=stepper, x_o=x_o: s.run(x_o), runs)
+        print(
+            f"{count:>8} {1e3 * scalar:>10.3f} {1e3 * lockstep:>12.3f} {scalar / lockstep:>8.2f}x"
+        )
+    print(
+        f"(lockstep from {dispatch.LOCKSTEP_MIN} impacts per thread: racket.dispatch.LOCKSTEP_MIN)"
+    )
+
+
 def main() -> None:
     """Print every figure beside its target."""
     warnings.simplefilter("ignore")
+    print(_load(), "(at the start)")
     racket, ball = paper_racket(), tennis_ball()
     x = np.linspace(0.0, 0.32, POINTS)
 
     t0 = time.perf_counter()
-    impact(racket, ball, x, SPEED)  # compiles (or loads the cached kernel)
+    impact(racket, ball, x, SPEED)  # compiles (or loads the cached kernels)
+    impact(racket, ball, 0.1, SPEED)
     warmup = time.perf_counter() - t0
-    fast = _median_time(lambda: impact(racket, ball, x, SPEED), runs=30)
+    print(f"first calls {warmup:.2f} s (loading or compiling the kernels)\n")
+    kernel_table(racket, ball)
+    print()
+    scalar, fast = _kernels_side_by_side(lambda: impact(racket, ball, x, SPEED), runs=30)
+    _row(f"{POINTS}-point sweep, median warm", 1e3 * fast, "ms", 2.0)
+    _row("  the same, moonshot", 1e3 * fast, "ms", 1.0)
+    _row("  the same with the scalar kernel (no target)", 1e3 * scalar, "ms", 2.0)
+    print(f"{'  lockstep speed-up of the whole call':<48} {scalar / fast:>10.3g} x")
     result = impact(racket, ball, x, SPEED)
     t0 = time.perf_counter()
     e_base = np.array([baseline_e(racket, ball, xi, SPEED) for xi in x])
     slow = time.perf_counter() - t0
-    print(f"first call {warmup:.2f} s (loading or compiling the kernel)")
     print(
         f"solve_ivp baseline, {POINTS} points: {slow:.1f} s; max |e - e_baseline| "
-        f"{np.abs(result.e - e_base).max():.1e}\n"
+        f"{np.abs(result.e - e_base).max():.1e}"
     )
-    _row(f"{POINTS}-point sweep, median warm", 1e3 * fast, "ms", 3.0)
     _row("  speed-up over the solve_ivp baseline", slow / fast, "x", 5000, better="higher")
-    _row(
-        "single position, median warm",
-        1e3 * _median_time(lambda: impact(racket, ball, 0.1, SPEED), runs=100),
-        "ms",
-        0.3,
-    )
-    seconds, peak = _traced(lambda: impact(racket, ball, np.linspace(0, 0.32, 100_000), SPEED))
-    _row("1e5 positions in one impact() call", seconds, "s", 3.0)
-    _row("  peak traced memory", peak, "GiB", 0.5)
+    positions = iter(np.linspace(0.0, 0.32, 100_003)[1:])  # a new position each call
+    one = _median_time(lambda: impact(racket, ball, next(positions), SPEED), runs=300)
+    _row("single position (a new one each call), median", 1e3 * one, "ms", 0.2)
+    many = np.linspace(0, 0.32, 100_000)
+    _row("1e5 positions in one impact() call", _median_time(
+        lambda: impact(racket, ball, many, SPEED), runs=3), "s", 1.0)  # fmt: skip
     grid = dict(
         speed=list(np.linspace(5.0, 40.0, 10)),
         string_stiffness=list(np.linspace(2e4, 6e4, 10)),
         f1=list(np.linspace(100.0, 190.0, 10)),
         progress=False,
     )
-    seconds, peak = _traced(lambda: sweep(racket, ball, np.linspace(0, 0.32, 1000), **grid))
-    _row("1e6 impacts through studies.sweep", seconds, "s", 30.0)
+    along = np.linspace(0, 0.32, 1000)
+    t0 = time.perf_counter()
+    sweep(racket, ball, along, **grid)
+    _row("1e6 impacts through studies.sweep, untraced", time.perf_counter() - t0, "s", 12.0)
+    seconds, peak = _traced(lambda: sweep(racket, ball, along, **grid))
+    _row("  the same traced (tracemalloc)", seconds, "s", 30.0)
     _row("  peak traced memory", peak, "GiB", 0.5)
     for mass, k0 in ((0.0103, 2e4), (0.057, 4e4)):
         unhappy = Ball(mass, SineLaw(k0=k0))
         seconds = _median_time(lambda u=unhappy: impact(racket, u, x, SPEED), runs=3)
         _row(f"unhappy ball {1e3 * mass:g} g, {POINTS} points", seconds, "s", 0.5)
+    coarse = np.linspace(0.0, 0.32, 20)
+    converged = impact(
+        racket, ball, coarse, SPEED, steps_per_contact=16 * DEFAULT_STEPS_PER_CONTACT
+    )
+    error = np.abs(impact(racket, ball, coarse, SPEED).e - converged.e).max()
+    _row("default accuracy: max |e - e(16x steps)|", error, "", 2e-5)
     held = replace(racket, support="hand-held")
     held_ms = 1e3 * _median_time(lambda: impact(held, ball, x, SPEED), runs=30)
     print(f"{'hand-held racket, 200 points (no target)':<48} {held_ms:>10.3g} ms")
@@ -178,7 +241,7 @@ def main() -> None:
     _row("  the same, hand-held (warm)", _median_time(
         lambda: face_map(held_face, ball, 16.5)), "s", 1.0)  # fmt: skip
     print()
-    _row("python -c 'import racket'", _process([sys.executable, "-c", "import racket"]), "s", 0.4)
+    _row("python -c 'import racket'", _process([sys.executable, "-c", "import racket"]), "s", 0.3)
     cli = [sys.executable, "-m", "studies.cli"]
     with tempfile.TemporaryDirectory() as tmp:
         _row(
@@ -188,6 +251,7 @@ def main() -> None:
             1.0,
         )
         _row("racket-impact paper (warm)", _process([*cli, "paper"], runs=1, cwd=tmp), "s", 4.0)
+    print(_load(), "(at the end)")
 
 
 if __name__ == "__main__":

@@ -8,8 +8,9 @@ test (:func:`flex_test_stiffness`).
 """
 
 from common.version import __version__
+from racket.hand import GRIPS, Hand
 from racket.presets import TENNIS_BALL_MASS, TENNIS_BALL_RADIUS, paper_racket, tennis_ball
-from racket.racket import GRIPS, SUPPORTS, Hand, Racket, StringBed
+from racket.racket import SUPPORTS, Racket, StringBed
 from racket.solver import Impact, impact
 from racket.specs import from_specs, string_bed_stiffness
 from racket.specs.catalog import CATALOG

@@ -1,0 +1,277 @@
+"""The outcome of an impact: the :class:`Impact` result, and its numbers from the state at
+the moment the ball finally left (:func:`outcome`): the dc (rigid-body) and ac parts of the
+racket's motion, the CORs and the energy budget (paper Sec. VII).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from racket import layout
+from racket.stepper import Stepper
+
+SELF_CONSISTENT_TOL = 1e-4
+"""An unhappy-ball impact is self-consistent when its compression at separation equals
+Xo to this relative tolerance (where the ball crosses its fold it ends within 1e-10 of Xo;
+without a fold, strings stiffer than pi k0, it approaches Xo only asymptotically and the
+stepped contact ends within 7e-5 of it)."""
+
+_HISTORY_ROWS = {
+    "force": layout.H_FORCE,
+    "ball_compression": layout.H_BALL_COMP,
+    "string_deflection": layout.H_STRING,
+    "ball_velocity": layout.H_BALL_VEL,
+    "point_velocity": layout.H_POINT_VEL,
+    "point_velocity_dc_history": layout.H_POINT_VEL_DC,
+}
+"""Impact attribute of each history row of the kernel."""
+
+
+@dataclass(frozen=True)
+class Impact:
+    """Outcome of :func:`impact`; every attribute is an array over the impact positions
+    (a float, or 1-D history, when a single position was given).
+
+    Attributes
+    ----------
+    position : float or ndarray
+        Impact point [m from the tip].
+    position_from_butt : float or ndarray
+        The same [m from the butt], as spec sheets count.
+    offset : float or ndarray or None
+        Impact point's distance from the long axis [m, + towards 3 o'clock], or None for
+        impacts on the axis without the roll and torsion modes (the paper's 1-D model).
+    speed : float
+        Ball speed towards the strings before impact [m/s].
+    swing_speed : float or ndarray
+        Racket (impact-point) speed towards the ball before impact [m/s].
+    e : float or ndarray
+        COR [-] from the dc (rigid-body) motion, Eq. 21 / Eq. 1.
+    e_A : float or ndarray
+        Apparent COR V1 / v1 [-] of a racket at rest; for a swung racket (impact point at v2
+        towards the ball) the same in the frame of the swing, (V1 - v2) / (v1 + v2), which
+        equals the racket at rest's at the closing speed v1 + v2 (the swing superposes).
+    e_van_zandt : float or ndarray
+        COR [-] with the vibration at separation wrongly included (Sec. VII).
+    effective_mass : float or ndarray
+        Racket effective mass at the impact point [kg] (Eq. 20, with y^2 / I_roll off the
+        axis; for the free racket, also quoted for a hand-held one; inf clamped).
+    ball_rebound : float or ndarray
+        V1, the ball's speed after, away from the strings [m/s] (its exit speed).
+    v_cm : float or ndarray
+        Racket centre-of-mass velocity after [m/s] (along the ball's incoming path).
+    omega : float or ndarray
+        Racket angular velocity after [rad/s]; the point at x moves at v_cm + (x_cm - x)
+        omega.
+    roll_rate : float or ndarray
+        Racket's angular velocity about its long axis after [rad/s] (the twist rate; the
+        point at offset y moves at y roll_rate more; 0 without offsets).
+    point_velocity_dc : float or ndarray
+        V2 = v_cm + b omega (+ y roll_rate), dc velocity of the impact point after [m/s]
+        (Eq. 21).
+    contact_time : float or ndarray
+        Duration of the contact [s].
+    peak_force : float or ndarray
+        Largest contact force [N].
+    vibration_energy : float or ndarray
+        The racket's mechanical energy beyond its rigid-body kinetic energy when the ball
+        leaves [J]: the bending (and torsion) modes, and for a hand-held racket also the
+        energy in the hand's spring.
+    mode_energy : ndarray
+        (..., n_bending) energy of each free-free bending mode when the ball leaves [J].
+    energy_initial, ball_energy, racket_energy, ball_loss, damping_loss, energy_residual : \
+float or ndarray
+        Energy budget [J]: initial kinetic energy = ball_energy + racket_energy (rigid
+        body) + vibration_energy + ball_loss + damping_loss + energy_residual; the residual
+        is the integration error.
+    closing_energy : float or ndarray
+        The ball's kinetic energy in the frame of the racket's swing, m (v1 + v2)^2 / 2 [J]
+        (energy_initial for a racket at rest): what the impact has to share out.
+    x_o : float or ndarray
+        The unhappy ball's Xo [m], the smallest that does not snap (NaN for other laws).
+    self_consistent : bool or ndarray
+        The unhappy ball's compression at separation equals Xo (to
+        ``SELF_CONSISTENT_TOL``) [-]; always True for other laws.
+    recontacts : int or ndarray
+        Times the frame caught the ball again after it had left [-].
+    t : ndarray or None
+        (T,) time since first touch [s] of the histories (None unless ``histories``).
+    force, ball_compression, string_deflection, ball_velocity, point_velocity, \
+point_velocity_dc_history : ndarray or None
+        (..., T) histories [N, m, m, m/s, m/s, m/s] (NaN after the ball has left; None
+        unless ``histories``); the impact point's velocity is split into its dc part and
+        the rest (ac = total - dc).
+    """
+
+    position: np.ndarray
+    position_from_butt: np.ndarray
+    offset: np.ndarray | None
+    speed: float
+    swing_speed: float
+    e: np.ndarray
+    e_A: np.ndarray
+    e_van_zandt: np.ndarray
+    effective_mass: np.ndarray
+    ball_rebound: np.ndarray
+    v_cm: np.ndarray
+    omega: np.ndarray
+    roll_rate: np.ndarray
+    point_velocity_dc: np.ndarray
+    contact_time: np.ndarray
+    peak_force: np.ndarray
+    vibration_energy: np.ndarray
+    mode_energy: np.ndarray
+    energy_initial: np.ndarray
+    closing_energy: np.ndarray
+    ball_energy: np.ndarray
+    racket_energy: np.ndarray
+    ball_loss: np.ndarray
+    damping_loss: np.ndarray
+    energy_residual: np.ndarray
+    x_o: np.ndarray
+    self_consistent: np.ndarray
+    recontacts: np.ndarray
+    t: np.ndarray
+    force: np.ndarray
+    ball_compression: np.ndarray
+    string_deflection: np.ndarray
+    ball_velocity: np.ndarray
+    point_velocity: np.ndarray
+    point_velocity_dc_history: np.ndarray
+
+    @property
+    def point_velocity_ac_history(self) -> np.ndarray:
+        """Ac (vibration) part of the impact point's velocity against time [m/s] (None
+        without histories).
+        """
+        if self.point_velocity is None:
+            return None
+        return self.point_velocity - self.point_velocity_dc_history
+
+
+def outcome(stepper: Stepper, racket, ball, x, y, speed, x_o, outputs, histories, extra_steps):
+    """The Impact's fields from the kernel's outputs, and the ball's largest compression
+    (``compression``); the histories (if asked for) from a second run, recording.
+
+    Parameters
+    ----------
+    stepper : Stepper
+        The kernel's inputs, as run.
+    racket : Racket
+        The racket.
+    ball : Ball
+        The ball.
+    x, y : ndarray or None
+        Impact points [m from the tip] and offsets [m from the long axis] (None on it).
+    speed : float
+        Ball speed [m/s] towards the strings before impact.
+    x_o : ndarray
+        The unhappy ball's Xo [m] per impact (NaN for other laws).
+    outputs : racket.layout.Outputs
+        What :meth:`Stepper.run` returned.
+    histories : bool
+        Also the histories against time.
+    extra_steps : int
+        Steps [-] the run went on after each ball had left for good.
+
+    Returns
+    -------
+    tuple
+        The fields (a dict of arrays over the impacts) and the histories' times [s] (None
+        without histories).
+    """
+    out_ball, out_state, summary, _ = outputs
+    closing, dt, modes, system = stepper.closing, stepper.dt, stepper.modes, stepper.system
+    code = stepper.code
+    n = system.count
+
+    # dc part (rigid-body motion) and ac part (the rest) when the ball has left, and the
+    # energies: compiled, one pass (racket.budget).
+    from racket import budget  # numba loads on first use (import time)
+
+    face = stepper.face and n
+    frame = np.array(
+        [
+            modes.center_of_mass,
+            np.sqrt(modes.mass),
+            np.sqrt(modes.inertia_cm),
+            np.sqrt(racket.beam.roll_modes.roll_inertia) if face else 0.0,
+            min(n, modes.count),  # the bending coordinates come first
+            ball.mass,
+        ]
+    )
+    motion = np.column_stack([out_ball[:, 1], closing, np.full(x.size, speed)])
+    split = np.empty((x.size, budget.N_COLUMNS))
+    mode_energy = np.empty((x.size, max(min(n, modes.count) - 2, 0)))
+    budget.split(
+        out_state,
+        system.basis,
+        system.stiffness,
+        np.array(system.rigid, dtype=np.int64),
+        stepper.phi,
+        x,
+        y if face else np.zeros(x.size),
+        frame,
+        modes.omega,
+        motion,
+        stepper.swing_qd,
+        split,
+        mode_energy,
+    )
+    racket_energy, vibration = split[:, budget.RACKET_ENERGY], split[:, budget.VIBRATION]
+    energy_initial, ball_energy = split[:, budget.ENERGY_INITIAL], split[:, budget.BALL_ENERGY]
+    if code == layout.SINE:
+        ball_loss = summary[:, layout.SINE_WORK]  # X never decreases: all work on it is lost
+        self_consistent = np.abs(summary[:, layout.X_END] - x_o) <= SELF_CONSISTENT_TOL * x_o
+    else:
+        ball_loss = ball.law.dissipated(summary[:, layout.F_PEAK])
+        self_consistent = np.ones(x.size, dtype=bool)
+    peak = summary[:, layout.F_PEAK]
+    damping_loss = summary[:, layout.DAMPING_LOSS]
+    residual = energy_initial - (ball_energy + racket_energy + vibration + ball_loss + damping_loss)
+
+    steps = np.rint(summary[:, layout.T_END] / dt).astype(int)
+    used = int(steps.max()) + 1
+    history = dict.fromkeys(_HISTORY_ROWS)
+    if histories:
+        hist = stepper.run(x_o, extra_steps=extra_steps, history_steps=used)[3]
+        hist[:, np.arange(used)[None, :] > steps[:, None]] = np.nan  # after the ball left
+        history = {name: hist[row] for name, row in _HISTORY_ROWS.items()}
+
+    m_eff = np.full(x.size, np.inf)
+    if n:
+        m_eff = racket.beam.effective_mass(x, y if stepper.face else None)
+    fields = dict(
+        position=x,
+        position_from_butt=racket.beam.length - x,
+        offset=y,
+        swing_speed=np.array(stepper.closing - speed),
+        e=split[:, budget.E],
+        e_A=split[:, budget.E_A],
+        e_van_zandt=split[:, budget.E_VAN_ZANDT],
+        effective_mass=m_eff,
+        ball_rebound=-out_ball[:, 1],
+        v_cm=split[:, budget.V_CM],
+        omega=split[:, budget.OMEGA],
+        roll_rate=split[:, budget.ROLL_RATE],
+        point_velocity_dc=split[:, budget.V2_DC],
+        contact_time=summary[:, layout.T_CONTACT],
+        peak_force=summary[:, layout.F_PEAK],
+        vibration_energy=vibration,
+        mode_energy=mode_energy,
+        energy_initial=energy_initial,
+        closing_energy=split[:, budget.CLOSING_ENERGY],
+        ball_energy=ball_energy,
+        racket_energy=racket_energy,
+        ball_loss=np.asarray(ball_loss, dtype=float),
+        damping_loss=damping_loss,
+        energy_residual=residual,
+        x_o=x_o,
+        self_consistent=self_consistent,
+        recontacts=summary[:, layout.RECONTACTS].astype(int),
+        compression=x_o if code == layout.SINE else ball.law.compression(peak, peak),
+        **history,
+    )
+    return fields, np.arange(used) * dt if histories else None

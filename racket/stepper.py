@@ -1,0 +1,176 @@
+"""The time-stepper's inputs for one racket, ball and set of impact points, prepared once
+and run for any Xo (:class:`Stepper`), and the time step they share
+(:func:`contact_time_scale`).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ball import Ball
+from racket import layout
+from racket.dispatch import run_kernel
+
+FORCE_TOL = 1e-9
+"""An unhappy-ball contact that approaches a common speed asymptotically is over when its
+force has fallen to this fraction of its peak and the relative speed to this fraction of the
+closing speed (so e comes out within 1e-9 of its limit, 0, rather than slightly negative)."""
+
+CROSS_TOL = 1e-10
+"""An unhappy ball crosses its fold when the contact relaxes within this fraction of Xo of
+the fold's maximum (the Xo search drives the gap below half of it)."""
+
+
+def contact_time_scale(ball: Ball, string_stiffness: float, closing_speed: float) -> float:
+    """Half-period [s] of the ball on immovable strings, treating the ball as linear with
+    its secant stiffness at this speed: sets the time step.
+
+    Parameters
+    ----------
+    ball : Ball
+        The ball.
+    string_stiffness : float
+        String-plane stiffness [N/m].
+    closing_speed : float
+        Ball speed relative to the impact point [m/s].
+    """
+    k = ball.law.secant_stiffness(ball.mass, closing_speed)
+    k_series = 1.0 / (1.0 / k + 1.0 / string_stiffness)
+    return np.pi * np.sqrt(ball.mass / k_series)
+
+
+def _swing_velocities(modes, position, swing_speed, pivot):
+    """Rigid-mode velocities (P, 2) of a racket whose impact point moves at -swing_speed
+    (P,).
+    """
+    if not np.any(swing_speed):
+        return np.zeros((position.size, 2))
+    if pivot is None:  # pure translation
+        v_cm = np.full(position.size, -swing_speed)
+        spin = np.zeros(position.size)
+    else:  # rotation about the pivot: v(x) = -swing (pivot - x) / (pivot - position)
+        v_cm = -swing_speed * (pivot - modes.center_of_mass) / (pivot - position)
+        spin = -swing_speed / (pivot - position)
+    return np.column_stack([v_cm * np.sqrt(modes.mass), spin * np.sqrt(modes.inertia_cm)])
+
+
+class Stepper:
+    """The kernel's inputs for one racket, ball and set of impact points, prepared once and
+    run for any Xo (see :func:`racket.kernel.run_impacts`).
+
+    Parameters
+    ----------
+    racket : Racket
+        The racket.
+    ball : Ball
+        The ball.
+    x : ndarray
+        Impact points [m from the tip].
+    y : ndarray or None
+        Their offsets [m from the long axis], None for impacts on the axis (bending only).
+    speed : float
+        Ball speed [m/s] towards the strings before impact.
+    swing_speed : float or ndarray
+        Speed [m/s] of each impact point towards the ball from the racket's swing.
+    pivot : float or None
+        The swing's centre of rotation [m from the tip], None for pure translation.
+    steps_per_contact : int
+        Time steps [-] per estimated contact time.
+    """
+
+    def __init__(self, racket, ball, x, y, speed, swing_speed, pivot, steps_per_contact):
+        # The step follows from the bed's stiffest spot, whatever the points (the shortest
+        # contact on it), and from the closing speed, the same for all (see impact).
+        swing_speed = np.broadcast_to(np.asarray(swing_speed, dtype=float), x.shape)
+        self.closing = speed + swing_speed
+        self.dt = contact_time_scale(ball, racket.strings.stiffest, self.closing[0])
+        self.dt /= steps_per_contact
+        self.steps_per_contact = steps_per_contact
+        self.max_steps = 12 * steps_per_contact
+        law = getattr(ball.law, "kernel_law", None)
+        if law is None:
+            raise ValueError(f"ball law {ball.law!r} is not supported on a racket")
+        self.code = law[0]
+        self.modes = modes = racket.beam.modes
+        system, phi, self.face = racket.point_dynamics(x, y)
+        self.system, self.phi = system, phi
+        self.n = n = system.count
+        trans, g0, g1 = system.step(self.dt)
+        out_d, out_v, out_dc = system.outputs(phi)
+        self.swing_qd = _swing_velocities(modes, x, swing_speed, pivot)
+        state0 = np.zeros((x.size, system.blocks.shape[0], 2))  # at rest
+        if np.any(swing_speed):
+            z0 = np.zeros((x.size, 2 * n))
+            z0[:, n : n + 2] = self.swing_qd
+            state0 = system.state(z0)
+        self.position = x
+        inv_ks = 1.0 / racket.strings.stiffness_at(x, 0.0 if y is None else y)
+        series = inv_ks.copy()
+        if n:  # static correction: the bending modes left out respond quasi-statically
+            count = modes.count  # the shapes phi already holds, spared computing again
+            shapes = phi[:, :count].T if phi.shape[1] >= count else None
+            series += racket.beam.residual_flexibility(x, shapes)
+        if self.face and n:  # and the torsion modes left out
+            series += racket.beam.roll_modes.residual_flexibility(x, y)
+        self.points = layout.Points(
+            unit=system.inputs(phi),
+            out_d=out_d,
+            out_v=out_v,
+            out_dc=out_dc,
+            reach_w=np.linalg.norm(out_d, axis=2) * ~system.dc,
+            series=series,
+            inv_ks=inv_ks,
+            ball_velocity=np.full(x.size, speed),
+            state0=state0,
+            x_o=np.full(x.size, np.nan),
+        )
+        self.frame = layout.Frame(
+            np.ascontiguousarray(system.blocks, dtype=float),
+            trans,
+            g0,
+            g1,
+            system.metric,
+            *system.damping_rows,
+        )
+        # The ball, a free mass: exact for a force going linearly from F0 to F1 over dt,
+        # u += ud dt - (F0 / 3 + F1 / 6) dt**2 / m and ud -= (F0 + F1) dt / (2 m).
+        dt = self.dt
+        self.ball = layout.BallModel(
+            trans=np.array([[1.0, dt], [0.0, 1.0]]),
+            g0=np.array([dt * dt / 3.0, dt / 2.0]) / -ball.mass,
+            g1=np.array([dt * dt / 6.0, dt / 2.0]) / -ball.mass,
+            law=law[0],
+            params=np.array(law[1], dtype=float),
+        )
+
+    def run(self, x_o, subset=None, stop_on_snap=False, extra_steps=0, history_steps=0):
+        """Run the impacts (all, or those indexed by ``subset``) with Xo ``x_o`` [m] per
+        impact run; returns the kernel's :class:`~racket.layout.Outputs` (ball, block
+        states, summary, history), the history over the first ``history_steps`` steps
+        (none if 0).
+        """
+        points = self.points
+        if subset is not None:
+            points = layout.Points(*(np.ascontiguousarray(v[subset]) for v in points))
+        points = points._replace(x_o=np.ascontiguousarray(x_o, dtype=float))
+        count = points.ball_velocity.size
+        nb = self.frame.trans.shape[0]
+        controls = layout.Controls(
+            dt=self.dt,
+            max_steps=self.max_steps + extra_steps,
+            extra_steps=extra_steps,
+            force_tol=FORCE_TOL,
+            cross_tol=CROSS_TOL,
+            stop_on_snap=stop_on_snap,
+            record=history_steps > 0,
+        )
+        out = layout.Outputs(
+            ball=np.zeros((count, 2)),
+            state=np.zeros((count, nb, 2)),
+            summary=np.zeros((count, layout.N_SUMMARY)),
+            history=np.zeros(
+                (layout.N_HISTORY, count, history_steps) if history_steps else (1, 1, 1)
+            ),
+        )
+        run_kernel((self.frame, points, self.ball, controls, out), count)
+        return out

@@ -1,0 +1,211 @@
+"""The lockstep kernel (racket.lockstep) against the scalar one (racket.kernel): the same
+numbers bit for bit, for every support, law, offset and swing; and the batch switch
+(racket.dispatch.run_kernel) choosing each of them."""
+
+import json
+import os
+import subprocess
+import sys
+from dataclasses import replace
+from functools import cache
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from ball import (
+    Ball,
+    GrowingHysteresis,
+    LinearHysteresis,
+    LinearSpring,
+    PowerLawHysteresis,
+    SineLaw,
+)
+from ball.stiffening import StiffeningHysteresis
+from racket import (
+    CATALOG,
+    Hand,
+    dispatch,
+    impact,
+    kernel,
+    layout,
+    lockstep,
+    paper_racket,
+    tennis_ball,
+)
+from racket.stepper import Stepper
+
+
+@cache
+def _racket(name):
+    """Rackets of every support (built once: their modes take a while)."""
+    face = CATALOG["pure-drive-2021"].racket()  # roll inertia modelled: offsets allowed
+    return {
+        "free": lambda: paper_racket(),
+        "clamped": lambda: paper_racket("clamped-head"),
+        "held": lambda: paper_racket("hand-held"),
+        "held, hand's mass": lambda: replace(paper_racket("hand-held"), hand=Hand(mass=0.45)),
+        "face free": lambda: face,
+        "face held": lambda: replace(face, support="hand-held"),
+        "face, rolling grip": lambda: replace(
+            face, support="hand-held", hand=Hand(resists_twist=False)
+        ),
+    }[name]()
+
+
+RACKETS = [
+    "free",
+    "clamped",
+    "held",
+    "held, hand's mass",
+    "face free",
+    "face held",
+    "face, rolling grip",
+]
+
+LAWS = st.one_of(
+    st.builds(LinearHysteresis, st.floats(2e4, 8e4), st.floats(0.4, 0.95)),
+    st.builds(LinearSpring, st.floats(2e4, 8e4)),
+    st.builds(PowerLawHysteresis, st.floats(1e6, 4e6), st.floats(1.2, 1.8), st.floats(2.0, 4.0)),
+    st.builds(
+        GrowingHysteresis,
+        st.floats(5e5, 2e6),
+        st.floats(1.2, 1.6),
+        st.floats(0.7, 0.9),
+        st.floats(0.0, 10.0),
+    ),
+    st.builds(
+        StiffeningHysteresis,
+        st.floats(2.5e4, 5e4),
+        st.floats(0.025, 0.045),
+        st.floats(0.7, 0.9),
+        st.floats(0.0, 8.0),
+    ),
+    st.builds(SineLaw, st.floats(2e4, 6e4)),
+)
+
+
+def _assert_same(a, b):
+    for name, x, y in zip(a._fields, a, b, strict=True):
+        assert np.array_equal(x, y, equal_nan=True), name
+
+
+@settings(max_examples=40, deadline=None)
+@given(
+    name=st.sampled_from(RACKETS),
+    law=LAWS,
+    mass=st.floats(0.03, 0.07),
+    speed=st.floats(5.0, 40.0),
+    count=st.integers(1, 40),
+    spread=st.floats(0.0, 1.0),
+    offset=st.floats(-1.0, 1.0),
+    swing=st.sampled_from([0.0, 0.0, 8.0, 25.0]),
+    pivot=st.sampled_from([None, 0.73]),
+    steps=st.integers(50, 150),
+    history=st.sampled_from([0, 0, 60]),
+    x_o=st.floats(2e-3, 1.5e-2),
+    stop_on_snap=st.booleans(),
+    watch=st.sampled_from([0, 0, 25]),
+)
+def test_lockstep_equals_the_scalar_kernel_bit_for_bit(
+    name, law, mass, speed, count, spread, offset, swing, pivot, steps, history, x_o,
+    stop_on_snap, watch,
+):  # fmt: skip
+    racket = _racket(name)
+    start, stop = racket.strings.extent
+    middle = 0.5 * (start + stop)
+    x = middle + spread * (np.linspace(start, stop, count) - middle)
+    y = None
+    if name.startswith("face"):  # within the bed's width near its middle
+        x = middle + 0.6 * spread * (np.linspace(start, stop, count) - middle)
+        y = np.full(count, 0.03 * offset)
+    swing = swing if racket.support == "free" else 0.0
+    stepper = Stepper(racket, Ball(mass, law), x, y, speed, swing, pivot, steps)
+    x_o = np.full(count, x_o if stepper.code == layout.SINE else np.nan)
+    runs = {}
+    for which, threshold in (("scalar", 10**9), ("lockstep", 0)):
+        with dispatch.lockstep_from(threshold):
+            runs[which] = stepper.run(
+                x_o, stop_on_snap=stop_on_snap, extra_steps=watch, history_steps=history
+            )
+    _assert_same(runs["scalar"], runs["lockstep"])
+
+
+@pytest.mark.filterwarnings("ignore:.*self-consistent")
+@pytest.mark.parametrize(
+    "name, ball",
+    [
+        ("free", tennis_ball()),
+        ("held, hand's mass", Ball(0.057, PowerLawHysteresis(2e6, 1.5, 3.0))),
+        ("face held", Ball(0.057, StiffeningHysteresis(3.75e4, 0.0335, 0.8, 7.3))),
+        ("free", Ball(0.057, SineLaw(4e4))),  # the Xo search runs in lockstep too
+    ],
+)
+def test_whole_impacts_come_out_the_same(name, ball):
+    racket = _racket(name)
+    start, stop = racket.strings.extent
+    x = np.linspace(start, stop, 40)
+    y = None
+    if name.startswith("face"):  # within the bed's width near its middle
+        x = np.linspace(0.8 * start + 0.2 * stop, 0.2 * start + 0.8 * stop, 40)
+        y = np.linspace(-0.02, 0.02, 40)
+    results = {}
+    for which, threshold in (("scalar", 10**9), ("lockstep", 0)):
+        with dispatch.lockstep_from(threshold):
+            results[which] = impact(racket, ball, x, 20.0, offset=y)
+    for name_, value in vars(results["scalar"]).items():
+        if value is not None:
+            assert np.array_equal(value, getattr(results["lockstep"], name_), equal_nan=True)
+
+
+def test_the_batch_switch_chooses_each_kernel(monkeypatch):
+    ran = []
+
+    def spy(which, run):
+        def call(*args):
+            ran.append(which)
+            return run(*args)
+
+        return call
+
+    monkeypatch.setattr(kernel, "run_impacts", spy("scalar", kernel.run_impacts))
+    monkeypatch.setattr(lockstep, "run_lockstep", spy("lockstep", lockstep.run_lockstep))
+    racket, ball = paper_racket(), tennis_ball()
+    impact(racket, ball, 0.1, 10.0)
+    assert set(ran) == {"scalar"}
+    ran.clear()
+    many = 4 * dispatch.LOCKSTEP_MIN * dispatch.pool_size()
+    impact(racket, ball, np.linspace(0.0, 0.32, many), 10.0)
+    assert set(ran) == {"lockstep"}
+    ran.clear()
+    impact(racket, ball, np.linspace(0.0, 0.32, dispatch.LOCKSTEP_MIN - 1), 10.0)
+    assert set(ran) == {"scalar"}
+
+
+SCRIPT = """
+import json
+import numpy as np
+from racket import dispatch, impact, paper_racket, tennis_ball
+dispatch.LOCKSTEP_MIN = 0
+r = impact(paper_racket("hand-held"), tennis_ball(), [0.02, 0.16, 0.3], 10.0,
+           steps_per_contact=60)
+print(json.dumps([*r.e.tolist(), *r.vibration_energy.tolist(), *r.contact_time.tolist()]))
+"""
+
+
+def test_the_lockstep_kernel_runs_uncompiled_with_the_same_numbers():
+    env = dict(os.environ, NUMBA_DISABLE_JIT="1")
+    run = subprocess.run(
+        [sys.executable, "-W", "ignore", "-c", SCRIPT],
+        capture_output=True,
+        text=True,
+        env=env,
+        check=True,
+    )
+    uncompiled = json.loads(run.stdout)
+    with dispatch.lockstep_from(0):
+        r = impact(paper_racket("hand-held"), tennis_ball(), [0.02, 0.16, 0.3], 10.0,
+                   steps_per_contact=60)  # fmt: skip
+    compiled = [*r.e, *r.vibration_energy, *r.contact_time]
+    assert np.allclose(compiled, uncompiled, rtol=1e-12, atol=0.0)
