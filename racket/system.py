@@ -25,7 +25,7 @@ import numpy as np
 
 from beam import Modes
 from beam.torsion import RollModes
-from racket.racket import GRIP_RADIUS, Hand
+from racket.hand import GRIP_RADIUS, Hand
 
 _GRIP_POINTS = 24  # Gauss-Legendre points over the grip
 
@@ -170,7 +170,7 @@ def block_steps(blocks: np.ndarray, dt: float):
     """T, G0, G1 (n, 2, 2) of :meth:`BlockSystem.step` for any 2x2 blocks (n, 2, 2).
 
     From the exponential of the augmented system (state, input, input rate), compiled
-    (:func:`racket.kernel.augmented_steps`): no BLAS call, so no BLAS worker thread
+    (:func:`racket.expm.augmented_steps`): no BLAS call, so no BLAS worker thread
     competes with the time-stepper's threads for the cores.
 
     Parameters
@@ -180,7 +180,7 @@ def block_steps(blocks: np.ndarray, dt: float):
     dt : float
         Time step [s].
     """
-    from racket.kernel import augmented_steps  # numba loads on first use (import time)
+    from racket.expm import augmented_steps  # numba loads on first use (import time)
 
     blocks = np.ascontiguousarray(blocks, dtype=float).reshape(-1, 2, 2)
     trans = np.empty_like(blocks)

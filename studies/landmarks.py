@@ -2,9 +2,10 @@
 centre of percussion.
 
 The centre of percussion comes out of the simulation (:func:`percussion_centre`: the impact
-point after which the hand's rigid-body velocity is zero); :func:`center_of_percussion` is
-the rigid-body formula, which the tests compare it with (they agree for a free racket; a
-hand-held one differs, the hand pushing during the contact).
+point after which the hand's rigid-body velocity is zero); :func:`rigid_centre_of_percussion`
+is the rigid-body formula, which the tests compare it with (they agree for a free racket; a
+hand-held one differs, the hand pushing during the contact).  The sweet spots in one table:
+:mod:`studies.sweetspots`.
 """
 
 from __future__ import annotations
@@ -13,11 +14,11 @@ import numpy as np
 
 from common.checks import finite, in_range
 from racket import Racket
-from racket.racket import Hand
+from racket.hand import Hand
 
 HAND_FROM_BUTT = 0.5 * Hand.grip_length
 """Where the hand holds the racket [m from the butt]: the middle of the default hand's grip.
-The model spreads the hand evenly over :attr:`racket.racket.Hand.grip_length` from the butt
+The model spreads the hand evenly over :attr:`racket.hand.Hand.grip_length` from the butt
 (``racket.system``) and reads the handle there (:func:`racket.feel.hand_feel`); the mean of a
 rigid-body velocity over an even grip is its value at the middle.  (Not the flex test's
 handle support, ``racket.specs.stiffness.HANDLE_SUPPORT``, a testing machine's.)"""
@@ -41,7 +42,7 @@ def hand_pivot(racket: Racket, grip_from_butt: float | None = None) -> float:
     return racket.beam.length - grip
 
 
-def center_of_percussion(racket: Racket, pivot: float) -> float:
+def rigid_centre_of_percussion(racket: Racket, pivot: float) -> float:
     """Centre of percussion [m from the tip] by the rigid-body formula: an impulse there
     leaves the pivot of a free rigid racket at rest.  The simulated one is
     :func:`percussion_centre`.
@@ -73,7 +74,7 @@ def percussion_centre(racket: Racket, positions, v_cm, omega, pivot: float) -> f
 
     The velocity is taken over v_cm (> 0: the ball pushes the racket), which for a free
     racket is linear in the impact point, so that the interpolation is exact there and the
-    rigid-body formula (:func:`center_of_percussion`) is met to round-off.
+    rigid-body formula (:func:`rigid_centre_of_percussion`) is met to round-off.
 
     Parameters
     ----------
@@ -99,99 +100,6 @@ def percussion_centre(racket: Racket, positions, v_cm, omega, pivot: float) -> f
         return float("nan")
     i = crossing[0]
     return float(x[i] - dc[i] * (x[i + 1] - x[i]) / (dc[i + 1] - dc[i]))
-
-
-def sweet_spots(
-    racket: Racket,
-    ball,
-    speed: float | None = None,
-    swing=None,
-    grip_from_butt: float | None = None,
-    points: int = 201,
-):
-    """The racket's sweet spots in one table, every position in cm from the butt (as spec
-    sheets give them) with the distance from the tip beside it.
-
-    Rows: the node(s) of the first free bending mode (no vibration excited), the centre of
-    percussion for a hand at ``grip_from_butt`` (no jar to the hand: the impact point after
-    which the hand's rigid-body velocity is zero, :func:`percussion_centre`), the points of largest
-    e (Eq. 21) and largest e_A along the strings (racket at rest, ball at ``speed``), the
-    dead spot (smallest e_A, where the ball bounces least), the point of largest exit
-    speed for ``swing`` (if given; the ball at ``speed``, 0 for a serve), and the sweet area
-    of the face map (rackets whose roll inertia is modelled).
-
-    Parameters
-    ----------
-    racket : Racket
-    ball : Ball
-    speed : float, optional
-        Ball speed towards the strings [m/s]; default (None) :data:`studies.maps.MAP_SPEED`,
-        TWU's; 0 for a serve (the racket at rest then hit at :data:`studies.maps.MAP_SPEED`).
-    swing : Swing, optional
-        A swing of the (free) racket for the exit speed.
-    grip_from_butt : float, optional
-        Where the hand pivots [m from the butt], in [0, 0.3]; default the middle of the
-        racket's grip (:func:`hand_pivot`).
-    points : int
-        Points along the strings, a whole number in [11, 10001].
-
-    Returns
-    -------
-    DataFrame
-        ``spot``, ``from_butt_cm``, ``from_tip_cm``, ``value``, ``unit``, ``meaning``.
-    """
-    import pandas as pd
-
-    from racket import impact
-    from studies.maps import MAP_SPEED, SWEET_FRACTION, face_map
-
-    speed = MAP_SPEED if speed is None else speed
-    pivot = hand_pivot(racket, grip_from_butt)
-    points = whole("points", points, 11, 10001)
-    beam, length = racket.beam, racket.beam.length
-    x = np.linspace(*racket.strings.extent, points)
-    still = impact(racket, ball, x, speed or MAP_SPEED)
-    rows = []
-
-    def add(spot, where, value, unit, meaning):
-        rows.append(
-            {
-                "spot": spot,
-                "from_butt_cm": 100 * (length - where),
-                "from_tip_cm": 100 * where,
-                "value": value,
-                "unit": unit,
-                "meaning": meaning,
-            }
-        )
-
-    start, end = racket.strings.extent
-    for node in beam.modes.nodes(1):
-        where = "on the strings" if start <= node <= end else "off the strings"
-        add(f"node of mode 1 ({where})", node, beam.modes.frequencies[0], "Hz",
-            "mode 1 (the frame's fundamental) is not excited, nor felt there")  # fmt: skip
-    cop = percussion_centre(racket, x, still.v_cm, still.omega, pivot)
-    add("centre of percussion", cop, 100 * (length - pivot), "cm (grip from the butt)",
-        "no jar to the hand")  # fmt: skip
-    for name, values, pick, meaning in (
-        ("largest e", still.e, np.argmax, "Eq. 21: the racket's rebound quality"),
-        ("largest e_A", still.e_A, np.argmax, "most power, racket at rest"),
-        ("dead spot", still.e_A, np.argmin, "least power, racket at rest"),
-    ):
-        i = pick(values)
-        add(name, x[i], float(values[i]), "", meaning)
-    if swing is not None:
-        swung = impact(racket, ball, x, speed, **swing.impact_kwargs(racket, x))
-        i = np.argmax(swung.ball_rebound)
-        add("largest exit speed", x[i], float(swung.ball_rebound[i]), "m/s",
-            f"swung at {swing.head_speed:.4g} m/s head speed")  # fmt: skip
-    if beam.roll_inertia is not None:
-        face = face_map(racket, ball, speed or MAP_SPEED)
-        i = np.argmax(face.e_A.max(axis=1))
-        add("sweet area", face.positions[i], face.sweet_area_cm2, "cm^2",
-            f"e_A within {100 * SWEET_FRACTION:g} % of its largest (centred where e_A is "
-            "largest)")  # fmt: skip
-    return pd.DataFrame(rows)
 
 
 def whole(name: str, value, low: int, high: int) -> int:

@@ -14,7 +14,7 @@ import numpy as np
 from beam import SWINGWEIGHT_AXIS
 from common.checks import CM_AS_M, GRAMS_AS_KG, finite, in_range, positive, shown
 from common.units import IN2, LB, POINT
-from racket.specs.strings import string_bed_stiffness
+from racket.specs.strings import TENSION_RANGE_LB, string_bed_stiffness
 
 
 @dataclass(frozen=True)
@@ -110,8 +110,8 @@ SPEC_RANGES = {
     "head_size_in2": (60.0, 140.0, "in^2"),
     "head_size_cm2": (387.0, 903.0, "cm^2"),  # 60-140 in^2
     "beam_width_mm": (10.0, 40.0, "mm"),
-    "tension_lb": (20.0, 80.0, "lb"),
-    "tension_n": (20.0 * LB, 80.0 * LB, "N"),  # 20-80 lb (88.96-355.9 N), the same range
+    "tension_lb": (*TENSION_RANGE_LB, "lb"),
+    "tension_n": (*(t * LB for t in TENSION_RANGE_LB), "N"),  # 88.96-355.9 N, the same range
     "string_stiffness_n_m": (5e3, 2e5, "N/m"),
 }
 """The range of each spec-sheet input, in its own unit, checked before the fit.  Generous

@@ -2,15 +2,21 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 
 from common.checks import in_range, positive
-from common.units import IN2
+from common.units import IN2, LB
 from racket.membrane import CONTACT_RADIUS, MIN_RADIUS, bed_radius
 
 MEMBRANE_REFERENCE = (245.0, 100.0 * IN2, 3e4)
 """Calibration of the membrane model: 245 N (55 lb) on a 100 in^2 head gives a string-plane
 stiffness of 3e4 N/m (the paper, Sec. VIII)."""
+
+TENSION_RANGE_LB = (20.0, 80.0)
+"""The string tensions [lb] a racket may be strung at, generous around the 40-65 lb of real
+rackets: the spec sheets' range (:data:`racket.specs.sheet.SPEC_RANGES`, which takes it)."""
 
 _HEAD_CELLS = 24  # piecewise-constant cells resolving the hoop's mass along the head
 
@@ -25,14 +31,10 @@ def with_tension(racket, tension_n: float):
         The racket to restring.
     tension_n : float
         String (reference) tension [N], in the spec sheets' range
-        (:data:`racket.specs.sheet.SPEC_RANGES`, 20-80 lb).
+        (:data:`TENSION_RANGE_LB`, 20-80 lb).
     """
-    from dataclasses import replace
-
-    from racket.specs.sheet import SPEC_RANGES  # here: sheet imports this module
-
-    low, high, unit = SPEC_RANGES["tension_n"]
-    tension_n = in_range("tension", tension_n, low, high, unit)
+    low, high = (tension * LB for tension in TENSION_RANGE_LB)
+    tension_n = in_range("tension", tension_n, low, high, "N")
     stiffness = string_bed_stiffness(tension_n, racket.strings.area)
     return replace(racket, strings=replace(racket.strings, stiffness=stiffness))
 

@@ -1,0 +1,68 @@
+"""One measured number beside the model's value under its conditions, and the two kinds
+of comparison (calibration, validation).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+KINDS = ("validation", "calibration")
+"""The kinds of comparison: a number the model was not set from, or one it was."""
+
+COLUMNS = ("quantity", "conditions", "measured", "low", "high", "model", "agrees", "kind", "source")
+"""The columns of :func:`validation_table`."""
+
+
+@dataclass(frozen=True)
+class Comparison:
+    """One measured number and the model's value under its conditions.
+
+    Attributes
+    ----------
+    name : str
+        Short identifier (the test's id).
+    quantity : str
+        What is compared, with its unit.
+    conditions : str
+        The measurement's conditions, as the model runs them.
+    measured : float
+        The published value [the unit of ``quantity``].
+    low, high : float
+        The band the model must fall in [the unit of ``quantity``].
+    source : str
+        Where the value was read.
+    kind : str
+        ``"validation"`` or ``"calibration"`` (:data:`KINDS`).
+    band : str
+        Where the band comes from: the source's own, or an assumption (said so).
+    model : callable
+        Returns the model's value (same unit as ``measured``).
+    """
+
+    name: str
+    quantity: str
+    conditions: str
+    measured: float
+    low: float
+    high: float
+    source: str
+    kind: str
+    band: str
+    model: Callable[[], float] = field(repr=False, compare=False)
+
+    def __post_init__(self):
+        if self.kind not in KINDS:
+            raise ValueError(f"kind must be one of {KINDS}, got {self.kind!r}")
+        if not self.low <= self.high:
+            raise ValueError(f"{self.name}: band must have low <= high, got {self.low, self.high}")
+
+    def agrees(self, value: float) -> bool:
+        """Whether ``value`` lies in the band, low to high.
+
+        Parameters
+        ----------
+        value : float
+            The model's value [the unit of ``quantity``].
+        """
+        return bool(self.low <= value <= self.high)

@@ -1,0 +1,222 @@
+"""The published measurements, each a :class:`~studies.validation.comparison.Comparison`
+with its source, its band and the model's run under its conditions.
+"""
+
+from __future__ import annotations
+
+import math
+
+from ball import BALL_PRESETS
+from ball.catalog import DROP_COMPRESSION, DROP_CONTACT_TIME
+from studies.validation.comparison import Comparison
+from studies.validation.conditions import (
+    BALL,
+    CROSS_BED,
+    DROP_1M_SPEED,
+    HAMORI,
+    HAMORI_BAND,
+    HAMORI_RACKETS,
+    SEED_BED,
+    STROKE_SPEEDS,
+    _clamped,
+    _grabiner_ratio,
+    _hamori_ms,
+    _ra_frequency,
+    _ra_groups,
+    _savage_drops,
+    _twu_part_1,
+    _twu_part_2,
+    _typical,
+    _wall_compression_mm,
+    _wall_contact_ms,
+    _wall_cor,
+)
+
+
+def _about(value: float, half: float) -> tuple[float, float, float]:
+    return value, value - half, value + half
+
+
+_ITF = "ITF Rules of Tennis, Appendix I (e = sqrt(h / 254 cm), derived)"
+_CROSS_PAGE = "R. Cross, physics.usyd.edu.au/~cross/tennis.html (own text)"
+_SEED = "R. Cross, Am. J. Phys. 68 (2000), Sec. III"
+_TWU_1 = "TWU 'Racquet Control' part 1 (Cross & Lindsey; own text)"
+_TWU_2 = "TWU 'Racquet Control' part 2 (own text)"
+_RACQUETTECH = "racquettech.com, 'ball speeds' (own text)"
+_SAVAGE = "Savage, PhD thesis, RMIT 2006, appendix (own text)"
+_ABOUT_E = "assumption: 'about' read as +/-0.05"
+
+
+def _itf(name: str, label: str) -> Comparison:
+    low, high = BALL_PRESETS[name].bands.cor
+    return Comparison(
+        f"rebound-{name}", f"rebound e, {label} [-]", "254 cm drop onto concrete, 7.06 m/s",
+        0.5 * (low + high), low, high, _ITF, "calibration", "the ITF band",
+        lambda: _wall_cor(name),
+    )  # fmt: skip
+
+
+def _savage(label: str, free_hz: float, grip: str, held_hz: float, band) -> Comparison:
+    drop = 100.0 * (1.0 - held_hz / free_hz)
+    low, high, note = band if band else (drop - 2.0, drop + 2.0, "assumption: +/-2 points")
+    return Comparison(
+        f"savage-{label}-{grip}", "first-mode drop, held vs free [%]",
+        f"racket {label} ({free_hz} Hz free), {grip} grip (racket.GRIPS)",
+        drop, low, high, _SAVAGE, "calibration", note,
+        lambda: _savage_drops()[label, grip],
+    )  # fmt: skip
+
+
+def _hamori(racket: str, strings: str, tension_lb: float, stroke: str, ms: float):
+    model_name = HAMORI_RACKETS[racket][0]
+    speed = STROKE_SPEEDS[stroke]
+    return Comparison(
+        f"hamori-{racket.split()[-1].lower()}-{strings}-{tension_lb:g}-{stroke}",
+        f"dwell time, {stroke} [ms]",
+        f"{racket} ({model_name}, TWU sheet), {strings} {tension_lb:g} lb, hand-held, "
+        f"{speed:g} m/s closing (assumed), string centre",
+        ms, ms - 1e3 * HAMORI_BAND, ms + 1e3 * HAMORI_BAND, HAMORI, "validation",
+        "assumption: +/-0.5 ms", lambda: _hamori_ms(racket, tension_lb, stroke),
+    )  # fmt: skip
+
+
+def _ra(ra: int) -> Comparison:
+    def measured():
+        return _ra_groups().loc[ra]
+
+    row = measured()
+    return Comparison(
+        f"ra-{ra}", f"free first frequency at RA {ra} [Hz]",
+        f"the {int(row['size'])} TWU rackets of RA {ra} vs a spec-sheet racket of RA {ra}",
+        float(row["mean"]), float(row["mean"] - row["std"]), float(row["mean"] + row["std"]),
+        "TWU racquet table (tests/data/twu_racquets_half.csv), mean +/- standard deviation "
+        "(derived)", "calibration", "the table's scatter", lambda: _ra_frequency(ra),
+    )  # fmt: skip
+
+
+def comparisons() -> list[Comparison]:
+    """Every comparison, calibration and validation (the TWU table is read here)."""
+    contact, contact_band = DROP_CONTACT_TIME
+    compression = DROP_COMPRESSION[0]
+    items = [
+        _itf("itf-type-1", "ITF type 1"),
+        _itf("itf-type-2", "ITF type 2"),
+        _itf("itf-type-3", "ITF type 3"),
+        _itf("high-altitude", "high altitude"),
+        Comparison(
+            "concrete-contact-time", "contact time on concrete [ms]",
+            "ITF type 2, 7.06 m/s", 1e3 * contact, 1e3 * contact_band[0],
+            1e3 * contact_band[1], _SEED + ", citing Cross 1999", "calibration",
+            "assumption: 'about 4 ms' read as +/-0.5 ms", _wall_contact_ms,
+        ),
+        Comparison(
+            "concrete-compression", "compression on concrete [mm]", "ITF type 2, 7.06 m/s",
+            1e3 * compression, 1e3 * compression - 1.0, 1e3 * compression + 1.0, _CROSS_PAGE,
+            "calibration", "assumption: 'about 6 mm' read as +/-1 mm (the presets accept "
+            "5-8.5 mm)", _wall_compression_mm,
+        ),
+        Comparison(
+            "concrete-energy-loss", "energy lost on concrete [%]",
+            "ITF type 2, 254 cm drop, 7.06 m/s", *_about(45.0, 5.0), _CROSS_PAGE,
+            "calibration", "assumption: 'about 45 %' read as +/-5 points; the COR at "
+            "7.06 m/s is set by the ITF band", lambda: 100.0 * (1.0 - _wall_cor(BALL) ** 2),
+        ),
+        *(
+            _savage(label, free_hz, grip, held_hz, band)
+            for label, free_hz, grip, held_hz, band in (
+                ("A", 183.75, "light", 170.25, None),
+                ("A", 183.75, "medium", 165.0, None),
+                ("A", 183.75, "tight", 144.5, (20.0, 22.7, "his 'about 142-147 Hz'")),
+                ("B", 162.5, "light", 149.0, None),
+                ("B", 162.5, "medium", 146.25, None),
+                ("B", 162.5, "tight", 142.5, None),
+            )
+        ),
+        *(_ra(ra) for ra in (60, 66, 72)),
+        Comparison(
+            "seed-clamped-e", "e on head-clamped strings [-]",
+            f"ITF type 2, {DROP_1M_SPEED:.2f} m/s (low speed, assumed), uniform bed "
+            f"{SEED_BED:.0e} N/m, string centre", *_about(0.88, 0.02), _SEED, "validation",
+            "assumption: 'about 0.88' read as +/-0.02", lambda: float(_clamped(SEED_BED).e),
+        ),
+        Comparison(
+            "cross-1m-drop-e", "e on head-clamped strings, 1 m drop [-]",
+            f"ITF type 2, {DROP_1M_SPEED:.2f} m/s, uniform bed {CROSS_BED:.0e} N/m, "
+            "string centre", math.sqrt(0.70), math.sqrt(0.65), math.sqrt(0.75), _CROSS_PAGE,
+            "validation", "assumption: bounce 'about 0.70 m' read as 0.65-0.75 m "
+            "(e = sqrt(h), derived)", lambda: float(_clamped(CROSS_BED).e),
+        ),
+        Comparison(
+            "strings-contact-time", "contact time on strings [ms]",
+            f"ITF type 2, {DROP_1M_SPEED:.2f} m/s (low speed, assumed), head-clamped, "
+            f"uniform bed {SEED_BED:.0e} N/m", *_about(5.0, 0.5), _SEED + ", citing Cross 1999",
+            "validation", "assumption: 'about 5 ms' read as +/-0.5 ms",
+            lambda: 1e3 * float(_clamped(SEED_BED).contact_time),
+        ),
+        Comparison(
+            "grabiner-gripped-vs-free", "rebound speed, gripped / free [-]",
+            "Pure Drive (2021), medium grip vs free, ITF type 2 at 10.62 m/s, string centre",
+            1.0, 0.98, 1.02, "Grabiner, Groppel & Campbell, Med. Sci. Sports Exerc. 15 (1983) "
+            "542 (abstract)", "validation", "assumption: 'no significant difference' read as "
+            "+/-2 %", _grabiner_ratio,
+        ),
+        *(
+            _hamori(*row)
+            for row in (
+                ("Babolat AeroPro Drive", "polyester", 67.0, "forehand", 3.8),
+                ("Babolat AeroPro Drive", "polyester", 67.0, "volley", 3.75),
+                ("Babolat AeroPro Drive", "polyester", 67.0, "serve", 4.0),
+                ("Babolat AeroPro Drive", "polyester", 37.0, "forehand", 4.9),
+                ("Babolat AeroPro Drive", "polyester", 37.0, "volley", 4.1),
+                ("Babolat AeroPro Drive", "polyester", 37.0, "serve", 4.0),
+                ("Wilson Pro Staff 85", "polyester", 54.0, "forehand", 3.6),
+                ("Wilson Pro Staff 85", "gut", 54.0, "forehand", 4.5),
+                ("Wilson Pro Staff 95", "gut", 54.0, "forehand", 4.6),
+                ("Wilson Pro Staff 97", "gut", 54.0, "forehand", 4.3),
+                ("Wilson Pro Staff 97", "gut", 54.0, "volley", 4.1),
+                ("Wilson Pro Staff 97", "gut", 54.0, "serve", 3.7),
+            )
+        ),
+        Comparison(
+            "twu-held-centre", "e_A at mid-face [-]",
+            "hand-held 291 g racket (Pure Drive sheet, SW 315), medium grip, ITF type 2, "
+            "16.5 m/s", *_about(0.4, 0.05), _TWU_1, "validation", _ABOUT_E,
+            lambda: float(_twu_part_1()["plain"][0]),
+        ),
+        Comparison(
+            "twu-held-3-oclock", "e_A near the frame at 3 / 9 o'clock [-]",
+            "as mid-face, 8 cm off the axis (TWU's largest offset)", 0.15, 0.1, 0.2, _TWU_1,
+            "validation",
+            "the source's range 0.1-0.2", lambda: float(_twu_part_1()["plain"][1]),
+        ),
+        Comparison(
+            "twu-held-3-oclock-lead", "e_A near the frame at 3 / 9 o'clock, 26.8 g lead [-]",
+            "as above, 13.4 g at 3 and at 9 o'clock", *_about(0.3, 0.05), _TWU_1,
+            "validation", _ABOUT_E, lambda: float(_twu_part_1()["lead"][1]),
+        ),
+        *(
+            Comparison(
+                f"twu-pivot-{where}", f"e_A at the {where}, pivoting about the handle end [-]",
+                f"Pure Drive (2021) pinned at the butt, free to roll (approximation: a stiff "
+                f"2 cm grip), ITF type 2, 17.9 m/s, {where}", value, low, high, _TWU_2,
+                "validation",
+                note, lambda i=i: float(_twu_part_2()[i]),
+            )
+            for i, where, value, low, high, note in (
+                (0, "tip", 0.15, 0.1, 0.2, "the source's range 0.1-0.2"),
+                (1, "centre", *_about(0.4, 0.05), _ABOUT_E),
+                (2, "throat", *_about(0.5, 0.05), _ABOUT_E),
+                (3, "periphery", 0.15, 0.1, 0.2, "the source's range 0.1-0.2 (3 o'clock)"),
+            )
+        ),
+        *(
+            Comparison(
+                f"typical-{where}", f"e_A at the {where}, a typical racket [-]",
+                f"Pure Drive (2021), hand-held, medium grip, ITF type 2, 16.5 m/s (assumed), "
+                f"{where}", *_about(value, 0.05), _RACQUETTECH, "validation", _ABOUT_E,
+                lambda i=i: float(_typical()[i]),
+            )
+            for i, where, value in ((0, "tip", 0.1), (1, "centre", 0.45), (2, "throat", 0.50))
+        ),
+    ]  # fmt: skip
+    return items

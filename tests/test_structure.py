@@ -1,0 +1,174 @@
+"""The code's shape (issue 29): no module over 500 lines, no import circle between modules,
+and the physics packages (``ball``, ``beam``, ``racket``, ``common``) never importing
+plotting, tables or the studies on top of them.
+
+The import graph is read from the sources with :mod:`ast`: every import, at module level or
+inside a function (a lazy import that closes a circle still closes it), each resolved to the
+module that defines the imported name (``from racket import Racket`` is an edge to
+``racket.racket``, not to the package's ``__init__`` that re-exports it).
+"""
+
+import ast
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+PACKAGES = ("ball", "beam", "common", "racket", "studies")
+PHYSICS = ("ball", "beam", "common", "racket")
+"""The layers below ``studies``: SI floats and arrays, no plots and no tables."""
+
+FORBIDDEN = ("matplotlib", "pandas", "studies")
+MOST_LINES = 500
+
+
+def _modules() -> dict[str, Path]:
+    """Every module of the packages: dotted name -> file (a package is its ``__init__``)."""
+    found = {}
+    for package in PACKAGES:
+        for path in sorted((ROOT / package).rglob("*.py")):
+            parts = path.relative_to(ROOT).with_suffix("").parts
+            found[".".join(parts[:-1] if parts[-1] == "__init__" else parts)] = path
+    return found
+
+
+MODULES = _modules()
+_TREES: dict[str, ast.Module] = {}
+
+
+def _tree(module: str) -> ast.Module:
+    if module not in _TREES:
+        _TREES[module] = ast.parse(MODULES[module].read_text(), str(MODULES[module]))
+    return _TREES[module]
+
+
+def _package(module: str) -> str:
+    """The package a relative import in ``module`` starts from."""
+    return module if MODULES[module].name == "__init__.py" else module.rpartition(".")[0]
+
+
+def _absolute(module: str, node: ast.ImportFrom) -> str:
+    """The module an ``import from`` names, relative imports resolved."""
+    if not node.level:
+        return node.module or ""
+    base = _package(module)
+    for _ in range(node.level - 1):
+        base = base.rpartition(".")[0]
+    return f"{base}.{node.module}" if node.module else base
+
+
+def _defining(module: str, name: str, seen=()) -> str:
+    """The module that defines ``name`` as ``module`` offers it: followed through the
+    package's re-exports (``from racket.racket import Racket`` in ``racket/__init__.py``).
+    """
+    if f"{module}.{name}" in MODULES:
+        return f"{module}.{name}"
+    for node in _tree(module).body:
+        if isinstance(node, ast.ImportFrom) and (module, name) not in seen:
+            source = _absolute(module, node)
+            for alias in node.names:
+                if (alias.asname or alias.name) == name and source in MODULES:
+                    return _defining(source, alias.name, (*seen, (module, name)))
+    return module
+
+
+def _imports(module: str):
+    """Each import anywhere in ``module``: (the module as written, the module it reaches in
+    the packages or None)."""
+    for node in ast.walk(_tree(module)):
+        if isinstance(node, ast.Import):
+            for alias in node.names:
+                yield alias.name, _known(alias.name)
+        elif isinstance(node, ast.ImportFrom):
+            source = _absolute(module, node)
+            for alias in node.names:
+                if source in MODULES:
+                    yield source, _defining(source, alias.name)
+                else:
+                    yield source, _known(source)
+
+
+def _known(name: str) -> str | None:
+    """``name`` or its closest enclosing module among the packages', None outside them."""
+    while name and name not in MODULES:
+        name = name.rpartition(".")[0]
+    return name or None
+
+
+def _graph() -> dict[str, set[str]]:
+    return {
+        module: {target for _, target in _imports(module) if target not in (None, module)}
+        for module in MODULES
+    }
+
+
+def _circles(graph: dict[str, set[str]]) -> list[list[str]]:
+    """The strongly connected components of more than one module (Tarjan's algorithm)."""
+    index, low, stack, on_stack, found = {}, {}, [], set(), []
+
+    def visit(node):
+        index[node] = low[node] = len(index)
+        stack.append(node)
+        on_stack.add(node)
+        for nxt in sorted(graph.get(node, ())):
+            if nxt not in index:
+                visit(nxt)
+                low[node] = min(low[node], low[nxt])
+            elif nxt in on_stack:
+                low[node] = min(low[node], index[nxt])
+        if low[node] == index[node]:
+            component = []
+            while True:
+                top = stack.pop()
+                on_stack.discard(top)
+                component.append(top)
+                if top == node:
+                    break
+            if len(component) > 1:
+                found.append(sorted(component))
+
+    for node in sorted(graph):
+        if node not in index:
+            visit(node)
+    return found
+
+
+def _lines(path: Path) -> int:
+    return len(path.read_text().splitlines())
+
+
+def test_the_packages_are_found():
+    assert {"racket.racket", "racket.system", "studies.cli", "beam", "common.units"} <= set(MODULES)
+
+
+def test_no_module_over_500_lines():
+    long = {
+        str(path.relative_to(ROOT)): _lines(path)
+        for path in MODULES.values()
+        if _lines(path) > MOST_LINES
+    }
+    assert long == {}
+
+
+def test_no_import_circle():
+    assert _circles(_graph()) == []
+
+
+def test_the_circle_finder_finds_a_circle_and_resolves_re_exports():
+    assert _circles({"a": {"b"}, "b": {"c"}, "c": {"a"}, "d": {"a"}}) == [["a", "b", "c"]]
+    assert _circles({"a": {"b"}, "b": set()}) == []
+    assert _defining("racket", "Racket") == "racket.racket"  # through racket/__init__.py
+    assert "racket.hand" in _graph()["racket.system"]  # the hand from its own module
+    assert "racket.system" in _graph()["racket.racket"]
+
+
+@pytest.mark.parametrize("package", PHYSICS)
+def test_the_physics_never_imports_plots_tables_or_studies(package):
+    reached = {
+        f"{module}: {name}"
+        for module in MODULES
+        if module.split(".")[0] == package
+        for name, _ in _imports(module)
+        if name.split(".")[0] in FORBIDDEN
+    }
+    assert reached == set()
