@@ -12,13 +12,17 @@ drop), that is a COR of 0.729-0.761 at the drop's impact speed, sqrt(2 g 2.54 m)
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
-import pandas as pd
 
 from ball import BALL_PRESETS, WALL, Ball, MonotoneLaw, collide
 from ball.catalog import BALL_MASS, ITF_DROP_SPEED, ITF_FORCE
 from common.checks import shown
 from common.checks import speed as check_speed
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 DEFAULT_SPEEDS = (ITF_DROP_SPEED, 10.0, 15.0, 20.0, 25.0, 30.0, 40.0, 50.0, 60.0, 70.0)
 """Impact speeds [m/s] of the default table: the ITF drop, then groundstroke to serve and
@@ -37,6 +41,8 @@ def preset_table() -> pd.DataFrame:
         (``itf_cor_low``, ``itf_cor_high``; empty for a ball no type admits) and
         ``sources``.
     """
+    import pandas as pd
+
     rows = []
     for name, preset in BALL_PRESETS.items():
         law = preset.build()
@@ -100,6 +106,8 @@ def rigid_bounce_table(ball: Ball, speeds=DEFAULT_SPEEDS) -> pd.DataFrame:
         Columns ``speed_m_s``, ``e`` (rebound speed / impact speed), ``contact_time_s``,
         ``peak_force_N`` and ``peak_compression_m``.
     """
+    import pandas as pd
+
     if np.size(speeds) == 0 or np.ndim(speeds) > 1:
         raise ValueError(f"speeds must be one speed or a list of them [m/s], got {shown(speeds)}")
     speeds = [check_speed("speed", v) for v in np.atleast_1d(speeds)]

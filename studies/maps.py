@@ -10,7 +10,9 @@ area*, where e_A is within :data:`SWEET_FRACTION` of its largest value.
 
 from __future__ import annotations
 
+from concurrent.futures import Executor
 from dataclasses import dataclass
+from types import SimpleNamespace
 
 import numpy as np
 
@@ -20,12 +22,11 @@ from common.checks import speed as check_speed
 from common.units import MPH
 from racket import TENNIS_BALL_RADIUS, Racket, Swing, impact
 from studies.landmarks import hand_pivot, percussion_centre, whole
+from studies.scale import impacts_of, run_impacts
+from studies.sweeps import BALL_SPEED
 
 SWEET_FRACTION = 0.05
 """The sweet area is where e_A is within this fraction of its largest value on the map."""
-
-MAP_SPEED = 16.5
-"""Default ball speed of a map [m/s]: TWU's test speed (the ball hits a racket at rest)."""
 
 MAP_GRID = (15, 9)
 """Default grid (along the racket, across it): TWU measures 15 points over a face."""
@@ -146,10 +147,16 @@ class FaceMap:
         columns["in_sweet_area"] = self.e_A.ravel() >= self.sweet_threshold
         return pd.DataFrame(columns)
 
-    def summary(self) -> list[str]:
+    def summary(self, mph: bool = False) -> list[str]:
         """The map in a few lines: where e_A is largest, the sweet area, e_A at the centre
         and at 3 o'clock near the frame, the node line and the centre of percussion.
+
+        Parameters
+        ----------
+        mph : bool
+            Speeds in mph (as the user typed them), else in m/s.
         """
+        size, unit = (MPH, "mph") if mph else (1.0, "m/s")
         i, j = np.unravel_index(np.argmax(self.e_A), self.e_A.shape)
 
         def butt(x):
@@ -163,16 +170,16 @@ class FaceMap:
         else:
             percussion = f"centre of percussion (hand pivot) at {butt(self.center_of_percussion)}"
         lines = [
-            f"ball at {self.speed:g} m/s on a racket at rest; grid {self.e_A.shape[0]} x "
-            f"{self.e_A.shape[1]} over the face (ball centre >= {100 * self.margin:.1f} cm "
-            "inside the frame)",
+            f"ball at {self.speed / size:.4g} {unit} on a racket at rest; grid "
+            f"{self.e_A.shape[0]} x {self.e_A.shape[1]} over the face (ball centre >= "
+            f"{100 * self.margin:.1f} cm inside the frame)",
             f"largest e_A on the grid {self.e_A[i, j]:.4f} at {butt(self.positions[i])}, "
             f"{abs(100 * self.offsets[i, j]):.1f} cm off the axis",
             f"e_A at the string centre, {butt(self.strings.center)}: {self.e_A_centre:.4f} on "
             f"the axis, {self.e_A_side:.4f} at 3 o'clock ({100 * self.side_offset:.1f} cm off)",
             f"sweet area (e_A within {100 * SWEET_FRACTION:g} % of its largest) "
             f"{self.sweet_area_cm2:.1f} cm^2",
-            (f"node of mode 1 at {nodes}" if nodes else "no node on the strings")
+            (f"node of the first mode at {nodes}" if nodes else "no node on the strings")
             + f"; {percussion}",
             f"largest twist rate {np.abs(self.roll_rate).max():.1f} rad/s; vibration energy "
             f"{100 * self.vibration_energy.min():.1f}-{100 * self.vibration_energy.max():.1f} "
@@ -181,10 +188,11 @@ class FaceMap:
         if self.exit_speed_swung is not None:
             i, j = np.unravel_index(np.argmax(self.exit_speed_swung), self.e_A.shape)
             lines.append(
-                f"swung at {self.swing.head_speed:.4g} m/s ({self.swing.head_speed / MPH:.1f} "
-                f"mph) head speed about a pivot {-100 * self.swing.pivot_from_butt:g} cm beyond "
-                f"the butt: exit speed {np.min(self.exit_speed_swung):.2f}-"
-                f"{np.max(self.exit_speed_swung):.2f} m/s, fastest at {butt(self.positions[i])}"
+                f"swung at {self.swing.head_speed / size:.4g} {unit} head speed about a pivot "
+                f"{-100 * self.swing.pivot_from_butt:g} cm beyond the butt: exit speed "
+                f"{np.min(self.exit_speed_swung) / size:.2f}-"
+                f"{np.max(self.exit_speed_swung) / size:.2f} {unit}, fastest at "
+                f"{butt(self.positions[i])}"
             )
         return lines
 
@@ -246,11 +254,12 @@ def face_points(racket: Racket, grid=MAP_GRID, margin: float = 0.0):
 def face_map(
     racket: Racket,
     ball: Ball,
-    speed: float = MAP_SPEED,
+    speed: float = BALL_SPEED,
     *,
     swing: Swing | None = None,
     grid=MAP_GRID,
     margin: float | None = None,
+    executor: Executor | None = None,
 ) -> FaceMap:
     """e, e_A, exit speed, vibration and twist over a grid of the string face.
 
@@ -260,7 +269,8 @@ def face_map(
         Its beam's roll inertia must be modelled (a spec-sheet racket).
     ball : Ball
     speed : float
-        Ball speed towards the strings [m/s] (default 16.5, TWU's test speed).
+        Ball speed towards the strings [m/s] (default :data:`studies.sweeps.BALL_SPEED`,
+        TWU's test speed).
     swing : Swing, optional
         A swing of the (free) racket about a pivot for the swung exit speed, each point at
         its own speed (the ball coming in at ``speed``); None (default) for none.
@@ -271,6 +281,9 @@ def face_map(
         How far inside the string bed's edge the ball's centre stays [m]; default the
         ball's radius (the whole ball on the strings), or the tennis ball's
         (:data:`racket.TENNIS_BALL_RADIUS`) for a ball without one.
+    executor : concurrent.futures.Executor, optional
+        Run the impacts on it, in chunks (:func:`studies.scale.run_impacts`); bit-identical
+        to the run in this process (the default).
 
     Returns
     -------
@@ -321,11 +334,12 @@ def face_map(
     centre = point(nx % 2 and ny % 2, middle + ny // 2, racket.strings.center, 0.0)
     side_at = point(nx % 2, middle + ny - 1, racket.strings.center, side)
     axis = [point(ny % 2, i * ny + ny // 2, p, 0.0) for i, p in enumerate(positions)]
-    hits = impact(racket, ball, np.r_[x, extra_x], speed, offset=np.r_[y, extra_y])
-    swung = None
+    calls = [impacts_of(racket, ball, np.r_[x, extra_x], speed, np.r_[y, extra_y])]
     if swing is not None:
-        moved = swing.impact_kwargs(racket, x)
-        swung = impact(racket, ball, x, speed, offset=y, **moved)
+        calls.append(impacts_of(racket, ball, x, speed, y, swing))
+    hits, *swung = (SimpleNamespace(**part) for part in
+                    run_impacts(calls, _face_fields, executor, progress=False))  # fmt: skip
+    swung = swung[0] if swung else None
 
     def on_grid(values, result=hits):  # the grid's points lead each call's impacts
         return np.reshape(np.broadcast_to(values, result.e.shape)[: x.size], offsets.shape)
@@ -360,6 +374,15 @@ def face_map(
         length=racket.beam.length,
         support=racket.support,
     )
+
+
+def _face_fields(result) -> dict:
+    """The numbers of an impact that a :class:`FaceMap` reads (for
+    :func:`studies.scale.run_impacts`).
+    """
+    names = ("e", "e_A", "ball_rebound", "vibration_energy", "energy_initial", "roll_rate",
+             "v_cm", "omega")  # fmt: skip
+    return {name: np.atleast_1d(getattr(result, name)) for name in names}
 
 
 def _sweet_area(positions, half_width, values) -> tuple[float, float]:
@@ -401,13 +424,15 @@ def _sweet_area(positions, half_width, values) -> tuple[float, float]:
 def compare_summary(rackets, table, ball: Ball, speed: float):
     """One row per racket of a :func:`studies.sweeps.compare` table: the largest e and
     where, e at the string centre and at the tip end of the strings, the largest exit speed
-    [mph] and where (of a swing, if the table has one), the first mode's node and the centre
+    [mph] and where (of a swing, if the table has one, with its head speed; without one the
+    columns say ``largest_rebound_at_rest``: the ball's rebound off the racket at rest),
+    the first mode's node and the centre
     of percussion for the hand (:func:`studies.landmarks.percussion_centre`, from the
     table's impacts, or for a swung table from impacts at the same points of the racket at
-    rest hit at ``speed`` or :data:`MAP_SPEED`), and, for rackets whose
+    rest hit at ``speed`` or :data:`BALL_SPEED`), and, for rackets whose
     roll inertia is modelled, the off-axis power (e_A at the centre's distance from the
     tip, at 3 o'clock with the ball's edge on the frame) and the sweet area of the
-    :func:`face_map` of the racket at rest hit at ``speed`` (or :data:`MAP_SPEED` when
+    :func:`face_map` of the racket at rest hit at ``speed`` (or :data:`BALL_SPEED` when
     ``speed`` is 0, a serve), NaN otherwise.
 
     Parameters
@@ -422,6 +447,7 @@ def compare_summary(rackets, table, ball: Ball, speed: float):
     import pandas as pd
 
     rows = []
+    swung = bool(np.any(table["swing_speed_m_s"].to_numpy() != 0.0))
     for label, group in table.groupby("racket", sort=False):
         racket = rackets[label]
         best = group.loc[group["e"].idxmax()]
@@ -429,7 +455,7 @@ def compare_summary(rackets, table, ball: Ball, speed: float):
         node = racket.beam.modes.nodes(1)[0]  # the one nearer the tip, on the strings
         x = group["position_from_tip_m"].to_numpy()
         if np.any(group["swing_speed_m_s"].to_numpy() != 0.0):  # the racket at rest instead
-            hit = impact(racket, ball, x, speed or MAP_SPEED)
+            hit = impact(racket, ball, x, speed or BALL_SPEED)
             v_cm, omega = hit.v_cm, hit.omega
         else:
             v_cm, omega = group["v_cm_m_s"].to_numpy(), group["omega_rad_s"].to_numpy()
@@ -458,8 +484,11 @@ def compare_summary(rackets, table, ball: Ball, speed: float):
             "sweet_area_cm2": np.nan,
         }
         if racket.beam.roll_inertia is not None:  # the racket at rest (TWU's speed for a serve)
-            face = face_map(racket, ball, speed or MAP_SPEED)
+            face = face_map(racket, ball, speed or BALL_SPEED)
             row["e_A_centre"], row["e_A_3_oclock"] = face.e_A_centre, face.e_A_side
             row["sweet_area_cm2"] = face.sweet_area_cm2
+        if not swung:  # no swing, no exit speed: the ball's rebound off the racket at rest
+            del row["head_speed_mph"]
+            row = {k.replace("largest_exit", "largest_rebound_at_rest"): v for k, v in row.items()}
         rows.append(row)
     return pd.DataFrame(rows)

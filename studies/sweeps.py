@@ -9,25 +9,38 @@ from __future__ import annotations
 
 import itertools
 import re
-import sys
 import warnings
 from collections.abc import Mapping, Sequence
 from concurrent.futures import Executor
 from dataclasses import replace
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
 
 from ball import Ball
 from common.checks import in_range
 from common.checks import speed as check_speed
-from racket import Racket, Swing, impact
+from racket import Racket, Swing
 from racket.solver import F1_MIN
 from racket.specs.sheet import SPEC_RANGES
 from racket.specs.strings import with_tension
 from racket.swing import check_swung_support
 from racket.swing import equal_effort as same_effort
-from studies.tables import impact_columns, impact_table
+from studies.scale import impacts_of, run_impacts
+from studies.tables import impact_columns
+
+if TYPE_CHECKING:
+    import pandas as pd
+
+BALL_SPEED = 16.5
+"""The ball speed [m/s] towards the strings of every study of a racket at rest when none is
+given (``sweep``, ``compare``, ``map``, ``sweetspots``, ``feel``; not ``paper``, which uses
+the paper's own speeds).  TWU's test speed (16.5 +/- 1 m/s, "Racquet Control" part 1;
+:data:`studies.validation.TWU_SPEED`), so that e_A and the sweet area can be read beside
+the published maps.  An assumption for play, labelled as such: a groundstroke meets the
+racket faster, 30-45 m/s relative to it (the ball's 15-25 m/s plus the head's 15-20 m/s;
+:data:`studies.validation.STROKE_SPEEDS`); e falls only a little with speed over that
+range (the ball's COR), and a swing (``--swing-speed``) gives the stroke's own speeds."""
 
 TENSION_RANGE = SPEC_RANGES["tension_n"][:2]
 """String tension [N] a sweep accepts: 20-80 lb (strung rackets: 40-65 lb), the spec sheets'
@@ -133,21 +146,11 @@ def _ball_label(item) -> tuple[str, Ball]:
     return repr(item.law), item
 
 
-def _progress(iterable, total: int, progress: bool | None):
-    """A tqdm bar on a terminal (or when asked), silence otherwise."""
-    show = sys.stderr.isatty() if progress is None else progress
-    if not show or total < 2:
-        return iterable
-    from tqdm import tqdm
-
-    return tqdm(iterable, total=total, desc="sweep", unit="run")
-
-
 def sweep(
     racket: Racket,
     ball: Ball | Sequence[Ball] | Mapping[str, Ball],
     positions=None,
-    speed: float | Sequence[float] = 10.0,
+    speed: float | Sequence[float] = BALL_SPEED,
     *,
     string_stiffness=None,
     tension=None,
@@ -169,7 +172,7 @@ def sweep(
     positions : array_like, optional
         Impact points [m from the tip]; default 101 points across the string bed.
     speed : float or sequence
-        Ball speed towards the strings [m/s].
+        Ball speed towards the strings [m/s] (default :data:`BALL_SPEED`).
     string_stiffness : float or sequence, optional
         String-bed stiffness [N/m], in [1e3, 1e7].
     tension : float or sequence, optional
@@ -193,10 +196,11 @@ def sweep(
     progress : bool, optional
         Show a progress bar; default: when standard error is a terminal.
     executor : concurrent.futures.Executor, optional
-        Run the grid points on it (e.g. a ``ProcessPoolExecutor``, forked or spawned: the
-        solver's threads end with each call; or a Dask cluster's ``client.get_executor()``);
-        rackets, balls and their modes are picklable.  Default: one after the other in this
-        process.
+        Run the impacts on it, in chunks of at most :data:`studies.scale.TASK_IMPACTS`
+        (e.g. a ``ProcessPoolExecutor``, or a Dask cluster's ``client.get_executor()``;
+        :func:`studies.scale.executor_for` makes either): each worker's kernel on one
+        thread, each racket's caches computed once and sent with it; bit-identical to the
+        run in this process.  Default: one grid point after the other in this process.
 
     Returns
     -------
@@ -204,6 +208,8 @@ def sweep(
         One row per impact: :data:`COLUMNS`, then one column per parameter that varies.
         At most :data:`MAX_IMPACTS` rows (positions times the combinations).
     """
+    import pandas as pd
+
     if positions is None:
         positions = np.linspace(*racket.strings.extent, 101)
     grid = {
@@ -247,31 +253,25 @@ def sweep(
         if (ks, tn, freq, sup) not in variants:
             variants[ks, tn, freq, sup] = _variant(racket, ks, tn, freq, sup)
         combos.append((sp, variants[ks, tn, freq, sup], label, b, tn))
-    runs = [(variant, b, positions, sp, offset, swing) for sp, variant, _, b, _ in combos]
+    calls = [impacts_of(v, b, positions, sp, offset, swing) for sp, v, _, b, _ in combos]
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
-        if executor is None:
-            parts = (_impact_columns(*run) for run in runs)
-        else:
-            parts = (f.result() for f in [executor.submit(_impact_columns, *r) for r in runs])
-        columns = {name: [] for name in COLUMNS}
-        labels = {name: [] for name in varying}
-        for (sp, variant, label, _, tn), part in zip(
-            combos, _progress(parts, len(combos), progress), strict=True
-        ):
-            for name in COLUMNS:
-                columns[name].append(part[name])
-            values = {
-                "speed": sp,
-                "string_stiffness": variant.strings.stiffness,
-                "tension": tn,
-                "f1": variant.beam.modes.frequencies[0],
-                "support": variant.support,
-                "ball": label,
-            }
-            for name in varying:
-                labels[name].append(values[name])
+        parts = run_impacts(calls, impact_columns, executor, progress, "sweep")
     _first_of_each_kind(caught)
+    columns = {name: [part[name] for part in parts] for name in COLUMNS}
+    del parts
+    labels = {name: [] for name in varying}
+    for sp, variant, label, _, tn in combos:
+        values = {
+            "speed": sp,
+            "string_stiffness": variant.strings.stiffness,
+            "tension": tn,
+            "f1": variant.beam.modes.frequencies[0],
+            "support": variant.support,
+            "ball": label,
+        }
+        for name in varying:
+            labels[name].append(values[name])
     # One column at a time, each joined and its parts let go: the peak memory is the table
     # and one column more (a study of 1e6 impacts stays near 150 MB).
     count = np.array([part.size for part in columns[COLUMNS[0]]])
@@ -301,22 +301,17 @@ def _first_of_each_kind(caught) -> None:
             warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
 
 
-def _impact_columns(racket, ball, positions, speed, offset, swing) -> dict:
-    """The table columns of one grid point (module level, so that an executor can pickle
-    it).
-    """
-    moved = {} if swing is None else swing.impact_kwargs(racket, positions)
-    return impact_columns(impact(racket, ball, positions, speed, offset=offset, **moved))
-
-
 def compare(
     rackets: Mapping[str, Racket],
     ball: Ball,
-    speed: float = 10.0,
+    speed: float = BALL_SPEED,
     points: int = 101,
     swing: Swing | None = None,
     tension: float | None = None,
     equal_effort: bool = False,
+    *,
+    progress: bool | None = False,
+    executor: Executor | None = None,
 ) -> pd.DataFrame:
     """Impacts across the string bed of each racket: one sweep table, a ``racket`` column.
 
@@ -325,7 +320,8 @@ def compare(
     rackets : mapping label -> Racket
     ball : Ball
     speed : float
-        Ball speed towards the strings [m/s] (0 allowed with a swing).
+        Ball speed towards the strings [m/s] (0 allowed with a swing; default
+        :data:`BALL_SPEED`).
     points : int
         Impact points across each racket's string bed, in [2, 100000]; times the rackets,
         at most :data:`MAX_IMPACTS`.
@@ -338,7 +334,14 @@ def compare(
         same effort, its head speed scaled by its swingweight
         (:func:`racket.swing.equal_effort`, Cross and Bower 2006).  The table gets a
         ``head_speed_m_s`` column with a swing.
+    progress : bool, optional
+        Show a progress bar (default False; None: when standard error is a terminal).
+    executor : concurrent.futures.Executor, optional
+        Run the impacts on it, in chunks, as :func:`sweep` does; bit-identical to the run in
+        this process (the default).
     """
+    import pandas as pd
+
     if equal_effort and swing is None:
         raise ValueError("equal_effort needs a swing (the first racket's)")
     if tension is not None:
@@ -349,15 +352,19 @@ def compare(
         raise ValueError(f"points must be a whole number, got {points:g}")
     check_impacts(int(points) * len(rackets), "points x rackets")
     check_speed("speed", speed, allow_zero=swing is not None)
-    frames = []
     reference = next(iter(rackets.values())).beam.swingweight
-    for label, racket in rackets.items():
+    swings, calls = [], []
+    for racket in rackets.values():
         x = np.linspace(*racket.strings.extent, int(points))
         own = swing
         if equal_effort:
             own = same_effort(swing, reference, racket.beam.swingweight)
-        moved = {} if own is None else own.impact_kwargs(racket, x)
-        frame = impact_table(impact(racket, ball, x, speed, **moved))
+        swings.append(own)
+        calls.append(impacts_of(racket, ball, x, speed, swing=own))
+    parts = run_impacts(calls, impact_columns, executor, progress, "compare")
+    frames = []
+    for label, own, part in zip(rackets, swings, parts, strict=True):
+        frame = pd.DataFrame(part)
         frame.insert(0, "racket", label)
         if own is not None:
             frame["head_speed_m_s"] = own.head_speed

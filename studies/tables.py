@@ -2,12 +2,16 @@
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
-import pandas as pd
 
 from ball import CollisionHistory
 from common.units import MPH
 from racket import Impact
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 
 def impact_table(result: Impact) -> pd.DataFrame:
@@ -18,6 +22,8 @@ def impact_table(result: Impact) -> pd.DataFrame:
     result : Impact
         The result of :func:`racket.impact` (SI).
     """
+    import pandas as pd
+
     return pd.DataFrame(impact_columns(result))
 
 
@@ -60,6 +66,8 @@ def feel_table(feel) -> pd.DataFrame:
     feel : HandFeel
         The handle's motion after an impact.
     """
+    import pandas as pd
+
     columns = {
         "t_s": feel.t,
         "force_N": feel.force,
@@ -79,6 +87,8 @@ def history_table(history: CollisionHistory) -> pd.DataFrame:
     history : CollisionHistory
         The ``history`` of a :func:`ball.collide` result (SI).
     """
+    import pandas as pd
+
     return pd.DataFrame(
         {
             "t_s": history.t,
