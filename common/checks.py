@@ -10,8 +10,11 @@ from __future__ import annotations
 
 import math
 import numbers
+import warnings
 
 import numpy as np
+
+from common.units import GRAVITY, IN2, INCH, LB, MPH, OUNCE
 
 SPEED_RANGE = (1e-3, 300.0)
 """Impact and swing speeds [m/s] racket-impact accepts: from 1 mm/s to well above the
@@ -117,13 +120,82 @@ KN_AS_N = (1e3, "kN/m typed as N/m?")
 """A slip of unit for :func:`in_range`'s ``slips``: a stiffness in kN/m where N/m are asked
 for."""
 
+# The slips below quote the value typed in its likely unit: "645 cm^2 would be 99.98 in^2".
+MPH_AS_M_S = (MPH, "mph typed as m/s?", "mph")
+"""A speed in mph where m/s are asked for."""
+
+N_AS_LB = (1.0 / LB, "newtons typed as lb?", "N")
+"""A string tension in N where lb are asked for."""
+
+KG_AS_LB = (GRAVITY / LB, "kg typed as lb?", "kg")
+"""A string tension in kg (as European stringing machines show it) where lb are asked for."""
+
+LB_AS_N = (LB, "lb typed as N?", "lb")
+"""A string tension in lb where N are asked for."""
+
+KG_AS_N = (GRAVITY, "kg typed as N?", "kg")
+"""A string tension in kg where N are asked for."""
+
+INCH_AS_M = (INCH, "inches typed as m?", "in")
+"""A length in inches where m are asked for (racket lengths are quoted in inches)."""
+
+INCH_AS_CM = (100 * INCH, "inches typed as cm?", "in")
+"""A length in inches where cm are asked for (balances are quoted in inches)."""
+
+M_AS_CM = (100.0, "m typed as cm?", "m")
+"""A length in m where cm are asked for."""
+
+CM_AS_MM = (10.0, "cm typed as mm?", "cm")
+"""A length in cm where mm are asked for."""
+
+CM2_AS_IN2 = (1e-4 / IN2, "cm^2 typed as in^2?", "cm^2")
+"""A head size in cm^2 where in^2 are asked for."""
+
+IN2_AS_CM2 = (1e4 * IN2, "in^2 typed as cm^2?", "in^2")
+"""A head size in in^2 where cm^2 are asked for."""
+
+KGM2_AS_KGCM2 = (1e4, "kg m^2 typed as kg cm^2?", "kg m^2")
+"""A moment of inertia (swingweight) in kg m^2 where kg cm^2 are asked for."""
+
+OZ_AS_KG = (OUNCE, "ounces typed as kg?", "oz")
+"""A mass in ounces where kg are asked for (racket weights are quoted in oz)."""
+
+S_AS_MS = (1e3, "seconds typed as ms?", "s")
+"""A duration in s where ms are asked for."""
+
+
+def slip_hints(value, low: float, high: float, unit: str = "", slips=()) -> str:
+    """The likely slips of unit that bring ``value`` into ``[low, high]``, as a message
+    quotes them ("grams typed as kg? 57 would be 0.057 kg"; several joined by "; "), or ""
+    if none does.
+
+    Parameters
+    ----------
+    value : float
+        The value typed [``unit``, as asked for].
+    low, high : float
+        The bounds [``unit``] the value should lie in.
+    unit : str, optional
+        The unit asked for.
+    slips : sequence of tuple, optional
+        Each (factor [-] that turns the value typed into ``unit``, what the slip is[, the
+        unit the value was likely typed in]), e.g. :data:`GRAMS_AS_KG`, :data:`MPH_AS_M_S`.
+    """
+    x, hints = float(value), []
+    for factor, slip, *typed in slips:
+        if low <= x * factor <= high:
+            was = f"{shown(value)}{_unit(typed[0]) if typed else ''}"
+            converted = float(f"{x * factor:.4g}")  # 4 digits, no exponent below 1e6
+            hints.append(f"{slip} {was} would be {converted:g}{_unit(unit)}")
+    return "; ".join(hints)
+
 
 def in_range(
     name: str, value, low: float, high: float, unit: str = "", hint: str = "", slips=()
 ) -> float:
     """Return ``value`` as a float; raise ``ValueError`` unless ``low <= value <= high``
-    (``hint`` is appended to the message, e.g. a likely cause; so is the first of ``slips``
-    that would bring the value into the range).
+    (``hint`` is appended to the message, e.g. a likely cause; so are the ``slips`` that
+    would bring the value into the range).
 
     Parameters
     ----------
@@ -137,22 +209,50 @@ def in_range(
         Its unit, as the message quotes it (e.g. ``"m/s"``); "" for none.
     hint : str, optional
         Appended to the message, e.g. a likely cause.
-    slips : sequence of (float, str), optional
-        Likely slips of unit, each the factor [-] that turns the value typed into ``unit``
-        and what the slip is (:data:`GRAMS_AS_KG`, :data:`CM_AS_M`, :data:`KN_AS_N`): a
-        value out of the range that one of them brings into it is quoted with it, e.g.
-        "(grams typed as kg? 57 would be 0.057 kg)".
+    slips : sequence of tuple, optional
+        Likely slips of unit (:func:`slip_hints`: :data:`GRAMS_AS_KG`, :data:`CM_AS_M`,
+        :data:`KN_AS_N`, ...): a value out of the range that one of them brings into it is
+        quoted with it, e.g. "(grams typed as kg? 57 would be 0.057 kg)".
     """
     x = finite(name, value, unit)
     if not low <= x <= high:
-        for factor, slip in slips:
-            if low <= x * factor <= high:
-                hint = f" ({slip} {shown(value)} would be {x * factor:g}{_unit(unit)}){hint}"
-                break
+        slipped = slip_hints(value, low, high, unit, slips)
+        hint = f" ({slipped}){hint}" if slipped else hint
         raise ValueError(
             f"{name} must be in [{low:g}, {high:g}]{_unit(unit)}, got {shown(value)}{hint}"
         )
     return x
+
+
+def suspect(name: str, value, usual: tuple, unit: str, slips, why: str, hint: str = "") -> None:
+    """Warn (``UserWarning``) when ``value``, possible, lies outside the ``usual`` range and
+    a slip of unit brings it in: "--tension-lb 25 lb is below what rackets are strung at
+    (40-65 lb): kg typed as lb? 25 kg would be 55.12 lb".  Refuse the impossible with
+    :func:`in_range`; this only asks.
+
+    Parameters
+    ----------
+    name : str
+        The argument's name, as the message quotes it.
+    value : float
+        The value typed [``unit``].
+    usual : (float, float)
+        Where such values usually lie [``unit``].
+    unit : str
+        The unit asked for.
+    slips : sequence of tuple
+        Likely slips of unit (:func:`slip_hints`).
+    why : str
+        What makes the value suspect, e.g. "faster than any recorded stroke (about 73 m/s)".
+    hint : str, optional
+        Appended to the warning, e.g. the option to use instead.
+    """
+    x = float(value)
+    if usual[0] <= x <= usual[1]:
+        return
+    slipped = slip_hints(value, *usual, unit, slips)
+    if slipped:
+        warnings.warn(f"{name} {shown(value)}{_unit(unit)} is {why}: {slipped}{hint}", stacklevel=3)
 
 
 def speed(name: str, value, allow_zero: bool = False) -> float:

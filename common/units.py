@@ -18,3 +18,6 @@ POINT = 0.003175
 GRAVITY = 9.80665
 """Standard gravity [m/s^2] (accelerations are quoted in g; the ITF's 8.165 kg deformation
 load is 80.07 N with it)."""
+
+OUNCE = 0.028349523125
+"""One ounce (avoirdupois) [kg] (racket weights are quoted in oz)."""

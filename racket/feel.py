@@ -57,6 +57,10 @@ class HandFeel:
         The same [m from the butt].
     contact_time : float
         [s].
+    mode_frequencies : ndarray or None
+        The natural frequencies of the racket as it is supported (free, or held: the
+        coupled system the handle's motion comes from), each once [Hz]: the damped
+        frequencies of its modal equations (the imaginary parts of their eigenvalues).
     """
 
     t: np.ndarray
@@ -74,6 +78,27 @@ class HandFeel:
     grip: float
     grip_from_butt: float
     contact_time: float
+    mode_frequencies: np.ndarray | None = None
+
+    def strongest(self, above: float = 20.0) -> tuple[float, bool]:
+        """The strongest vibration of the handle above ``above`` [Hz]: the spectrum's peak,
+        or the natural frequency of the racket nearest to it when one lies within two of
+        the spectrum's bins (the peak resolves only ``1 / duration``, 20 Hz for 50 ms; the
+        mode's frequency is exact) [Hz], and whether it is a mode's.
+
+        Parameters
+        ----------
+        above : float
+            Frequencies at or below this are left out (the recoil) [Hz].
+        """
+        keep = self.frequencies > above
+        peak = float(self.frequencies[keep][np.argmax(self.spectrum[keep])])
+        modes = np.asarray([] if self.mode_frequencies is None else self.mode_frequencies)
+        if modes.size:
+            nearest = float(modes[np.argmin(np.abs(modes - peak))])
+            if abs(nearest - peak) <= 2.0 * self.frequencies[1]:
+                return nearest, True
+        return peak, False
 
 
 def hand_feel(
@@ -183,4 +208,17 @@ def hand_feel(
         grip=grip,
         grip_from_butt=racket.beam.length - grip,
         contact_time=float(hit.contact_time),
+        mode_frequencies=_natural_frequencies(system.stiffness, system.damping),
     )
+
+
+def _natural_frequencies(stiffness: np.ndarray, damping: np.ndarray) -> np.ndarray:
+    """The damped natural frequencies [Hz] of q'' + C q' + K q = 0 (``damping`` C [1/s],
+    ``stiffness`` K [1/s^2], in modal coordinates), each once, in order: the eigenvalues'
+    imaginary parts over 2 pi (a rigid-body pair's, round-off, left out).
+    """
+    n = stiffness.shape[0]
+    state = np.block([[np.zeros((n, n)), np.eye(n)], [-stiffness, -damping]])
+    imag = np.linalg.eigvals(state).imag
+    scale = np.sqrt(np.max(np.abs(stiffness), initial=1.0))
+    return np.sort(imag[imag > 1e-6 * scale]) / (2 * np.pi)

@@ -78,7 +78,8 @@ from ball import (
     StiffeningHysteresis,
 )
 from beam import Beam
-from common.checks import CM_AS_M, GRAMS_AS_KG, KN_AS_N, in_range, positive, shown
+from common import checks as slip  # the slips of unit: slip.CM_AS_M, ...
+from common.checks import in_range, positive, shown
 from racket import (
     CATALOG,
     GRIPS,
@@ -91,6 +92,7 @@ from racket import (
     tennis_ball,
 )
 from racket.solver import F1_MIN
+from racket.specs.sheet import SPEC_RANGES
 from studies.sweeps import F1_MAX, STRING_STIFFNESS_RANGE
 
 if sys.version_info >= (3, 11):
@@ -134,15 +136,34 @@ def default_ball(*rackets) -> str:
     return PAPER_BALL if names and all(n == "paper" for n in names) else DEFAULT_BALL
 
 
+SPEC_SLIPS = {
+    "length_m": (slip.CM_AS_M, slip.INCH_AS_M),
+    "mass_kg": (slip.GRAMS_AS_KG, slip.OZ_AS_KG),
+    "balance_cm": (slip.INCH_AS_CM, slip.M_AS_CM),
+    "swingweight_kgcm2": (slip.KGM2_AS_KGCM2,),
+    "recoil_weight_kgcm2": (slip.KGM2_AS_KGCM2,),
+    "twistweight_kgcm2": (slip.KGM2_AS_KGCM2,),
+    "head_size_in2": (slip.CM2_AS_IN2,),
+    "head_size_cm2": (slip.IN2_AS_CM2,),
+    "tension_lb": (slip.N_AS_LB,),
+    "tension_n": (slip.LB_AS_N, slip.KG_AS_N),
+    "string_stiffness_n_m": (slip.KN_AS_N,),
+}
+"""The likely slips of unit of the ``[racket.specs]`` keys (their ranges are the spec
+sheets', :data:`racket.specs.sheet.SPEC_RANGES`): a head size in cm^2 typed as in^2, a
+balance in inches typed as cm, a swingweight in kg m^2 typed as kg cm^2, a tension in N
+typed as lb, a mass in oz typed as kg..."""
+
 TOML_RANGES = {
-    ("racket", "length"): (0.2, 1.5, "m", (CM_AS_M,)),
-    ("racket", "mass"): (0.05, 2.0, "kg", (GRAMS_AS_KG,)),
+    ("racket", "length"): (0.2, 1.5, "m", (slip.CM_AS_M, slip.INCH_AS_M)),
+    ("racket", "mass"): (0.05, 2.0, "kg", (slip.GRAMS_AS_KG, slip.OZ_AS_KG)),
     ("racket", "f1"): (F1_MIN, F1_MAX, "Hz", ()),
-    ("racket.strings", "stiffness"): (*STRING_STIFFNESS_RANGE, "N/m", (KN_AS_N,)),
-    ("ball", "mass"): (0.001, 1.0, "kg", (GRAMS_AS_KG,)),
-    ("ball", "radius"): (0.005, 0.15, "m", (CM_AS_M,)),
-    ("ball", "k"): (1e3, 1e7, "N/m", (KN_AS_N,)),
-    ("ball", "k0"): (1e3, 1e7, "N/m", (KN_AS_N,)),
+    **{("racket.specs", key): (*SPEC_RANGES[key], slips) for key, slips in SPEC_SLIPS.items()},
+    ("racket.strings", "stiffness"): (*STRING_STIFFNESS_RANGE, "N/m", (slip.KN_AS_N,)),
+    ("ball", "mass"): (0.001, 1.0, "kg", (slip.GRAMS_AS_KG, slip.OZ_AS_KG)),
+    ("ball", "radius"): (0.005, 0.15, "m", (slip.CM_AS_M,)),
+    ("ball", "k"): (1e3, 1e7, "N/m", (slip.KN_AS_N,)),
+    ("ball", "k0"): (1e3, 1e7, "N/m", (slip.KN_AS_N,)),
 }
 """The range of each plain number of a TOML file that has one, (low, high, unit, likely
 slips of unit) by (table, key), checked before anything is built (``k`` only for the linear
@@ -155,8 +176,10 @@ f1 and the string bed are a sweep's ranges (:data:`racket.solver.F1_MIN`,
 weighs 1 g-1 kg (a table-tennis ball 2.7 g, a basketball about 0.6 kg; the project's balls
 10.3 and 57 g), is 5-150 mm in radius (table tennis 20 mm, basketball about 120 mm), and a
 linear ball's stiffness is 1e3-1e7 N/m (a tennis ball's 4e4, paper Sec. III; the happy and
-unhappy balls' 2e4, Secs. IV-VI).  A value typed in g, cm or kN/m falls outside and is
-refused with the hint (``mass = 57`` for a ball would be 0.057 kg)."""
+unhappy balls' 2e4, Secs. IV-VI); the spec-sheet keys with a likely slip
+(:data:`SPEC_SLIPS`) in the spec sheets' ranges.  A value typed in g, oz, cm, inches or
+kN/m falls outside and is refused with the hint (``mass = 57`` for a ball would be
+0.057 kg)."""
 
 LAWS = {
     "linear-spring": (LinearSpring, {"k"}),
@@ -294,6 +317,7 @@ def racket_from_table(table: dict) -> Racket:
                 "give one of them"
             )
         _check_keys(table["specs"], _SPEC_KEYS, "racket.specs")
+        _check_ranges(table["specs"], "racket.specs")
         base = from_specs(**table["specs"])
     else:
         base = _preset(table.get("preset", "paper"), RACKETS, "racket")

@@ -5,28 +5,9 @@ with one line and status 130, as one during a run does.
 
 from __future__ import annotations
 
-import signal
 import sys
 
-
-def interrupted(prefix: str, err: KeyboardInterrupt, written: bool) -> int:
-    """A run ended by Ctrl-C (or by SIGTERM or SIGHUP, ``err.signum``): one line on stderr,
-    and the shell's status for the signal (128 + its number).
-
-    Parameters
-    ----------
-    prefix : str
-        The command, as its messages start (``racket-impact ball``).
-    err : KeyboardInterrupt
-        What ended it (:class:`studies.outputs.Stopped` for SIGTERM or SIGHUP).
-    written : bool
-        Whether the run's files were all put in place before it ended.
-    """
-    signum = getattr(err, "signum", signal.SIGINT)
-    how = "interrupted" if signum == signal.SIGINT else f"stopped by {signal.Signals(signum).name}"
-    done = "its files were all written" if written else "no file written"
-    print(f"{prefix}: {how}; {done}", file=sys.stderr)
-    return 128 + signum
+from studies.outputs import interrupted
 
 
 def main() -> int:

@@ -23,6 +23,7 @@ import os
 import secrets
 import shutil
 import signal
+import sys
 import tempfile
 import threading
 from pathlib import Path
@@ -57,6 +58,26 @@ class Stopped(KeyboardInterrupt):
     def __init__(self, signum: int):
         super().__init__(signum)
         self.signum = signum
+
+
+def interrupted(prefix: str, err: KeyboardInterrupt, written: bool) -> int:
+    """A run ended by Ctrl-C (or by SIGTERM or SIGHUP, ``err.signum``): one line on stderr,
+    and the shell's status for the signal (128 + its number).
+
+    Parameters
+    ----------
+    prefix : str
+        The command, as its messages start (``racket-impact ball``).
+    err : KeyboardInterrupt
+        What ended it (:class:`Stopped` for SIGTERM or SIGHUP).
+    written : bool
+        Whether the run's files were all put in place before it ended.
+    """
+    signum = getattr(err, "signum", signal.SIGINT)
+    how = "interrupted" if signum == signal.SIGINT else f"stopped by {signal.Signals(signum).name}"
+    done = "its files were all written" if written else "no file written"
+    print(f"{prefix}: {how}; {done}", file=sys.stderr)
+    return 128 + signum
 
 
 @functools.cache

@@ -77,7 +77,7 @@ def test_serve_one_swing_tip_ward_is_faster_in_the_unit_typed(tmp_path, capsys):
         "--position", "0.1732", "0.1232", "--out", out_file,
     )  # fmt: skip
     assert status == 0 and "100.0 mph" in out and "zero-COR" not in out
-    assert "serve_simulated_mph" in out and "position_from_butt_cm" in out
+    assert "(simulated)" in out and "[mph]" in out and "[m/s]" not in out and "butt" in out
     centre, tipward = json.loads((tmp_path / "serve.json").read_text())
     assert tipward["point_speed_mph"] > centre["point_speed_mph"]
     assert tipward["serve_simulated_mph"] > centre["serve_simulated_mph"]
@@ -96,15 +96,16 @@ def test_collide(tmp_path, capsys):
         capsys, "collide", "--history", str(tmp_path / "h.csv"), "--plot", str(tmp_path / "c.png")
     )
     assert status == 0
-    values = dict(line.split() for line in out.strip().splitlines())
-    assert float(values["v_b_after_m_s"]) == pytest.approx(3.034, abs=0.002)
-    assert float(values["e"]) == pytest.approx(0.517, abs=0.002)
+    values = dict(line.rsplit(None, 1) for line in out.strip().splitlines())
+    assert float(values["happy's velocity after [m/s]"]) == pytest.approx(3.034, abs=0.002)
+    assert float(values["e [-]"]) == pytest.approx(0.517, abs=0.002)
     assert {"t_s", "force_N"} <= set(pd.read_csv(tmp_path / "h.csv").columns)
 
 
 def test_collide_with_wall(capsys):
     status, out, _ = run(capsys, "collide", "--a", "tennis", "--b", "wall", "--va", "20")
-    assert status == 0 and "e                  0.75" in out
+    assert status == 0 and "e [-]                              0.75" in out
+    assert "wall's velocity after [m/s]" in out
 
 
 def test_modes(tmp_path, capsys):
@@ -122,7 +123,8 @@ def test_specs_of_a_catalogue_racket(capsys):
     assert "tennisaddict.fr" in out  # the sources are printed
     assert "fitted parts and their plausible ranges" in out and "butt cap" in out
     assert "sources of the parts' ranges:" in out and "racket_specs_sample.csv" in out
-    assert "rocking" in out and "hand_held_Hz" in out
+    modes = out[out.index("modes: free-free") : out.index("sweet spots")]
+    assert "rocking" in modes and "held" in modes and "[Hz]" in modes  # the held modes' column
     assert "flex-test tip stiffness" in out
 
 
@@ -162,11 +164,12 @@ def test_compare_two_rackets(tmp_path, capsys):
         "hand-held",
         "--out",
         str(tmp_path / "cmp.csv"),
+        "--long",
         "--plot",
         str(tmp_path / "cmp.png"),
     )
     assert status == 0
-    assert "my_racket_specs" in out and "largest_e" in out
+    assert "my_racket_specs" in out and "largest e [-]" in out
     table = pd.read_csv(tmp_path / "cmp.csv")
     assert table["racket"].unique().tolist() == ["paper", "my_racket_specs"]
     assert len(table) == 22
@@ -218,10 +221,11 @@ def test_ball_prints_and_writes_the_rigid_bounce_against_speed(tmp_path, capsys)
         "--plot",
         str(tmp_path / "b.png"),
     )
-    assert status == 0 and "contact_time_s" in out
+    assert status == 0 and "contact" in out and "time [s]" in out
     table = pd.read_csv(tmp_path / "b.csv")
     assert list(table["speed_m_s"]) == [7.0, 30.0]
     assert table["e"].iloc[1] < table["e"].iloc[0]  # this ball's COR falls with speed
     assert (tmp_path / "b.png").stat().st_size > 0
     status, out, _ = run(capsys, "ball", "--speeds-mph", "20")
-    assert status == 0 and "8.941" in out  # 20 mph in m/s; the paper ball by default
+    assert status == 0 and "[mph]" in out and "[m/s]" not in out  # mph in, mph out
+    assert "0.7309" in out  # the ITF type 2 ball's e at 20 mph (8.941 m/s)

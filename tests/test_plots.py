@@ -122,7 +122,7 @@ def test_a_grid_table_draws_one_labelled_curve_per_grid_point():
     e_lines = [line for line in ax.get_lines() if line.get_label().startswith("e (")]
     assert len(e_lines) == 4  # 2 speeds x 2 frequencies, no zig-zag through all rows
     assert {line.get_label() for line in e_lines} == {
-        f"e (speed_m_s {v:g}, f1_Hz {f:g})" for v in (10, 20) for f in (120, 180)
+        f"e (ball at {v:g} m/s, f1 {f:g} Hz)" for v in (10, 20) for f in (120, 180)
     }
     for line in e_lines:
         assert np.all(np.diff(line.get_xdata()) > 0)

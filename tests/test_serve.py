@@ -34,7 +34,8 @@ def test_serve_runs_for_every_ball_with_a_reduction_in_range(name):
 def test_serve_command_for_the_presets_the_help_lists(name, capsys):
     assert main(["serve", "--ball", name, "--racket-speed", "30"]) == 0
     out = capsys.readouterr().out
-    assert "serve_simulated_m_s" in out and "zero-COR" not in out and "Traceback" not in out
+    assert "(simulated)" in out and "[m/s]" in out
+    assert "zero-COR" not in out and "Traceback" not in out
     assert main(["serve", "--ball", name, "--racket-speed", "30", "--what-if"]) in (0, 2)
     assert "zero-COR" in capsys.readouterr().out  # (the stiffness sweep needs a linear ball)
 
@@ -93,7 +94,8 @@ def test_centre_of_percussion_is_simulated_and_is_the_formula_for_a_free_racket(
     from dataclasses import replace
 
     from racket import CATALOG, tennis_ball
-    from studies.landmarks import center_of_percussion, hand_pivot, sweet_spots
+    from studies.landmarks import hand_pivot, rigid_centre_of_percussion
+    from studies.sweetspots import sweet_spots
 
     free = CATALOG["pure-drive-2021"].racket()
     held = replace(free, support="hand-held")
@@ -101,12 +103,12 @@ def test_centre_of_percussion_is_simulated_and_is_the_formula_for_a_free_racket(
     for name, racket in (("free", free), ("held", held)):
         table = sweet_spots(racket, tennis_ball()).set_index("spot")
         cop[name] = table.loc["centre of percussion", "from_tip_cm"] / 100
-    formula = center_of_percussion(free, hand_pivot(free))
+    formula = rigid_centre_of_percussion(free, hand_pivot(free))
     assert cop["free"] == pytest.approx(formula, abs=1e-10)
     assert abs(cop["held"] - formula) > 0.005
     # and the grip given moves it as the formula says, for the free racket
     table = sweet_spots(free, tennis_ball(), grip_from_butt=0.07).set_index("spot")
-    formula = center_of_percussion(free, free.beam.length - 0.07)
+    formula = rigid_centre_of_percussion(free, free.beam.length - 0.07)
     assert table.loc["centre of percussion", "from_tip_cm"] / 100 == pytest.approx(
         formula, abs=1e-10
     )
@@ -121,19 +123,19 @@ def test_centre_of_percussion_is_simulated_and_is_the_formula_for_a_free_racket(
     ],
 )
 def test_centre_of_percussion_formula_refuses_bad_pivots(pivot, match):
-    from studies.landmarks import center_of_percussion
+    from studies.landmarks import rigid_centre_of_percussion
 
     racket = paper_racket()
     if pivot == "centre of mass":
         pivot = racket.beam.center_of_mass
     with pytest.raises(ValueError, match=match):
-        center_of_percussion(racket, pivot)
+        rigid_centre_of_percussion(racket, pivot)
 
 
 @pytest.mark.parametrize("points", [40.5, 4.7, 10])
 def test_sweet_spots_points_must_be_a_whole_number_in_range(points):
     from racket import tennis_ball
-    from studies.landmarks import sweet_spots
+    from studies.sweetspots import sweet_spots
 
     with pytest.raises(ValueError, match=r"points must be"):
         sweet_spots(paper_racket(), tennis_ball(), points=points)

@@ -1,0 +1,213 @@
+"""``racket-impact collide``, ``drop`` and ``ball``: balls on balls, walls, floors and
+strings.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ball import BALL_PRESETS, WALL, collide
+from common.checks import CM_AS_M, SPEED_RANGE, in_range, shown
+from studies.cli.files import check_outputs, save_plot, write_table
+from studies.cli.options import _ball_arg, _print_table, _racket_arg, _speed, _speed_option
+from studies.config import load_ball, load_racket
+from studies.tables import history_table
+
+
+def add_collide(sub) -> None:
+    """The ``collide`` subcommand, on the subparsers ``sub``."""
+    p = sub.add_parser("collide", help="head-on collision of two balls (or a ball and a wall)")
+    _ball_arg(p, "--a", "unhappy", "ball a")
+    p.add_argument(
+        "--b",
+        default="happy",
+        metavar="PRESET_OR_TOML",
+        help="ball b: preset, TOML file, or 'wall' (default: happy)",
+    )
+    _speed_option(p, "va", 4.0, "velocity of a towards b")
+    _speed_option(p, "vb", 0.0, "velocity of b, same direction as a's")
+    p.add_argument("--out", metavar="FILE", help="summary file: .csv, .json or .parquet")
+    p.add_argument("--history", metavar="FILE", help="time history: .csv, .json or .parquet")
+    p.add_argument("--plot", metavar="FILE", help="history plot (.png, .svg, .pdf)")
+    p.set_defaults(func=cmd_collide)
+
+
+def cmd_collide(args) -> int:
+    """``racket-impact collide``."""
+    import pandas as pd
+
+    check_outputs(
+        tables=[("--out", args.out), ("--history", args.history)], plots=[("--plot", args.plot)]
+    )
+    v_a, v_b = _speed(args, "va", signed=True), _speed(args, "vb", signed=True)
+    if v_a - v_b < SPEED_RANGE[0]:
+        typed = [
+            f"--{n}-mph {shown(getattr(args, n + '_mph'))} mph"
+            if getattr(args, n + "_mph") is not None
+            else f"--{n} {shown(getattr(args, n))} m/s"
+            for n in ("va", "vb")
+        ]
+        raise ValueError(
+            f"--va must exceed --vb by at least {SPEED_RANGE[0]:g} m/s (the balls must "
+            f"approach), got {typed[0]} and {typed[1]}"
+        )
+    a = load_ball(args.a)
+    b = WALL if args.b == "wall" else load_ball(args.b)
+    r = collide(a, b, v_a, v_b)
+    rows = {
+        "v_a_after_m_s": r.v_a_after,
+        "v_b_after_m_s": r.v_b_after,
+        "e": r.e,
+        "contact_time_s": r.contact_time,
+        "peak_force_N": r.peak_force,
+        "energy_initial_J": r.energy_initial,
+        "energy_final_J": r.energy_final,
+        "energy_lost_J": r.energy_lost,
+    }
+    if r.x_o is not None:
+        rows["x_o_m"] = r.x_o
+    from studies.cli.show import label
+
+    names = {"a": args.a, "b": args.b} if args.a != args.b else {"a": "ball a", "b": "ball b"}
+    said = {
+        "v_a_after_m_s": f"{names['a']}'s velocity after [m/s]",
+        "v_b_after_m_s": f"{names['b']}'s velocity after [m/s]",
+        "x_o_m": "Xo of the sine law [m]",
+    }
+    for key, value in rows.items():
+        print(f"{said.get(key, label(key)):<34} {value:.6g}")
+    if args.out:
+        write_table(pd.DataFrame([rows]), args.out)
+    if args.history:
+        write_table(history_table(r.history), args.history)
+    if args.plot:
+        from studies.plots import plot_collision
+
+        save_plot(plot_collision(r, names=(names["a"], names["b"])), args.plot)
+    return 0
+
+
+def add_drop(sub) -> None:
+    """The ``drop`` subcommand, on the subparsers ``sub``."""
+    p = sub.add_parser("drop", help="a ball dropped on the floor, on strings or on a racket")
+    _ball_arg(p, "ball", nargs="?")
+    p.add_argument("--height-m", type=float, default=2.54, metavar="M",
+                   help="drop height [m] (default 2.54, the ITF rebound test)")  # fmt: skip
+    p.add_argument("--onto", choices=["floor", "strings", "racket"], default="floor",
+                   help="the floor (default), the strings of --racket with its head clamped, "
+                   "or --racket lying free (at its string centre)")  # fmt: skip
+    _racket_arg(p, default="pure-drive-2021")
+    p.add_argument("--out", metavar="FILE", help="force and compression against time "
+                   "(.csv, .json or .parquet)")  # fmt: skip
+    p.add_argument("--plot", metavar="FILE", help="force and compression (.png, .svg, .pdf)")
+    p.set_defaults(func=cmd_drop)
+
+
+def cmd_drop(args) -> int:
+    """``racket-impact drop``."""
+    import pandas as pd
+
+    from studies.drop import HEIGHT_RANGE, drop
+
+    check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
+    height = in_range("--height-m", args.height_m, *HEIGHT_RANGE, "m", slips=(CM_AS_M,))
+    ball = load_ball(args.ball)
+    onto, where = None, "the floor"
+    if args.onto != "floor":
+        from dataclasses import replace
+
+        support = "clamped-head" if args.onto == "strings" else "free"
+        onto = replace(load_racket(args.racket), support=support)
+        where = (
+            f"the strings of {args.racket}, its head clamped"
+            if args.onto == "strings"
+            else f"the string centre of {args.racket}, lying free"
+        )
+    result = drop(ball, height, onto)
+    print(f"ball {args.ball} dropped from {result.height:g} m onto {where}: it arrives at "
+          f"{result.speed:.3g} m/s")  # fmt: skip
+    print(f"bounces back at {result.rebound_speed:.3g} m/s, up to {result.bounce_height:.3g} m "
+          f"({100 * result.bounce_height:.1f} cm)")  # fmt: skip
+    meaning = "the ball's COR, bounce/drop = e^2" if onto is None else "the apparent COR e_A"
+    print(f"rebound ratio {result.rebound_ratio:.4f} ({meaning})")
+    print(f"contact {1e3 * result.contact_time:.3g} ms, peak force {result.peak_force:.4g} N, "
+          f"largest compression {1e3 * float(np.max(result.compression)):.3g} mm")  # fmt: skip
+    if args.out:
+        table = pd.DataFrame(
+            {"t_s": result.t, "force_N": result.force, "compression_m": result.compression}
+        )
+        write_table(table, args.out)
+    if args.plot:
+        from studies.plots import plot_drop
+
+        save_plot(plot_drop(result), args.plot)
+    return 0
+
+
+def add_ball(sub) -> None:
+    """The ``ball`` subcommand, on the subparsers ``sub``."""
+    p = sub.add_parser("ball", help="a ball's bounce on a rigid surface against impact speed")
+    _ball_arg(p, "ball", nargs="?")
+    p.add_argument(
+        "--list", action="store_true", help="the real-ball presets, their numbers and sources"
+    )
+    from studies.bounce import DEFAULT_SPEEDS
+
+    _speed_option(p, "speeds", [round(v, 2) for v in DEFAULT_SPEEDS], "impact speeds", True)
+    p.add_argument("--out", metavar="FILE", help="table file: .csv, .json or .parquet")
+    p.add_argument(
+        "--plot",
+        metavar="FILE",
+        help="COR, contact time, peak force, compression (.png, .svg, .pdf)",
+    )
+    p.set_defaults(func=cmd_ball)
+
+
+def cmd_ball(args) -> int:
+    """``racket-impact ball``."""
+    from studies.bounce import preset_table, rigid_bounce_table, static_test
+
+    check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
+    if args.list:
+        presets = preset_table()
+        band = [f"{low:.3f}-{high:.3f}" if low == low else "-" for low, high in
+                zip(presets["itf_cor_low"], presets["itf_cor_high"], strict=True)]  # fmt: skip
+        shown = presets[["preset", "description", "mass_g", "diameter_cm", "e0"]]
+        _print_table(shown.assign(**{"ITF rebound e [-]": band}))  # the law's numbers: --out
+        print("sources and assumptions: racket-impact ball --list --out presets.csv")
+        if args.out:
+            write_table(preset_table(), args.out)
+        return 0
+    speeds = _speed(args, "speeds")
+    ball = load_ball(args.ball)
+    table = rigid_bounce_table(ball, speeds)
+    if args.speeds_mph is not None:  # mph in, mph out
+        from common.units import MPH
+
+        table.insert(1, "speed_mph", table["speed_m_s"] / MPH)
+    _print_table(table.drop(columns="speed_m_s") if args.speeds_mph is not None else table)
+    _print_static_test(static_test(ball, args.ball))
+    if args.out:
+        write_table(table, args.out)
+    if args.plot:
+        from studies.plots import plot_rigid_bounce
+
+        preset = BALL_PRESETS.get(args.ball)
+        axes = plot_rigid_bounce(table, radius=ball.radius, bands=preset and preset.bands)
+        save_plot(axes, args.plot)
+    return 0
+
+
+def _print_static_test(test: dict) -> None:
+    """The ITF's static deformation test beside the dynamic law (:func:`studies.bounce.
+    static_test`), on its own lines.
+    """
+    force, dynamic, band = test["force_N"], test["dynamic_compression_m"], test["itf_forward_m"]
+    print(f"\nstatic test (ITF, quasi-static, apart from the bounce above), {force:.2f} N:")
+    if band is not None:
+        print(f"  ITF forward deformation of this type: {1e3 * band[0]:.1f}-{1e3 * band[1]:.1f} "
+              f"mm ({force / band[1] / 1e3:.1f}-{force / band[0] / 1e3:.1f} kN/m)")  # fmt: skip
+    if dynamic is not None:
+        stiffness = force / dynamic / 1e3
+        print(f"  this ball's dynamic law: {1e3 * dynamic:.2f} mm ({stiffness:.1f} kN/m): a "
+              "ball is viscoelastic,\n  stiffer in a 4 ms impact than in a 5 s hold")  # fmt: skip

@@ -1,0 +1,169 @@
+"""The files a command writes: every path checked before any work, tables (with their
+sidecars) and plots written when the run has succeeded (:mod:`studies.outputs`).
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from studies import outputs
+from studies.provenance import sidecar_path
+
+if TYPE_CHECKING:
+    import pandas as pd
+
+TABLE_FORMATS = (".csv", ".json", ".parquet")
+PLOT_FORMATS = (".png", ".svg", ".pdf")
+
+
+def check_outputs(tables=(), plots=(), directories=()) -> None:
+    """Check every output path before any work: a known extension, an existing, writable
+    directory, a name the directory can hold, nothing there but a regular file, not a
+    symbolic link (for a table, its sidecar too), and no file named twice.  ValueError
+    naming the path otherwise.
+    """
+    seen = {}
+    for paths, kinds, what in ((tables, TABLE_FORMATS, "table"), (plots, PLOT_FORMATS, "plot")):
+        for flag, path in paths:
+            if path is None:
+                continue
+            if Path(path).suffix.lower() not in kinds:
+                raise ValueError(
+                    f"{flag} must be a {what} file ending in {', '.join(kinds)}, got {path!r}"
+                )
+            _check_directory(flag, Path(path).parent, path)
+            files = [(flag, Path(path))]
+            if what == "table":
+                files.append((f"{flag}'s sidecar", sidecar_path(path)))
+            for name, file in files:
+                _check_file(name, file)
+                key = file.resolve()
+                if key in seen:
+                    raise ValueError(f"{name} and {seen[key]} name the same file {str(file)!r}")
+                seen[key] = name
+    for flag, path in directories:
+        if not str(path).strip():
+            raise ValueError(f"{flag} must name a directory, got {str(path)!r}")
+        target = Path(path)
+        if target.exists() and not target.is_dir():
+            raise ValueError(f"{flag} must be a directory, got the file {str(path)!r}")
+        existing = next((p for p in [target, *target.parents] if p.exists()), Path("."))
+        _check_directory(flag, existing, path)
+
+
+def _check_file(flag: str, path: Path) -> None:
+    """An output file that can be replaced: a name its directory can hold, and nothing there
+    yet but a writable regular file (not a directory, FIFO or device; never opened), nor a
+    symbolic link (the rename would replace the link and leave the file it names stale).
+    """
+    try:
+        longest = os.pathconf(path.parent, "PC_NAME_MAX")
+    except (AttributeError, ValueError, OSError):  # no pathconf (Windows), or no such limit
+        longest = -1
+    if longest > 0 and len(os.fsencode(path.name)) > longest:
+        raise ValueError(
+            f"{flag}: the name of {str(path)!r} is longer than its directory allows "
+            f"({longest} bytes)"
+        )
+    if path.is_symlink():
+        raise ValueError(f"{flag}: {str(path)!r} is a symbolic link; name the file it links to")
+    if path.exists() and not path.is_file():
+        raise ValueError(f"{flag}: {str(path)!r} exists and is not a regular file")
+    if path.exists() and not os.access(path, os.W_OK):
+        raise ValueError(f"{flag}: {str(path)!r} is read-only")
+
+
+def _check_directory(flag: str, directory: Path, path) -> None:
+    directory = directory if str(directory) else Path(".")
+    if not directory.is_dir():
+        raise ValueError(f"{flag}: directory {str(directory)!r} of {str(path)!r} does not exist")
+    if not os.access(directory, os.W_OK):
+        raise ValueError(f"{flag}: directory {str(directory)!r} of {str(path)!r} is not writable")
+
+
+_RUN = {}  # the command line being run (main sets it), for the tables' sidecars
+
+
+def write_table(table: pd.DataFrame, path: str) -> None:
+    """Write ``table`` to ``path`` as CSV, JSON (records) or Parquet, by extension, and,
+    when the command line writes it, its sidecar (:mod:`studies.provenance`); both are
+    put in place with the run's other files (:mod:`studies.outputs`).
+    """
+    suffix = Path(path).suffix.lower()
+    if suffix not in TABLE_FORMATS:
+        raise ValueError(f"table file must end in {', '.join(TABLE_FORMATS)}, got {path!r}")
+
+    def writer(temp: str) -> None:
+        if suffix == ".csv":
+            table.to_csv(temp, index=False)
+        elif suffix == ".json":
+            table.to_json(temp, orient="records", indent=2)
+        else:
+            try:
+                table.to_parquet(temp, index=False)
+            except ImportError:
+                raise ValueError(
+                    "Parquet output needs pyarrow: pip install 'racket-impact[parquet]'"
+                ) from None
+
+    outputs.write(path, writer)
+    _sidecar(path)
+
+
+def _sidecar(path) -> None:
+    """The sidecar of a table the command line wrote (:mod:`studies.provenance`); the
+    description is built once per command run, however many tables it writes.
+    """
+    if _RUN:
+        from studies.provenance import describe, write_sidecar
+
+        if "description" not in _RUN:
+            _RUN["description"] = describe(
+                _RUN["argv"], _RUN["command"], _RUN["options"], _RUN.get("originals")
+            )
+        write_sidecar(path, _RUN["description"])
+
+
+def save_plot(axes, path: str) -> None:
+    """Save the figure holding ``axes`` as PNG, SVG or PDF, by extension, put in place with
+    the run's other files (:mod:`studies.outputs`).
+    """
+    suffix = Path(path).suffix.lower()
+    if suffix not in PLOT_FORMATS:
+        raise ValueError(f"plot file must end in {', '.join(PLOT_FORMATS)}, got {path!r}")
+    with _laid_out(axes) as fig:
+        outputs.write(path, lambda temp: fig.savefig(temp, dpi=DPI, format=suffix[1:]))
+
+
+def plot_bytes(axes, suffix: str) -> bytes:
+    """The figure holding ``axes`` as the bytes of a ``suffix`` file (``.png``, ``.svg`` or
+    ``.pdf``), as :func:`save_plot` writes it; the figure closed.
+    """
+    import io
+
+    data = io.BytesIO()
+    with _laid_out(axes) as fig:
+        fig.savefig(data, dpi=DPI, format=suffix[1:])
+    return data.getvalue()
+
+
+DPI = 120
+"""Resolution of a plot saved as PNG [dots per inch]."""
+
+
+@contextlib.contextmanager
+def _laid_out(axes):
+    """The figure holding ``axes``, laid out tight; closed when the block ends."""
+    import matplotlib.pyplot as plt
+
+    fig = np.atleast_1d(axes)[0].figure
+    try:
+        fig.tight_layout()
+        yield fig
+    finally:
+        plt.close(fig)

@@ -1,0 +1,42 @@
+"""``racket-impact validate``: the model against published measurements."""
+
+from __future__ import annotations
+
+import re
+import textwrap
+
+from studies.cli.files import check_outputs, save_plot, write_table
+from studies.cli.options import _print_table
+from studies.cli.show import WIDTH
+
+
+def add_validate(sub) -> None:
+    """The ``validate`` subcommand, on the subparsers ``sub``."""
+    p = sub.add_parser("validate", help="the model against published measurements")
+    p.add_argument("--out", metavar="FILE", help="table file: .csv, .json or .parquet")
+    p.add_argument("--plot", metavar="FILE", help="measured band vs model (.png, .svg, .pdf)")
+    p.set_defaults(func=cmd_validate)
+
+
+def cmd_validate(args) -> int:
+    """``racket-impact validate``."""
+    import pandas as pd
+
+    from studies import validation
+
+    check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
+    table = validation.validation_table()
+    with pd.option_context("display.max_colwidth", 80):
+        shown = table.reset_index(drop=True)[["quantity", "measured", "model", "agrees", "kind"]]
+        who = [re.split(r",| \(", source)[0] for source in table["source"]]  # the rest: --out
+        _print_table(shown.assign(source=who))
+    print()
+    said = f"{validation.summary(table)} (each one's name, band, conditions and source: --out FILE)"
+    print(textwrap.fill(said, WIDTH))
+    if args.out:
+        write_table(table.reset_index(), args.out)
+    if args.plot:
+        from studies.plots import plot_validation
+
+        save_plot(plot_validation(table), args.plot)
+    return 0

@@ -1,0 +1,197 @@
+"""What the command line prints and draws reads as a coach or a stringer would (issue 28):
+every table printed by default fits in 100 columns, with a unit (or [-]) on each numeric
+header; every plot's axis labels carry a unit or say [-], its legends name no raw column
+and sit off the data; re-contacts are said; the sweet spots lie on the strings."""
+
+import re
+
+import matplotlib
+import numpy as np
+import pandas as pd
+import pytest
+
+matplotlib.use("Agg")
+
+from studies.cli import main
+from studies.cli.show import WIDTH, label, table_lines
+from studies.sweeps import COLUMNS
+
+EXAMPLES = __import__("pathlib").Path(__file__).parent.parent / "examples"
+
+DEFAULT_RUNS = [
+    ["sweep"], ["map"], ["serve"], ["serve", "--what-if"], ["collide"], ["drop"], ["ball"],
+    ["ball", "--list"], ["modes"], ["specs", "pure-drive-2021"], ["feel"],
+    ["sweetspots", "pure-drive-2021"], ["compare"], ["validate"],
+    ["sweep", "--racket", str(EXAMPLES / "profile_racket.toml")],
+    ["serve", "--racket-speed-mph", "100", "110", "120"],
+]  # fmt: skip
+
+
+@pytest.mark.parametrize("argv", DEFAULT_RUNS, ids=" ".join)
+def test_every_default_run_prints_at_most_100_columns(argv, capsys):
+    assert main(argv) == 0
+    out = capsys.readouterr().out
+    wide = [line for line in out.splitlines() if len(line) > WIDTH]
+    assert not wide, wide
+    assert "not shown" not in out  # the default tables fit whole
+
+
+def test_every_sweep_column_has_a_unit_or_says_it_is_dimensionless():
+    numeric = [c for c in COLUMNS if c != "self_consistent"]
+    for column in [*numeric, "speed_m_s", "tension_N", "f1_Hz", "string_stiffness_N_m",
+                   "nodes_cm_from_butt", "serve_simulated_mph", "peak_compression_m"]:  # fmt: skip
+        assert re.search(r"\[[^\]]+\]$", label(column)), column
+    assert label("contact_time_s") == "contact time [s]"
+    assert label("e") == "e [-]" and label("nodes_cm_from_butt") == "nodes from butt [cm]"
+
+
+def test_a_printed_table_labels_its_headers_and_folds_per_row_units():
+    table = pd.DataFrame({"position_from_butt_cm": [50.25], "e": [0.9123], "ball": ["x"]})
+    header = " ".join(table_lines(table)[:-1])
+    assert "[cm]" in header and "e [-]" in header and "ball [-]" not in header
+    rows = pd.DataFrame({"quantity": ["mass", "balance"], "value": [321.0, 33.0],
+                         "unit": ["g", "cm from the butt"]})  # fmt: skip
+    text = "\n".join(table_lines(rows))
+    assert "mass [g]" in text and "balance [cm] from the butt" in text
+    assert "value [-]" not in text  # the rows carry their units
+
+
+def test_compare_prints_racket_columns_and_writes_what_it_printed(tmp_path, capsys):
+    out_file = tmp_path / "summary.csv"
+    argv = ["compare", "--points", "11", "--tension-lb", "55", "48", "--out", str(out_file)]
+    assert main(argv) == 0
+    out = capsys.readouterr().out
+    assert "paper 55 lb" in out.replace("\n", " ") or "55 lb" in out
+    assert "best rebound, racket at rest [m/s]" in out  # not an "exit" of a racket at rest
+    summary = pd.read_csv(out_file)
+    assert len(summary) == 4 and "largest_rebound_at_rest_mph" in summary  # 2 rackets x 2
+    assert main([*argv[:-2], "--out", str(tmp_path / "long.csv"), "--long"]) == 0
+    assert len(pd.read_csv(tmp_path / "long.csv")) == 4 * 11
+
+
+def test_mph_in_gives_mph_out(capsys):
+    assert main(["sweep", "--speed-mph", "30", "40", "--points", "3"]) == 0
+    out = capsys.readouterr().out
+    assert "[mph]" in out and "[m/s]" not in out
+    assert main(["map", "--speed-mph", "40", "--grid", "5", "4"]) == 0
+    assert "ball at 40 mph" in capsys.readouterr().out
+    assert main(["ball", "--speeds-mph", "20"]) == 0
+    assert "[mph]" in capsys.readouterr().out
+
+
+def test_recontacts_are_flagged_with_one_line_saying_what_they_are(capsys):
+    assert main(["sweep", "--racket", str(EXAMPLES / "profile_racket.toml")]) == 0
+    out = capsys.readouterr().out
+    header = " ".join(out.splitlines()[:3])
+    assert "re-contacts" in header and "[-]" in header
+    assert "re-contacts: at" in out and "caught again by the vibrating frame" in out
+
+
+def test_an_offset_sweep_is_clipped_to_the_elliptical_bed(capsys):
+    assert main(["sweep", "--racket", "pure-drive-2021", "--offset", "0.02", "--points",
+                 "5"]) == 0  # fmt: skip
+    assert "the sweep is clipped to them" in capsys.readouterr().out
+    assert main(["sweep", "--racket", "pure-drive-2021", "--offset", "0.08", "--from",
+                 "0.01"]) == 2  # fmt: skip
+    assert "narrow --from/--to" in capsys.readouterr().err
+
+
+def test_the_sweet_spots_lie_on_the_strings_in_a_players_words(capsys):
+    from racket import CATALOG, TENNIS_BALL_RADIUS
+    from studies.sweetspots import sweet_spots
+
+    racket = CATALOG["pure-drive-2021"].racket()
+    table = sweet_spots(racket, __import__("studies.config").config.load_ball("itf-type-2"))
+    start, end = racket.strings.extent
+    inside = table["from_tip_cm"] / 100
+    assert (inside >= start + TENNIS_BALL_RADIUS - 1e-12).all()
+    assert (inside <= end - TENNIS_BALL_RADIUS + 1e-12).all()
+    assert main(["sweetspots", "pure-drive-2021"]) == 0
+    out = capsys.readouterr().out
+    assert "node of the first mode (150 Hz)" in out
+    assert "centre of percussion (grip at 5 cm)" in out
+    assert "value" not in out.splitlines()[1]
+
+
+def test_feel_reports_the_modes_frequency_not_a_spectral_bin(capsys):
+    from dataclasses import replace
+
+    from racket import CATALOG
+    from racket.feel import hand_feel
+    from studies.config import load_ball
+
+    racket = CATALOG["pure-drive-2021"].racket()
+    free = replace(racket, support="free")
+    feel = hand_feel(free, load_ball("itf-type-2"), free.strings.center, 16.5)
+    hz, of_mode = feel.strongest()
+    # the first mode's (damped: a few 1e-5 below the undamped), not a 20 Hz bin's 140 or 160
+    assert of_mode and hz == pytest.approx(free.beam.modes.frequencies[0], rel=1e-4)
+    assert main(["feel", "--support", "free"]) == 0
+    assert f"strongest vibration       {hz:.1f} Hz" in capsys.readouterr().out
+
+
+# ----- plots -------------------------------------------------------------------------------
+PLOT_RUNS = [
+    ["sweep", "--points", "9", "--speed-mph", "30", "40"],
+    ["sweep", "--points", "21", "--racket", str(EXAMPLES / "profile_racket.toml")],
+    ["map", "--grid", "5", "4"],
+    ["serve", "--what-if"],
+    ["collide", "--b", "wall"],
+    ["drop"],
+    ["ball", "happy", "--speeds", "5", "10"],
+    ["ball"],
+    ["modes"],
+    ["specs", "pure-drive-2021"],
+    ["feel"],
+    ["compare", "--points", "11"],
+    ["validate"],
+]
+_RAW = re.compile(r"\b[a-z]+_[a-z]+(_[a-zA-Z0-9]+)*\b")  # a column's name: speed_m_s
+
+
+def _drawn(argv, tmp_path, monkeypatch):
+    """The Axes a command would save with --plot."""
+    made = []
+    for module in ("sweep", "serve", "balls", "rackets", "validate"):
+        monkeypatch.setattr(f"studies.cli.{module}.save_plot", lambda axes, path: made.append(axes))
+    assert main([*argv, "--plot", str(tmp_path / "p.png")]) == 0
+    assert len(made) == 1
+    return np.atleast_1d(made[0])[0].figure
+
+
+@pytest.mark.parametrize("argv", PLOT_RUNS, ids=" ".join)
+def test_every_plot_labels_its_axes_with_units_and_keeps_its_legends_off_the_data(
+    argv, tmp_path, monkeypatch, capsys
+):
+    fig = _drawn(argv, tmp_path, monkeypatch)
+    fig.canvas.draw()
+    for ax in fig.axes:
+        for text in (ax.get_xlabel(), ax.get_ylabel()):
+            if text:
+                assert re.search(r"\[[^\]]+\]", text), text  # a unit, or [-]
+        legend = ax.get_legend()
+        if legend is None:
+            continue
+        for entry in legend.get_texts():
+            assert not _RAW.search(entry.get_text()), entry.get_text()
+        box, area = legend.get_window_extent(), ax.get_window_extent()
+        overlap_x = min(box.x1, area.x1) - max(box.x0, area.x0)
+        overlap_y = min(box.y1, area.y1) - max(box.y0, area.y0)
+        assert overlap_x <= 1 or overlap_y <= 1, (argv, [t.get_text() for t in legend.get_texts()])
+    texts = [
+        t.get_text() for ax in fig.axes if ax.get_legend() for t in ax.get_legend().get_texts()
+    ]
+    if argv[0] == "collide":
+        assert "wall" in texts and not any("ball b" in t for t in texts)
+    if argv[:2] == ["ball", "happy"]:
+        assert not any("ITF" in t or "type 2" in t for t in texts)  # not a tennis ball
+    if argv[0] == "ball" and len(argv) == 1:
+        assert any("ITF" in t for t in texts)
+        assert not fig.axes[1].yaxis.get_major_formatter().get_offset()  # no 1e-12+2.25
+    if argv[0] == "sweep" and "--speed-mph" in argv:
+        assert any("ball at 30 mph" in t for t in texts)
+    if argv[0] == "sweep" and "profile_racket.toml" in argv[-1]:
+        assert any(t.startswith("re-contact") for t in texts)
+    import matplotlib.pyplot as plt
+
+    plt.close(fig)
