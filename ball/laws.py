@@ -76,6 +76,11 @@ class MonotoneLaw(ABC):
     def kernel_law(self) -> tuple:
         """(code, (p0, p1, p2, p3)): the law in the racket solver's compiled kernel."""
 
+    @property
+    def storable(self) -> float:
+        """The most energy [J] a collision can store in the ball (inf: no limit)."""
+        return np.inf
+
 
 @dataclass(frozen=True)
 class LinearSpring(MonotoneLaw):

@@ -50,6 +50,12 @@ def monotone_contact(
     from scipy.integrate import solve_ivp  # scipy loads on first use (import time)
 
     laws: Sequence[MonotoneLaw] = [law_a] if law_b is None else [law_a, law_b]
+    energy = 0.5 * mu * closing_speed**2
+    if energy > sum(law.storable for law in laws):
+        raise ValueError(
+            f"the collision's energy ({energy:g} J) is more than the balls' force laws can "
+            "store short of their limits (a stiffening ball squashed flat): slower, please"
+        )
     # Time and length scales for the tolerances: the secant stiffness of the loading curve
     # at a force of 1 N sets the contact period.
     f_ref = 1.0

@@ -106,6 +106,13 @@ class StiffeningHysteresis(_PowerBranches):
         """Energy [J] stored by loading to ``f_max`` [N]: X_lim F_c (ln(1 + r) - r/(1 + r))."""
         return self.x_lim * self._f_c * stored_fraction(np.asarray(f_max) / self._f_c)
 
+    @property
+    def storable(self) -> float:
+        """The energy [J] stored at 1 - X/x_lim = 1e-9: beyond it no float is left between
+        the compressions a collision would step through (refused as too energetic).
+        """
+        return float(self.stored(1e9 * self._f_c))
+
     def cor_at_compression(self, x_max):
         """Rigid-surface COR e(X_max) of a bounce compressing the ball by ``x_max`` [m]."""
         return falling_cor(self.e0, self.slope, x_max)
