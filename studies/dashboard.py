@@ -1,32 +1,50 @@
 """What the interactive page shows, computed apart from the page (so that it is tested
-without a browser): a racket (a catalogue preset or a spec sheet, lead tape by clock
-position, a tension), a ball and a swing in; e, e_A and exit speed along the racket, the face
-map, the sweet spots and the serve out.
+without a browser): two rackets, A and B (each a catalogue preset or the spec sheet; lead
+tape by clock position on A, one tension for both), a ball and a swing in; for each, the
+headline numbers a coach reads (serve speed, power at the centre, sweet area, feel, the
+racket's own numbers), the serve speed against the head speed, e_A and the swung exit speed
+along the racket, the face map and the sweet spots out; and B - A.
 """
 
 from __future__ import annotations
 
+import functools
 import warnings
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 
 import numpy as np
+import pandas as pd
 
 from ball import DEFAULT_BALL
 from common.checks import SPEED_RANGE, in_range, non_negative
-from common.units import LB, MPH
+from common.units import GRAVITY, LB, MPH
 from racket import CATALOG, Swing, from_specs, impact
+from racket.feel import hand_feel
 from racket.specs.ra import ra_note
 from racket.specs.sheet import SPEC_RANGES
 from racket.specs.strings import with_tension
 from racket.swing import PIVOT_RANGE, equal_effort
 from studies.config import BALLS
-from studies.landmarks import sweet_spots
 from studies.maps import face_map
-from studies.serve import serve_table
+from studies.serve import serve, serve_table
+from studies.sweetspots import sweet_spots
 from studies.tables import impact_table
 
 MY_SHEET = "my spec sheet"
 """The racket choice that fits the page's spec-sheet fields."""
+
+HEAD_SPEEDS_MPH = np.arange(20.0, 151.0, 10.0)
+"""Head speeds of the serve-speed curve [mph]: a slow feed to a fast professional serve
+(about 150 mph head speed at the top of the men's game; an assumption for the plot's reach)."""
+
+COMPARED = (
+    "serve_mph", "exit_centre_mph", "e_A_centre", "sweet_area_cm2", "feel_hz", "mass_g",
+    "balance_cm", "swingweight_kgcm2", "twistweight_kgcm2", "f1_hz",
+)  # fmt: skip
+"""The headline numbers the page shows for A, B and B - A."""
+
+_SHEET = ("mass_g", "balance_cm", "swingweight_kgcm2", "head_size_in2", "f1_hz", "ra")
+_MODE_NAMES = ("first", "second", "third", "fourth", "fifth")
 
 
 @dataclass(frozen=True)
@@ -35,23 +53,23 @@ class PageInputs:
 
     Parameters
     ----------
-    racket : str
-        A catalogue name (:data:`racket.CATALOG`) or :data:`MY_SHEET`.
+    racket, racket_b : str
+        Rackets A and B: a catalogue name (:data:`racket.CATALOG`) or :data:`MY_SHEET`.
     mass_g, balance_cm, swingweight_kgcm2, head_size_in2 : float
         The spec sheet used with :data:`MY_SHEET` [g, cm from the butt, kg cm^2, in^2].
     f1_hz, ra : float or None
         Its frame stiffness, one of the two (the other None): the first free frequency [Hz],
         or the RA rating [-] (f1 from it by :func:`racket.specs.ra.f1_from_ra`).
     lead_g : float
-        Lead tape per side [g] (0 for none).
+        Lead tape per side on racket A [g] (0 for none).
     lead_at : str
         Its clock position ("12", "3 and 9", ...).
     ball : str
         A ball preset (:data:`studies.config.BALLS`); default the ITF type 2 ball.
     tension_lb : float
-        String tension [lb].
-    ball_speed : float
-        Incoming ball speed [m/s] (racket at rest, and the groundstroke).
+        String tension of both rackets [lb].
+    ball_speed_mph : float
+        Incoming ball speed [mph] (racket at rest, the groundstroke and the feel).
     swing_mph : float
         Racket-head speed of the swing [mph] (the serve and the groundstroke).
     pivot_cm_from_butt : float
@@ -59,6 +77,7 @@ class PageInputs:
     """
 
     racket: str = "pure-drive-2021"
+    racket_b: str = "pro-staff-97l-cv"
     mass_g: float = 300.0
     balance_cm: float = 33.0
     swingweight_kgcm2: float = 315.0
@@ -69,17 +88,19 @@ class PageInputs:
     lead_at: str = "3 and 9"
     ball: str = DEFAULT_BALL
     tension_lb: float = 55.0
-    ball_speed: float = 16.5
-    swing_mph: float = 60.0
+    ball_speed_mph: float = 37.0
+    swing_mph: float = 70.0
     pivot_cm_from_butt: float = -5.0
 
 
 @dataclass(frozen=True)
-class PageResults:
-    """What the page shows (built by :func:`page_results`).
+class RacketResults:
+    """What the page shows for one racket (built by :func:`racket_results`).
 
     Attributes
     ----------
+    name : str
+        The racket's choice on the page.
     racket : Racket
         The racket the controls describe.
     along : DataFrame
@@ -88,81 +109,101 @@ class PageResults:
     face : FaceMap
         The face map (:func:`studies.maps.face_map`).
     spots : DataFrame
-        The sweet spots (:func:`studies.landmarks.sweet_spots`).
-    serve : DataFrame
-        The serve at the centre and 5 cm towards the tip (:func:`studies.serve.serve_table`).
+        The sweet spots (:func:`studies.sweetspots.sweet_spots`).
+    serves : DataFrame
+        The serve at the string centre (:func:`studies.serve.serve`) for each of
+        :data:`HEAD_SPEEDS_MPH`.
     summary : dict
-        The page's headline numbers (g, cm, kg cm^2, Hz, e_A, cm^2, mph); with an RA rating,
-        ``f1_from_ra`` says which f1 it gave and how uncertain (:func:`racket.specs.ra.ra_note`).
+        The headline numbers: ``serve_mph`` (the serve off the centre at the page's head
+        speed) and ``serve_tipward_mph`` (5 cm towards the tip), ``exit_centre_mph`` (the
+        groundstroke off the centre), ``e_A_centre``, ``e_A_3_oclock``, ``largest_e_A`` and
+        where (``largest_e_A_from_butt_cm``), ``sweet_area_cm2``, the feel (``feel_hz``,
+        ``feel_mode``, ``feel_peak_g``), ``mass_g``, ``balance_cm``, ``swingweight_kgcm2``,
+        ``twistweight_kgcm2``, ``f1_hz``; with lead tape the swing at equal effort
+        (``effort_*``); with an RA rating, ``f1_from_ra`` (:func:`racket.specs.ra.ra_note`).
     warnings : tuple of str
-        The simulation's warnings, one of each.
+        The simulation's warnings for this racket, one of each.
     """
 
+    name: str
     racket: object
     along: object
     face: object
     spots: object
-    serve: object
+    serves: object
     summary: dict
     warnings: tuple = ()
 
 
+@dataclass(frozen=True)
+class PageResults:
+    """What the page shows (built by :func:`page_results`).
+
+    Attributes
+    ----------
+    a, b : RacketResults
+        Rackets A and B.
+    difference : dict
+        B - A of each of :data:`COMPARED`.
+    warnings : tuple of str
+        The simulation's warnings, one of each.
+    """
+
+    a: RacketResults
+    b: RacketResults
+    difference: dict = field(default_factory=dict)
+    warnings: tuple = ()
+
+
 def page_racket(inputs: PageInputs):
-    """The racket the controls describe.
+    """Racket A as the controls describe it, with its lead tape.
 
     Parameters
     ----------
     inputs : PageInputs
         The page's controls.
     """
-    return _with_tape(_untaped(inputs), inputs)
+    return _with_tape(_untaped(inputs, inputs.racket, "racket"), inputs)
 
 
-def _untaped(inputs: PageInputs):
-    """The racket the controls describe, before its lead tape."""
-    if inputs.racket == MY_SHEET:
+def _untaped(inputs: PageInputs, name: str, which: str):
+    """The racket ``name`` (input ``which``) at the controls' tension, before any tape."""
+    if name not in [*CATALOG, MY_SHEET]:
+        raise ValueError(f"{which} must be one of {[*CATALOG, MY_SHEET]}, got {name!r}")
+    sheet = None
+    if name == MY_SHEET:
         low, high, _ = SPEC_RANGES["mass_kg"]  # checked in grams, as the page asks for them
-        mass_g = in_range("mass_g", inputs.mass_g, 1e3 * low, 1e3 * high, "g")
-        racket = from_specs(
+        in_range("mass_g", inputs.mass_g, 1e3 * low, 1e3 * high, "g")
+        sheet = tuple(getattr(inputs, k) for k in _SHEET)
+    return _built(name, inputs.tension_lb, sheet)
+
+
+@functools.lru_cache(maxsize=8)
+def _built(name: str, tension_lb: float, sheet: tuple | None):
+    """The racket ``name`` at ``tension_lb`` [lb], from the spec ``sheet`` (mass [g],
+    balance [cm], swingweight [kg cm^2], head size [in^2], f1 [Hz], RA) for
+    :data:`MY_SHEET` (kept: a fit and its modes take a second or two).
+    """
+    if sheet is not None:
+        mass_g, balance_cm, swingweight, head, f1_hz, ra = sheet
+        return from_specs(
             mass_kg=mass_g / 1e3,
-            balance_cm=inputs.balance_cm,
-            swingweight_kgcm2=inputs.swingweight_kgcm2,
-            head_size_in2=inputs.head_size_in2,
-            f1_hz=inputs.f1_hz,
-            ra=inputs.ra,
-            tension_lb=inputs.tension_lb,
+            balance_cm=balance_cm,
+            swingweight_kgcm2=swingweight,
+            head_size_in2=head,
+            f1_hz=f1_hz,
+            ra=ra,
+            tension_lb=tension_lb,
         )
-    elif inputs.racket in CATALOG:
-        low, high, unit = SPEC_RANGES["tension_lb"]
-        tension = in_range("tension_lb", inputs.tension_lb, low, high, unit) * LB
-        racket = with_tension(CATALOG[inputs.racket].racket(), tension)
-    else:
-        raise ValueError(f"racket must be one of {[*CATALOG, MY_SHEET]}, got {inputs.racket!r}")
-    return racket
+    low, high, unit = SPEC_RANGES["tension_lb"]
+    tension = in_range("tension_lb", tension_lb, low, high, unit) * LB
+    return with_tension(CATALOG[name].racket(), tension)
 
 
 def _with_tape(racket, inputs: PageInputs):
     """``racket`` with the controls' lead tape (if any)."""
     lead_g = non_negative("lead_g", inputs.lead_g, "g")
     return racket.with_lead_tape(lead_g / 1e3, inputs.lead_at) if lead_g > 0 else racket
-
-
-def page_results(inputs: PageInputs, points: int = 61) -> PageResults:
-    """Everything the page shows for ``inputs`` (the warnings on the way, e.g. a ball
-    squashed beyond its radius, collected for the page: one of each).
-
-    Parameters
-    ----------
-    inputs : PageInputs
-        The page's controls.
-    points : int
-        Impact points along the racket.
-    """
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always")
-        results = _page_results(inputs, points)
-    seen = dict.fromkeys(str(w.message) for w in caught)
-    return replace(results, warnings=tuple(seen))
 
 
 def page_swing(inputs: PageInputs, racket, positions) -> Swing:
@@ -192,16 +233,160 @@ def page_swing(inputs: PageInputs, racket, positions) -> Swing:
     return swing
 
 
-def _equal_effort(inputs: PageInputs, base, racket, ball, swing: Swing) -> dict:
+def page_results(inputs: PageInputs, points: int = 61) -> PageResults:
+    """Everything the page shows for ``inputs`` (the warnings on the way, e.g. a ball
+    squashed beyond its radius, collected for the page: one of each).  Each racket's
+    results are kept for the last few controls that feed it, so that choosing B does not
+    compute A again.
+
+    Parameters
+    ----------
+    inputs : PageInputs
+        The page's controls.
+    points : int
+        Impact points along each racket.
+    """
+    for which in ("racket", "racket_b"):
+        _untaped(inputs, getattr(inputs, which), which)  # checked (and kept) first
+    if inputs.ball not in BALLS:
+        raise ValueError(f"ball must be one of {list(BALLS)}, got {inputs.ball!r}")
+    low, high = (v / MPH for v in SPEED_RANGE)
+    in_range("ball_speed_mph", inputs.ball_speed_mph, low, high, "mph")
+    non_negative("lead_g", inputs.lead_g, "g")
+    a = _side(_fed(inputs, inputs.racket, inputs.lead_g), points)
+    b = _side(_fed(inputs, inputs.racket_b, 0.0), points)
+    difference = {k: b.summary[k] - a.summary[k] for k in COMPARED}
+    return PageResults(a, b, difference, tuple(dict.fromkeys(a.warnings + b.warnings)))
+
+
+def _fed(inputs: PageInputs, name: str, lead_g: float) -> PageInputs:
+    """The controls that feed the racket ``name`` with ``lead_g`` of tape (the others at
+    their defaults: one cache entry per racket).
+    """
+    fed = replace(inputs, racket=name, racket_b=name, lead_g=lead_g)
+    if lead_g == 0:
+        fed = replace(fed, lead_at=PageInputs.lead_at)
+    if name != MY_SHEET:
+        fed = replace(fed, **{k: getattr(PageInputs, k) for k in _SHEET})
+    return fed
+
+
+@functools.lru_cache(maxsize=8)
+def _side(inputs: PageInputs, points: int) -> RacketResults:
+    """:func:`racket_results` for ``inputs.racket`` with ``inputs.lead_g`` of tape, and
+    the equal-effort swing when taped, the warnings on the way recorded.
+    """
+    speed = inputs.ball_speed_mph * MPH
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        base = _untaped(inputs, inputs.racket, "racket")
+        results = racket_results(inputs.racket, _with_tape(base, inputs), inputs, speed, points)
+        results.summary.update(_equal_effort(inputs, base, results.racket, speed))
+    return replace(results, warnings=tuple(dict.fromkeys(str(w.message) for w in caught)))
+
+
+def racket_results(
+    name: str, racket, inputs: PageInputs, speed: float, points: int = 61
+) -> RacketResults:
+    """What the page shows for ``racket`` (the page's choice ``name``).
+
+    Parameters
+    ----------
+    name : str
+        The racket's choice on the page.
+    racket : Racket
+        The racket (taped if it is).
+    inputs : PageInputs
+        The page's controls (ball, swing, spec sheet).
+    speed : float
+        Incoming ball speed [m/s].
+    points : int
+        Impact points along the racket.
+    """
+    ball = BALLS[inputs.ball]()
+    x = np.linspace(*racket.strings.extent, points)
+    swing = page_swing(inputs, racket, x)
+    along = impact_table(impact(racket, ball, x, speed))
+    hit = impact(racket, ball, x, speed, **swing.impact_kwargs(racket, x))
+    along["exit_speed_swung_mph"] = hit.ball_rebound / MPH
+    face = face_map(racket, ball, speed)
+    centre = racket.strings.center
+    served = serve_table(racket, ball, [centre, centre - 0.05], swing.head_speed,
+                         swing.pivot_from_butt, zero_cor=False)  # fmt: skip
+    curve = [
+        serve(racket, ball, centre, replace(swing, head_speed=v * MPH)) for v in HEAD_SPEEDS_MPH
+    ]
+    swung = impact(racket, ball, centre, speed, **swing.impact_kwargs(racket, centre))
+    best = int(np.argmax(along["e_A"]))
+    summary = {
+        "serve_mph": float(served["serve_simulated_mph"].iloc[0]),
+        "serve_tipward_mph": float(served["serve_simulated_mph"].iloc[1]),
+        "exit_centre_mph": float(swung.ball_rebound) / MPH,
+        "e_A_centre": face.e_A_centre,
+        "e_A_3_oclock": face.e_A_side,
+        "largest_e_A": float(along["e_A"].iloc[best]),
+        "largest_e_A_from_butt_cm": float(along["position_from_butt_cm"].iloc[best]),
+        "sweet_area_cm2": face.sweet_area_cm2,
+        **feel_summary(racket, ball, speed),
+        "mass_g": 1e3 * racket.beam.mass,
+        "balance_cm": float(100 * racket.beam.balance),
+        "swingweight_kgcm2": racket.beam.swingweight_kgcm2,
+        "twistweight_kgcm2": racket.beam.twistweight_kgcm2,
+        "f1_hz": float(racket.beam.modes.frequencies[0]),
+    }
+    if name == MY_SHEET and inputs.ra is not None:
+        summary["f1_from_ra"] = ra_note(inputs.ra)
+    spots = sweet_spots(racket, ball, speed, swing)
+    return RacketResults(name, racket, along, face, spots, pd.DataFrame(curve), summary)
+
+
+def feel_summary(racket, ball, speed: float) -> dict:
+    """The feel of a ball at ``speed`` [m/s] hitting the string centre of ``racket`` at
+    rest (:func:`racket.feel.hand_feel`, the handle read at the middle of the grip): the
+    strongest vibration of the handle above 20 Hz (:meth:`racket.feel.HandFeel.strongest`),
+    named by the natural frequency of the racket as supported that it is, when it is one.
+
+    Parameters
+    ----------
+    racket : Racket
+        A free or hand-held racket.
+    ball : Ball
+    speed : float
+        Ball speed [m/s].
+
+    Returns
+    -------
+    dict
+        ``feel_hz`` [Hz], ``feel_mode`` (words), ``feel_peak_g`` (the handle's peak
+        acceleration [g]).
+    """
+    feel = hand_feel(racket, ball, racket.strings.center, speed)
+    hz, is_mode = feel.strongest()
+    if is_mode:
+        nearest = int(np.argmin(np.abs(feel.mode_frequencies - hz)))
+        order = _MODE_NAMES[nearest] if nearest < len(_MODE_NAMES) else f"{nearest + 1}th"
+        words = f"the racket's {order} natural frequency"
+    else:
+        words = f"between the racket's modes (to ±{feel.frequencies[1]:.0f} Hz)"
+    return {
+        "feel_hz": hz,
+        "feel_mode": words,
+        "feel_peak_g": feel.peak_acceleration / GRAVITY,
+    }
+
+
+def _equal_effort(inputs: PageInputs, base, racket, speed: float) -> dict:
     """With lead tape: the swing the player makes with the taped racket at the effort that
     swings the untaped one at the page's swing (:func:`racket.swing.equal_effort`, Cross
     and Bower 2006), and the exit speed at the string centre of each [mph]; {} without.
     """
     if racket is base:  # no tape
         return {}
+    ball = BALLS[inputs.ball]()
+    swing = page_swing(inputs, base, base.strings.center)
     taped = equal_effort(swing, base.beam.swingweight, racket.beam.swingweight)
     exits = [
-        impact(r, ball, r.strings.center, inputs.ball_speed, **s.impact_kwargs(r, r.strings.center))
+        impact(r, ball, r.strings.center, speed, **s.impact_kwargs(r, r.strings.center))
         for r, s in ((base, swing), (racket, taped))
     ]  # fmt: skip
     return {
@@ -210,39 +395,3 @@ def _equal_effort(inputs: PageInputs, base, racket, ball, swing: Swing) -> dict:
         "effort_exit_untaped_mph": float(exits[0].ball_rebound) / MPH,
         "effort_exit_taped_mph": float(exits[1].ball_rebound) / MPH,
     }
-
-
-def _page_results(inputs: PageInputs, points: int) -> PageResults:
-    if inputs.ball not in BALLS:
-        raise ValueError(f"ball must be one of {list(BALLS)}, got {inputs.ball!r}")
-    base, ball = _untaped(inputs), BALLS[inputs.ball]()
-    racket = _with_tape(base, inputs)
-    x = np.linspace(*racket.strings.extent, points)
-    swing = page_swing(inputs, racket, x)
-    along = impact_table(impact(racket, ball, x, inputs.ball_speed))
-    hit = impact(racket, ball, x, inputs.ball_speed, **swing.impact_kwargs(racket, x))
-    along["exit_speed_swung_mph"] = hit.ball_rebound / MPH
-    face = face_map(racket, ball, inputs.ball_speed)
-    spots = sweet_spots(racket, ball, inputs.ball_speed, swing)
-    centre = racket.strings.center
-    serve = serve_table(racket, ball, [centre, centre - 0.05], swing.head_speed,
-                        swing.pivot_from_butt, zero_cor=False)  # fmt: skip
-    best = int(np.argmax(along["e_A"]))
-    summary = {
-        **_equal_effort(inputs, base, racket, ball, swing),
-        "mass_g": 1e3 * racket.beam.mass,
-        "balance_cm": 100 * racket.beam.balance,
-        "swingweight_kgcm2": racket.beam.swingweight_kgcm2,
-        "twistweight_kgcm2": racket.beam.twistweight_kgcm2,
-        "f1_hz": float(racket.beam.modes.frequencies[0]),
-        "e_A_centre": face.e_A_centre,
-        "e_A_3_oclock": face.e_A_side,
-        "largest_e_A": float(along["e_A"].iloc[best]),
-        "largest_e_A_from_butt_cm": float(along["position_from_butt_cm"].iloc[best]),
-        "sweet_area_cm2": face.sweet_area_cm2,
-        "serve_centre_mph": float(serve["serve_simulated_mph"].iloc[0]),
-        "serve_tipward_mph": float(serve["serve_simulated_mph"].iloc[1]),
-    }
-    if inputs.racket == MY_SHEET and inputs.ra is not None:
-        summary["f1_from_ra"] = ra_note(inputs.ra)
-    return PageResults(racket, along, face, spots, serve, summary)

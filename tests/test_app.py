@@ -1,20 +1,25 @@
 """The interactive page in a real browser: headless Chromium (Debian's package) driven by
-Playwright loads the page served by ``racket-impact app``, changes a control, and sees the
-numbers and the plot change, with no request leaving the machine (issue 14).  What the page
-computes is tested without a browser too."""
+Playwright loads the page served by ``racket-impact app``, checks that no card's content
+overflows it and that the serve speed is in sight, chooses racket B and sees the difference
+B - A of the numbers shown, with no request leaving the machine (issues 14 and 28).  What
+the page computes and draws is tested without a browser too, and the port is bound before
+the page's address is announced."""
 
 import os
+import re
 import shutil
 import socket
 import subprocess
 import sys
-import time
 import urllib.request
 
+import matplotlib
 import pytest
 
 from racket.swing import EFFORT_EXPONENT
-from studies.dashboard import MY_SHEET, PageInputs, page_results
+from studies.dashboard import COMPARED, HEAD_SPEEDS_MPH, MY_SHEET, PageInputs, page_results
+
+matplotlib.use("Agg")
 
 CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
 CHROMIUM_FLAGS = [
@@ -26,33 +31,145 @@ CHROMIUM_FLAGS = [
     "--disable-component-update",
     "--disable-sync",
 ]  # without the background-networking flags Chromium keeps calling out (closed network)
+CARDS = ("card_serve", "card_power", "card_sweet", "card_feel", "card_racket")
 
 
 def test_page_results_follow_the_controls():
     base = page_results(PageInputs())
     taped = page_results(PageInputs(lead_g=6.0, lead_at="3 and 9"))
-    assert taped.summary["twistweight_kgcm2"] > base.summary["twistweight_kgcm2"]
-    assert taped.summary["e_A_3_oclock"] > base.summary["e_A_3_oclock"]
-    assert base.summary["serve_tipward_mph"] > base.summary["serve_centre_mph"]
+    a, b = base.a.summary, base.b.summary
+    assert taped.a.summary["twistweight_kgcm2"] > a["twistweight_kgcm2"]
+    assert taped.a.summary["e_A_3_oclock"] > a["e_A_3_oclock"]
+    assert taped.b.summary == b  # the tape is on A only
+    assert a["serve_tipward_mph"] > a["serve_mph"]
     # lead tape: the swing at equal effort is slower by the swingweight law (issue 25)
-    assert "effort_head_taped_mph" not in base.summary
-    heavier = page_results(PageInputs(lead_g=5.0, lead_at="12")).summary
+    assert "effort_head_taped_mph" not in a
+    heavier = page_results(PageInputs(lead_g=5.0, lead_at="12")).a.summary
     ratio = heavier["effort_head_taped_mph"] / heavier["effort_head_untaped_mph"]
     assert ratio == pytest.approx(
-        (base.summary["swingweight_kgcm2"] / heavier["swingweight_kgcm2"]) ** EFFORT_EXPONENT,
-        rel=1e-9,
+        (a["swingweight_kgcm2"] / heavier["swingweight_kgcm2"]) ** EFFORT_EXPONENT, rel=1e-9
     )
     assert heavier["effort_exit_taped_mph"] > 0 and heavier["effort_exit_untaped_mph"] > 0
     mine = page_results(PageInputs(racket=MY_SHEET, mass_g=310, swingweight_kgcm2=320))
-    assert mine.summary["mass_g"] == pytest.approx(310.0)
-    with pytest.raises(ValueError, match="racket must be one of"):
-        page_results(PageInputs(racket="no such racket"))
+    assert mine.a.summary["mass_g"] == pytest.approx(310.0)
+    assert mine.a.summary["swingweight_kgcm2"] == pytest.approx(320.0)
+    for which in ("racket", "racket_b"):
+        with pytest.raises(ValueError, match=f"{which} must be one of"):
+            page_results(PageInputs(**{which: "no such racket"}))
+    with pytest.raises(ValueError, match=r"ball_speed_mph must be in \[.*\] mph, got 900"):
+        page_results(PageInputs(ball_speed_mph=900.0))
+
+
+def test_two_rackets_and_their_difference():
+    r = page_results(PageInputs(racket="pure-drive-2021", racket_b="pro-staff-97l-cv"))
+    for key in COMPARED:
+        assert r.difference[key] == pytest.approx(r.b.summary[key] - r.a.summary[key], abs=1e-12)
+    assert r.a.summary["swingweight_kgcm2"] != pytest.approx(r.b.summary["swingweight_kgcm2"])
+    same = page_results(PageInputs(racket_b="pure-drive-2021"))
+    assert all(same.difference[k] == 0.0 for k in COMPARED)
+
+
+def test_serve_speed_against_head_speed_covers_real_play():
+    r = page_results(PageInputs(swing_mph=150.0))
+    serves = r.a.serves
+    assert serves["head_speed_mph"].max() == pytest.approx(150.0)
+    assert list(serves["head_speed_mph"]) == pytest.approx(list(HEAD_SPEEDS_MPH))
+    assert serves["serve_simulated_mph"].is_monotonic_increasing
+    # the card's serve at the page's head speed is the curve's point there
+    assert r.a.summary["serve_mph"] == pytest.approx(serves["serve_simulated_mph"].iloc[-1])
+
+
+def test_the_feel_is_named_by_the_mode_it_rings_at():
+    r = page_results(PageInputs())
+    for side in (r.a, r.b):
+        s = side.summary
+        # a centre hit on a free racket rings the handle at the frame's first bending mode:
+        # its damped frequency, f1 sqrt(1 - zeta^2) (zeta 0.005: 1.25e-5 below f1)
+        assert s["feel_mode"] == "the racket's first natural frequency"
+        assert s["feel_hz"] == pytest.approx(s["f1_hz"], rel=5e-5)
+        assert s["feel_hz"] < s["f1_hz"]
+        assert s["feel_peak_g"] > 0
+
+
+def _overlap(a, b) -> bool:
+    return a.x0 < b.x1 and b.x0 < a.x1 and a.y0 < b.y1 and b.y0 < a.y1
+
+
+def test_the_page_plots_one_quantity_each_with_legends_outside():
+    from studies.plots_page import plot_along_racket, plot_face_map_page, plot_serve_speeds
+
+    r = page_results(PageInputs())
+    along = {"A": r.a.along, "B": r.b.along}
+    axes = [
+        plot_serve_speeds({"A": r.a.serves, "B": r.b.serves}, 70.0),
+        plot_along_racket(along, "exit_speed_swung_mph", "ball speed [mph]", mph=True),
+        plot_along_racket(along, "e_A", "rebound ratio e_A [-]"),
+    ]
+    for ax in axes:
+        ax.figure.canvas.draw()
+        renderer = ax.figure.canvas.get_renderer()
+        assert re.search(r"\[.+\]", ax.get_ylabel()) and re.search(r"\[.+\]", ax.get_xlabel())
+        assert len(ax.get_lines()) >= 2 and {ln.get_label() for ln in ax.get_lines()} >= {"A", "B"}
+        legend = ax.get_legend().get_window_extent(renderer)
+        assert not _overlap(legend, ax.get_window_extent(renderer)), "legend on the data"
+        assert all(other.get_ylabel() for other in ax.figure.axes)  # each with its quantity
+    face = plot_face_map_page(r.a.face, "A")
+    face.figure.tight_layout()  # as the page lays it out
+    face.figure.canvas.draw()
+    renderer = face.figure.canvas.get_renderer()
+    box = face.get_legend().get_window_extent(renderer)
+    assert box.y0 >= 0 and box.y1 <= face.figure.bbox.y1  # in the figure
+    assert not _overlap(box, face.xaxis.label.get_window_extent(renderer))
+    assert not _overlap(box, face.get_window_extent(renderer))
+    (bar,) = [other for other in face.figure.axes if other is not face]  # the colour bar
+    assert not _overlap(face.xaxis.label.get_window_extent(renderer), bar.get_window_extent())
+    assert not _overlap(box, bar.get_window_extent())
 
 
 def _free_port() -> int:
     with socket.socket() as s:
         s.bind(("127.0.0.1", 0))
         return s.getsockname()[1]
+
+
+class _Stop(Exception):
+    pass
+
+
+def test_the_port_is_bound_before_the_address_is_announced():
+    from studies.app import DEFAULT_PORT, run
+    from studies.cli import build_parser
+
+    port, heard = _free_port(), []
+
+    def announce(url):
+        with socket.create_connection(("127.0.0.1", port), timeout=5):  # already listening
+            heard.append(url)
+        raise _Stop
+
+    with pytest.raises(_Stop):
+        run("127.0.0.1", port, announce)
+    assert heard == [f"http://127.0.0.1:{port}"]
+    socket.create_server(("127.0.0.1", port)).close()  # released
+    with socket.create_server(("127.0.0.1", 0)) as taken:
+        busy = taken.getsockname()[1]
+        with pytest.raises(ValueError, match=f"port {busy} on 127.0.0.1 cannot be served"):
+            run("127.0.0.1", busy, heard.append)
+    assert len(heard) == 1  # nothing announced for the port in use
+    assert build_parser().parse_args(["app"]).port == DEFAULT_PORT != 8000  # mkdocs: 8000
+
+
+def test_a_port_in_use_is_one_line_and_status_2():
+    with socket.create_server(("127.0.0.1", 0)) as taken:
+        port = taken.getsockname()[1]
+        done = subprocess.run(
+            [sys.executable, "-m", "studies.cli", "app", "--port", str(port)],
+            capture_output=True, text=True, timeout=120,
+        )  # fmt: skip
+    assert done.returncode == 2
+    assert done.stdout == ""  # no address announced
+    assert done.stderr.count("\n") == 1 and "Traceback" not in done.stderr
+    assert f"port {port} on 127.0.0.1 cannot be served: Address already in use" in done.stderr
 
 
 @pytest.fixture
@@ -62,21 +179,54 @@ def served():
         [sys.executable, "-m", "studies.cli", "app", "--port", str(port)],
         stdout=subprocess.PIPE,
         stderr=subprocess.STDOUT,
+        text=True,
     )
+    line = server.stdout.readline()  # announced once the port is bound
     url = f"http://127.0.0.1:{port}"
-    deadline = time.monotonic() + 60
-    while time.monotonic() < deadline:
-        try:
-            urllib.request.urlopen(url, timeout=2).read()
-            break
-        except OSError:
-            time.sleep(0.3)
-    else:
+    if url not in line:
         server.kill()
-        pytest.fail(f"the page did not come up: {server.stdout.read().decode()[-2000:]}")
+        pytest.fail(f"the page did not come up: {line}{server.stdout.read()[-2000:]}")
+    urllib.request.urlopen(url, timeout=60).read()  # answers at once: no retries
     yield url
     server.terminate()
     server.wait(timeout=10)
+
+
+_OVERFLOWS = """cards => cards.flatMap(id => {
+    const card = document.getElementById(id);
+    return [card, ...card.querySelectorAll('*')]
+        .filter(el => el.clientWidth > 0 && el.scrollWidth > el.clientWidth)
+        .map(el => `${id}: <${el.tagName.toLowerCase()} id=${el.id}> ${el.scrollWidth} > `
+                   + `${el.clientWidth}`);
+})"""
+
+_IN_SIGHT = """id => {
+    const el = document.getElementById(id), r = el.getBoundingClientRect();
+    const card = el.closest('.card').getBoundingClientRect();
+    const inside = r.left >= card.left && r.right <= card.right && r.top >= card.top
+        && r.bottom <= card.bottom;
+    const seen = r.width > 0 && r.top >= 0 && r.left >= 0 && r.bottom <= innerHeight
+        && r.right <= innerWidth;
+    const hit = document.elementFromPoint((r.left + r.right) / 2, (r.top + r.bottom) / 2);
+    return inside && seen && hit !== null && el.contains(hit);
+}"""
+
+
+def _numbers(page, card: str) -> list[tuple[float, float, float]]:
+    """(A, B, B - A) as shown, per column of ``card``."""
+    count = page.locator(f"#{card} [id^='{card}_diff_']").count()
+    shown = [
+        tuple(float(page.inner_text(f"#{card}_{row}_{k}").replace("−", "-"))
+              for row in ("a", "b", "diff"))
+        for k in range(count)
+    ]  # fmt: skip
+    assert shown, f"no numbers in {card}"
+    return shown
+
+
+def _decimals(page, card: str, k: int) -> int:
+    text = page.inner_text(f"#{card}_a_{k}")
+    return len(text.split(".")[1]) if "." in text else 0
 
 
 def test_the_page_in_a_real_browser(served, tmp_path):
@@ -97,28 +247,34 @@ def test_the_page_in_a_real_browser(served, tmp_path):
 
     with sync_playwright() as p:
         browser = p.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_FLAGS)
-        page = browser.new_page(viewport={"width": 1400, "height": 1100})
+        page = browser.new_page(viewport={"width": 1400, "height": 1000})
         page.route("**/*", local_only)
         page.goto(served)
-        numbers = page.locator("#numbers-text")
-        numbers.wait_for(timeout=180_000)  # the first run may compile the solver
-        page.wait_for_function("document.querySelector('#along img') !== null", timeout=60_000)
-        before = numbers.inner_text()
-        plot_before = page.locator("#along img").get_attribute("src")
-        assert "e_A at the centre" in before and "twistweight" in before
-        page.select_option("#racket", "pro-staff-97l-cv")
+        page.locator("#card_serve_a_0").wait_for(timeout=180_000)  # may compile the solver
+        for plot in ("serve_plot", "exit_plot", "power_plot", "face_a", "face_b"):
+            page.wait_for_function(f"document.querySelector('#{plot} img') !== null",
+                                   timeout=60_000)  # fmt: skip
+        assert page.evaluate(_OVERFLOWS, list(CARDS)) == []
+        assert page.evaluate(_IN_SIGHT, "card_serve_a_0"), "the serve speed is not in sight"
+        assert page.evaluate(_IN_SIGHT, "card_serve_b_0")
+        assert "mph" in page.inner_text("#card_serve")
+        assert "kg cm²" in page.inner_text("#card_racket")
+        serve_a, serve_b, _ = _numbers(page, "card_serve")[0]
+        page.select_option("#racket_b", "pure-drive-2025")
         page.wait_for_function(
-            "t => document.querySelector('#numbers-text').innerText !== t", arg=before,
-            timeout=60_000,
+            "t => document.getElementById('card_serve_b_0')?.innerText !== t",
+            arg=page.inner_text("#card_serve_b_0"), timeout=60_000,
         )  # fmt: skip
-        page.wait_for_function(
-            "s => document.querySelector('#along img').getAttribute('src') !== s",
-            arg=plot_before,
-            timeout=60_000,
-        )
-        after = numbers.inner_text()
-        assert after != before and "e_A at the centre" in after
-        page.screenshot(path=str(tmp_path / "page.png"), full_page=True)
+        assert "pure-drive-2025" in page.inner_text("#card_racket")
+        for card in CARDS:
+            for k, (a, b, diff) in enumerate(_numbers(page, card)):
+                assert diff == pytest.approx(round(b - a, _decimals(page, card, k)), abs=1e-9)
+        after_a, after_b, _ = _numbers(page, "card_serve")[0]
+        assert after_a == serve_a and after_b != serve_b  # only B changed
+        assert page.evaluate(_OVERFLOWS, list(CARDS)) == []
+        page.set_viewport_size({"width": 1400, "height": 2400})  # the whole page (docs/app.png)
+        page.wait_for_timeout(3000)  # the plots redrawn at their new sizes
+        page.screenshot(path=str(tmp_path / "page.png"))
         browser.close()
     assert outside == [], f"the page fetched from outside the machine: {outside}"
     assert (tmp_path / "page.png").stat().st_size > 50_000
