@@ -1,7 +1,12 @@
-"""The README's Python code runs as written, and every example file loads and runs: the
-documentation cannot drift from the code (issue 15)."""
+"""The documentation cannot drift from the code (issues 15 and 29): the README's commands print
+what the README shows, every worked example of the docs runs (its commands and Python blocks,
+in order, as the site's build runs them), every example file loads and runs, and the
+docstrings' Examples run as doctests."""
 
+import importlib.util
+import json
 import re
+import shlex
 from pathlib import Path
 
 import pytest
@@ -9,41 +14,82 @@ import pytest
 from studies.cli import main
 
 ROOT = Path(__file__).resolve().parent.parent
-DOCUMENTS = [ROOT / "README.md", *sorted((ROOT / "docs").rglob("*.md"))]
-BLOCKS = [
-    (path.relative_to(ROOT), block)
-    for path in DOCUMENTS
-    if "generated" not in path.parts
-    for block in re.findall(r"```python\n(.*?)```", path.read_text(), re.S)
-]
+README = ROOT / "README.md"
 EXAMPLES = sorted((ROOT / "examples").glob("*.toml"))
-GALLERY = sorted((ROOT / "examples" / "gallery").glob("plot_*.py"))
 
 
-def test_the_readme_and_the_docs_have_code_to_run():
-    assert len(BLOCKS) >= 10
+def _hook(name):
+    """A module of the site's build (docs/hooks/), imported from its file."""
+    spec = importlib.util.spec_from_file_location(
+        f"docs_hook_{name}", ROOT / "docs/hooks" / f"{name}.py"
+    )
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
 
 
-@pytest.mark.parametrize(
-    "index", range(len(BLOCKS)), ids=[f"{p}-{i}" for i, (p, _) in enumerate(BLOCKS)]
+RUN = _hook("run")
+PAGES = sorted(
+    path.relative_to(ROOT / "docs").as_posix()
+    for path in (ROOT / "docs").rglob("*.md")
+    if RUN.BLOCK.search(path.read_text())
 )
-def test_documentation_python_block_runs(index, tmp_path, monkeypatch):
-    monkeypatch.chdir(tmp_path)
-    path, block = BLOCKS[index]
-    exec(compile(block, f"{path} python block", "exec"), {})
 
 
-@pytest.mark.parametrize("script", GALLERY, ids=[p.name for p in GALLERY])
-def test_gallery_script_draws_its_figure(script, tmp_path, monkeypatch):
-    import runpy
+def test_the_docs_have_worked_examples():
+    blocks = [m["lang"] for p in PAGES for m in RUN.BLOCK.finditer((ROOT / "docs" / p).read_text())]
+    assert blocks.count("python") >= 10 and blocks.count("console") >= 20
+    guides = {p.relative_to(ROOT / "docs").as_posix() for p in (ROOT / "docs/guide").glob("*.md")}
+    assert guides <= set(PAGES), f"guide pages without a worked example: {guides - set(PAGES)}"
 
-    import matplotlib.pyplot as plt
 
-    monkeypatch.chdir(tmp_path)
-    plt.close("all")
-    runpy.run_path(str(script), run_name="__main__")
-    assert plt.get_fignums(), f"{script.name} drew no figure"
-    plt.close("all")
+@pytest.mark.parametrize("page", PAGES)
+def test_documentation_page_runs(page):
+    """Every command and Python block of the page runs, in order, in one scratch directory,
+    as the site's build runs them (docs/hooks/run.py): a command exits with the status its
+    block expects, a block does not raise.  A page that the built site (site/) ran from this
+    very text and code is not run twice."""
+    text = (ROOT / "docs" / page).read_text()
+    manifest = ROOT / "site" / RUN.MANIFEST
+    if manifest.exists() and json.loads(manifest.read_text()).get(page) == RUN.fingerprint(text):
+        pytest.skip("the site in site/ was built from this page and this code: its build ran it")
+    results, _ = RUN.run_page(text, page)
+    assert len(results) == len(list(RUN.BLOCK.finditer(text)))
+
+
+def _readme_sessions():
+    """The README's console blocks: (command, the output it shows)."""
+    sessions = []
+    for block in re.findall(r"```console\n(.*?)```", README.read_text(), re.S):
+        for chunk in re.split(r"^\$ ", block, flags=re.M)[1:]:
+            command, _, output = chunk.partition("\n")
+            sessions.append((command, output))
+    return sessions
+
+
+def test_the_readme_starts_with_the_two_commands_and_fits_three_screens():
+    lines = README.read_text().splitlines()
+    commands = [line.strip() for line in lines if line.startswith("    ")][:2]
+    assert commands == [
+        "pip install -e . && racket-impact paper",
+        'pip install -e ".[test]" && pytest',
+    ]
+    assert len(lines) <= 160
+    assert len(_readme_sessions()) >= 3 and "](docs/validation.md)" in README.read_text()
+
+
+@pytest.mark.parametrize("index", range(len(_readme_sessions())))
+def test_readme_command_prints_what_the_readme_shows(index, tmp_path):
+    """The README's tour shows real output: run now, each command prints what is shown (when
+    an output format changes, the README shows the new one)."""
+    command, shown = _readme_sessions()[index]
+    RUN.load_kernel()  # so that the output holds no one-off compilation notice
+    status, output = RUN.run_command(shlex.split(command), tmp_path)
+    assert status == 0, output
+    lines = [line.rstrip() for line in output.rstrip().splitlines()]
+    assert lines == [line.rstrip() for line in shown.rstrip().splitlines()], (
+        f"README.md: `{command}` now prints\n{output}"
+    )
 
 
 @pytest.mark.parametrize("example", EXAMPLES, ids=[p.name for p in EXAMPLES])
@@ -83,3 +129,40 @@ def test_docstring_examples_run(module):
     flags = doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE
     result = doctest.testmod(importlib.import_module(module), optionflags=flags)
     assert result.attempted > 0 and result.failed == 0
+
+
+def _named_paths():
+    """The source files and the ``studies``/``common`` modules the README and the docs name."""
+    texts = [README.read_text()] + [p.read_text() for p in (ROOT / "docs").rglob("*.md")]
+    files, modules = set(), set()
+    for text in texts:
+        files |= set(
+            re.findall(
+                r"`((?:ball|beam|racket|studies|common|tests|benchmarks)/[\w/]+\.\w+)`", text
+            )
+        )
+        modules |= set(re.findall(r"`((?:studies|common)(?:\.[a-z_][a-z0-9_]*)+)", text))
+    return sorted(files), sorted(modules)
+
+
+@pytest.mark.parametrize("path", _named_paths()[0])
+def test_a_file_the_docs_name_exists(path):
+    assert (ROOT / path).exists(), f"the docs name {path}, which does not exist"
+
+
+@pytest.mark.parametrize("name", _named_paths()[1])
+def test_a_module_or_object_the_docs_name_exists(name):
+    """``studies.sweeps.MAX_IMPACTS`` and the like: a module, or an object of one."""
+    import importlib
+
+    parts = name.split(".")
+    for split in range(len(parts), 0, -1):
+        try:
+            obj = importlib.import_module(".".join(parts[:split]))
+        except ModuleNotFoundError:
+            continue
+        for attribute in parts[split:]:
+            assert hasattr(obj, attribute), f"the docs name {name}, which does not exist"
+            obj = getattr(obj, attribute)
+        return
+    pytest.fail(f"the docs name {name}, which does not exist")

@@ -1,0 +1,265 @@
+"""MkDocs hook: the commands and Python blocks of the pages, run when the site is built.
+
+A page marks a block to run by adding ``run`` to its fence's language::
+
+    ```console run
+    $ racket-impact sweep --points 9 --plot e_along_racket.png
+    ```
+
+    ```python run
+    print("hello")
+    ```
+
+Each ``$ racket-impact ...`` line runs in this process (``studies.cli.main``, the function
+behind the console command, so the solver is loaded once for the whole site), each Python
+block in a fresh namespace, both in a scratch directory per page where ``examples/`` is the
+project's (so a page can name ``examples/my_racket_specs.toml`` as a reader in the project
+would) and the files an earlier block of the page wrote are still there.  The block becomes the
+command or code, its real output, and every figure it drew (an image file a command wrote, or
+the open matplotlib figures of a Python block), as generated files of the site.  A command
+that exits with another status than expected (``exit=2`` after ``run``; 0 by default) or a
+block that raises fails the build, with what it printed.
+
+The blocks run in ``on_files`` (the figures must be files of the site before the pages are
+read, so that the strict build checks their links); ``on_page_markdown`` puts the results in.
+The output is wrapped in ``<div class="run-output">``, which ``tests/test_site.py`` looks for.
+The build writes ``run-manifest.json`` into the site: for each page it ran, the fingerprint of
+the page and of the code it ran (:func:`fingerprint`), so that ``tests/test_docs.py`` knows
+which pages the site's build has already run as they are now, and runs the others itself
+(:func:`run_page`, which needs no MkDocs).
+"""
+
+from __future__ import annotations
+
+import contextlib
+import hashlib
+import io
+import json
+import os
+import re
+import shlex
+import tempfile
+import traceback
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+BLOCK = re.compile(
+    r"^```(?P<lang>console|python) run(?P<options>[^\n]*)\n(?P<body>.*?)^```[ \t]*$", re.M | re.S
+)
+IMAGES = (".png", ".svg")
+COLUMNS = "100"  # the width of --help, as a terminal of 100 columns shows it
+_RESULTS: dict[str, list[str]] = {}  # page -> the Markdown each of its blocks becomes
+_CACHE: dict[tuple[str, str], tuple[list[str], dict[str, bytes]]] = {}  # for mkdocs serve
+_MANIFEST: dict[str, str] = {}  # page -> fingerprint, of the pages this build ran
+MANIFEST = "run-manifest.json"
+CODE = ("ball", "beam", "common", "racket", "studies", "examples")  # what the blocks run
+
+
+class RunError(Exception):
+    """A block failed: a command exited with another status than expected, or Python raised."""
+
+
+def fingerprint(text: str) -> str:
+    """A digest of a page's text and of every file the blocks may run (the packages' Python
+    and ``examples/``): equal digests, equal results.
+    """
+    digest = hashlib.sha256(text.encode())
+    for folder in CODE:
+        for path in sorted((ROOT / folder).rglob("*")):
+            if path.is_file() and "__pycache__" not in path.parts:
+                digest.update(path.relative_to(ROOT).as_posix().encode())
+                digest.update(path.read_bytes())
+    return digest.hexdigest()
+
+
+def parse_options(text: str) -> dict[str, str]:
+    """The ``key=value`` options after ``run`` in a fence (``exit=2``)."""
+    options = dict(item.split("=", 1) for item in text.split() if "=" in item)
+    unknown = set(options) - {"exit"}
+    if unknown:
+        raise RunError(f"unknown option {sorted(unknown)[0]!r} of a run block")
+    return options
+
+
+def commands(body: str) -> list[list[str]]:
+    """The commands of a ``console run`` block: its ``$ `` lines, each split as a shell would."""
+    lines = [line[2:] for line in body.splitlines() if line.startswith("$ ")]
+    if not lines:
+        raise RunError(f"a console run block has no '$ ' line:\n{body}")
+    argvs = [shlex.split(line) for line in lines]
+    for argv in argvs:
+        if argv[0] != "racket-impact":
+            raise RunError(f"a console run block runs racket-impact only, got {argv[0]!r}")
+    return argvs
+
+
+@contextlib.contextmanager
+def _inside(directory: Path):
+    """Run in ``directory``, with stdout and stderr captured and a terminal of COLUMNS."""
+    out, err = io.StringIO(), io.StringIO()
+    before, columns = Path.cwd(), os.environ.get("COLUMNS")
+    os.environ["COLUMNS"] = COLUMNS
+    os.chdir(directory)
+    try:
+        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+            yield out, err
+    finally:
+        os.chdir(before)
+        if columns is None:
+            del os.environ["COLUMNS"]
+        else:
+            os.environ["COLUMNS"] = columns
+
+
+def _images(directory: Path) -> dict[Path, int]:
+    """The image files under ``directory`` (not in examples/) with their modification times."""
+    found = {}
+    for path in directory.rglob("*"):
+        if path.suffix in IMAGES and path.parts[len(directory.parts)] != "examples":
+            found[path] = path.stat().st_mtime_ns
+    return found
+
+
+def _new_images(directory: Path, before: dict[Path, int]) -> list[Path]:
+    after = _images(directory)
+    return sorted(p for p, mtime in after.items() if before.get(p) != mtime)
+
+
+def run_command(argv: list[str], directory: Path) -> tuple[int, str]:
+    """Run ``racket-impact ARGS`` in this process in ``directory``: its exit status and what
+    it printed (stdout, then stderr).
+    """
+    from studies.cli import main
+
+    with _inside(directory) as (out, err):
+        try:
+            status = main(argv[1:])
+        except SystemExit as exit_:  # --help
+            status = exit_.code if isinstance(exit_.code, int) else 0
+    return status, out.getvalue() + err.getvalue()
+
+
+def run_python(code: str, directory: Path, name: str) -> tuple[str, list[bytes]]:
+    """Run a Python block in a fresh namespace in ``directory``: what it printed and the PNG
+    of each figure it left open.
+    """
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    plt.close("all")
+    with _inside(directory) as (out, err):
+        try:
+            exec(compile(code, name, "exec"), {"__name__": "__main__"})
+        except Exception:
+            raise RunError(f"{name} raised:\n{traceback.format_exc()}") from None
+    pngs = []
+    for number in plt.get_fignums():
+        buffer = io.BytesIO()
+        plt.figure(number).savefig(buffer, format="png", dpi=96, bbox_inches="tight")
+        pngs.append(buffer.getvalue())
+    plt.close("all")
+    return out.getvalue() + err.getvalue(), pngs
+
+
+def _fence(lang: str, text: str, title: str | None = None) -> str:
+    """A fenced block holding ``text``, with a fence longer than any backticks inside."""
+    ticks = "`" * max(3, 1 + max((len(m) for m in re.findall(r"`+", text)), default=0))
+    head = f'{ticks}{lang} title="{title}"' if title else f"{ticks}{lang}"
+    return f"{head}\n{text.rstrip()}\n{ticks}\n"
+
+
+def _wrap(parts: list[str]) -> str:
+    return '<div class="run-output" markdown>\n\n' + "\n".join(parts) + "\n</div>\n"
+
+
+def load_kernel() -> None:
+    """Compile or load the solver before any block runs, so that no output shows the
+    one-off notice of its compilation.
+    """
+    with contextlib.suppress(ImportError), contextlib.redirect_stderr(io.StringIO()):
+        from racket.solver import load_kernel as load
+
+        load()
+
+
+def run_page(text: str, page: str) -> tuple[list[str], dict[str, bytes]]:
+    """Run every block of a page: the Markdown of each block and the figures, by the name
+    (relative to the page's directory) the Markdown links them by.
+    """
+    load_kernel()
+    stem = Path(page).with_suffix("").as_posix().replace("/", "-")
+    figures: dict[str, bytes] = {}
+    results = []
+    with tempfile.TemporaryDirectory(prefix="racket-impact-docs-") as scratch:
+        directory = Path(scratch)
+        (directory / "examples").symlink_to(ROOT / "examples")
+        for number, match in enumerate(BLOCK.finditer(text), start=1):
+            options = parse_options(match["options"])
+            body = match["body"]
+            where = f"{page}, run block {number}"
+            links = []
+            if match["lang"] == "console":
+                expected = int(options.get("exit", 0))
+                session = []
+                for argv in commands(body):
+                    before = _images(directory)
+                    status, output = run_command(argv, directory)
+                    shown = " ".join(shlex.quote(a) for a in argv)
+                    if status != expected:
+                        raise RunError(
+                            f"{where}: `{shown}` exited with {status}, not {expected}:\n{output}"
+                        )
+                    session.append(f"$ {shown}\n{output}".rstrip())
+                    for path in _new_images(directory, before):
+                        links.append((path.name, path.read_bytes()))
+                parts = [_fence("console", "\n".join(session))]
+            else:
+                output, pngs = run_python(body, directory, where)
+                parts = [_fence("python", body)]
+                if output.strip():
+                    parts.append(_fence("text", output, title="output"))
+                links = [(f"figure-{i}.png", png) for i, png in enumerate(pngs, start=1)]
+            for k, (name, content) in enumerate(links, start=1):
+                uri = f"run/{stem}-{number}-{k}-{name}"
+                figures[uri] = content
+                parts.append(f"![{name}]({uri})\n")
+            results.append(_wrap(parts))
+    return results, figures
+
+
+def on_files(files, config):
+    """Run the blocks of every page; add their figures to the site's files."""
+    from mkdocs.exceptions import PluginError
+    from mkdocs.structure.files import File
+
+    pages = [f for f in files.documentation_pages() if BLOCK.search(f.content_string)]
+    _MANIFEST.clear()
+    for file in pages:
+        text = file.content_string
+        key = (file.src_uri, text)
+        if key not in _CACHE:
+            try:
+                _CACHE[key] = run_page(text, file.src_uri)
+            except RunError as err:
+                raise PluginError(str(err)) from None
+        _MANIFEST[file.src_uri] = fingerprint(text)
+        results, figures = _CACHE[key]
+        _RESULTS[file.src_uri] = results
+        folder = Path(file.src_uri).parent
+        for uri, content in figures.items():
+            files.append(File.generated(config, (folder / uri).as_posix(), content=content))
+    return files
+
+
+def on_page_markdown(markdown, page, config, files):
+    """Put each block's results in its place."""
+    results = iter(_RESULTS.get(page.file.src_uri, []))
+    return BLOCK.sub(lambda match: next(results), markdown)
+
+
+def on_post_build(config):
+    """Say which pages this build ran, and from what."""
+    path = Path(config.site_dir) / MANIFEST
+    path.write_text(json.dumps(_MANIFEST, indent=1, sort_keys=True) + "\n")
