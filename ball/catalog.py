@@ -46,6 +46,10 @@ ITF_DROP_SPEED = math.sqrt(2.0 * GRAVITY * ITF_DROP)
 """Speed [m/s] of the ITF rebound test's ball on reaching the concrete, 7.06 m/s (air drag
 neglected)."""
 
+TWU_SPEED = 16.5
+"""Ball speed [m/s] towards the strings of a racket at rest in TWU's tests, "Racquet
+Control" part 1 (16.5 +/- 1 m/s)."""
+
 ITF_FORCE = 8.165 * GRAVITY
 """Load [N] of the ITF deformation test, 8.165 kg, 80.07 N (ITF Rules of Tennis, App. I)."""
 

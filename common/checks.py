@@ -145,9 +145,6 @@ INCH_AS_CM = (100 * INCH, "inches typed as cm?", "in")
 M_AS_CM = (100.0, "m typed as cm?", "m")
 """A length in m where cm are asked for."""
 
-CM_AS_MM = (10.0, "cm typed as mm?", "cm")
-"""A length in cm where mm are asked for."""
-
 CM2_AS_IN2 = (1e-4 / IN2, "cm^2 typed as in^2?", "cm^2")
 """A head size in cm^2 where in^2 are asked for."""
 
@@ -224,11 +221,13 @@ def in_range(
     return x
 
 
-def suspect(name: str, value, usual: tuple, unit: str, slips, why: str, hint: str = "") -> None:
+def suspect(
+    name: str, value, usual: tuple, unit: str, slips, why: str, hint: str = "", always=False
+) -> None:
     """Warn (``UserWarning``) when ``value``, possible, lies outside the ``usual`` range and
-    a slip of unit brings it in: "--tension-lb 25 lb is below what rackets are strung at
-    (40-65 lb): kg typed as lb? 25 kg would be 55.12 lb".  Refuse the impossible with
-    :func:`in_range`; this only asks.
+    a slip of unit brings it in (or, if ``always``, whether or not one does): "--tension-lb
+    25 lb is below what rackets are strung at (40-65 lb): kg typed as lb? 25 kg would be
+    55.12 lb".  Refuse the impossible with :func:`in_range`; this only asks.
 
     Parameters
     ----------
@@ -245,14 +244,19 @@ def suspect(name: str, value, usual: tuple, unit: str, slips, why: str, hint: st
     why : str
         What makes the value suspect, e.g. "faster than any recorded stroke (about 73 m/s)".
     hint : str, optional
-        Appended to the warning, e.g. the option to use instead.
+        Appended to the warning when a slip fits, e.g. the option to use instead.
+    always : bool, optional
+        Warn outside ``usual`` even when no slip fits (``why`` alone then).
     """
     x = float(value)
     if usual[0] <= x <= usual[1]:
         return
     slipped = slip_hints(value, *usual, unit, slips)
+    said = f"{name} {shown(value)}{_unit(unit)} is {why}"
     if slipped:
-        warnings.warn(f"{name} {shown(value)}{_unit(unit)} is {why}: {slipped}{hint}", stacklevel=3)
+        warnings.warn(f"{said}: {slipped}{hint}", stacklevel=3)
+    elif always:
+        warnings.warn(said, stacklevel=3)
 
 
 def speed(name: str, value, allow_zero: bool = False) -> float:

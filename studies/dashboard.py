@@ -279,8 +279,8 @@ def _side(inputs: PageInputs, points: int) -> RacketResults:
     speed = inputs.ball_speed_mph * MPH
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
-        base = _untaped(inputs, inputs.racket, "racket")
-        results = racket_results(inputs.racket, _with_tape(base, inputs), inputs, speed, points)
+        base = _untaped(inputs, inputs.racket, "racket")  # built once (_built keeps it)
+        results = racket_results(inputs.racket, page_racket(inputs), inputs, speed, points)
         results.summary.update(_equal_effort(inputs, base, results.racket, speed))
     return replace(results, warnings=tuple(dict.fromkeys(str(w.message) for w in caught)))
 

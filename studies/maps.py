@@ -160,7 +160,7 @@ class FaceMap:
         i, j = np.unravel_index(np.argmax(self.e_A), self.e_A.shape)
 
         def butt(x):
-            return f"{100 * (self.length - x):.1f} cm from the butt ({100 * x:.1f} from the tip)"
+            return f"{100 * (self.length - x):.1f} cm from the butt ({100 * x:.1f} cm from the tip)"
 
         nodes = ", ".join(butt(n) for n in self.node)
         if self.support == "clamped-head":

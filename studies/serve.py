@@ -268,7 +268,7 @@ def serve_what_if(
     Returns
     -------
     DataFrame
-        One row per case: ``varied`` ("string_stiffness" or "ball_stiffness"), ``value``,
+        One row per case: ``varied`` ("strings" or "ball"), ``value``,
         then the zero-COR row of :func:`serve_table` (serve speeds and reductions).
     """
     if not isinstance(ball.law, (LinearHysteresis, StiffeningHysteresis)):
@@ -289,9 +289,9 @@ def serve_what_if(
     for k_s in string_stiffness:
         variant = replace(racket, strings=replace(racket.strings, stiffness=float(k_s)))
         row = serve_table(variant, ball, position, racket_speed, pivot_from_butt).loc["zero-COR"]
-        rows.append({"varied": "string_stiffness", "value": float(k_s), **row.to_dict()})
+        rows.append({"varied": "strings", "value": float(k_s), **row.to_dict()})
     for k_b in ball_stiffness:
         stiff = replace(ball, law=replace(ball.law, k=float(k_b)))
         row = serve_table(racket, stiff, position, racket_speed, pivot_from_butt).loc["zero-COR"]
-        rows.append({"varied": "ball_stiffness", "value": float(k_b), **row.to_dict()})
+        rows.append({"varied": "ball", "value": float(k_b), **row.to_dict()})
     return pd.DataFrame(rows)

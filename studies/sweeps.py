@@ -18,6 +18,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ball import Ball
+from ball.catalog import TWU_SPEED
 from common.checks import in_range
 from common.checks import speed as check_speed
 from racket import Racket, Swing
@@ -32,11 +33,11 @@ from studies.tables import impact_columns
 if TYPE_CHECKING:
     import pandas as pd
 
-BALL_SPEED = 16.5
+BALL_SPEED = TWU_SPEED
 """The ball speed [m/s] towards the strings of every study of a racket at rest when none is
 given (``sweep``, ``compare``, ``map``, ``sweetspots``, ``feel``; not ``paper``, which uses
 the paper's own speeds).  TWU's test speed (16.5 +/- 1 m/s, "Racquet Control" part 1;
-:data:`studies.validation.TWU_SPEED`), so that e_A and the sweet area can be read beside
+:data:`ball.catalog.TWU_SPEED`), so that e_A and the sweet area can be read beside
 the published maps.  An assumption for play, labelled as such: a groundstroke meets the
 racket faster, 30-45 m/s relative to it (the ball's 15-25 m/s plus the head's 15-20 m/s;
 :data:`studies.validation.STROKE_SPEEDS`); e falls only a little with speed over that

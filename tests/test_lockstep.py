@@ -134,22 +134,25 @@ def test_lockstep_equals_the_scalar_kernel_bit_for_bit(
 
 @pytest.mark.filterwarnings("ignore:.*self-consistent")
 @pytest.mark.parametrize(
-    "name, ball",
+    "name, ball, count",
     [
-        ("free", tennis_ball()),
-        ("held, hand's mass", Ball(0.057, PowerLawHysteresis(2e6, 1.5, 3.0))),
-        ("face held", Ball(0.057, StiffeningHysteresis(3.75e4, 0.0335, 0.8, 7.3))),
-        ("free", Ball(0.057, SineLaw(4e4))),  # the Xo search runs in lockstep too
+        ("free", tennis_ball(), 40),
+        ("held, hand's mass", Ball(0.057, PowerLawHysteresis(2e6, 1.5, 3.0)), 40),
+        ("face held", Ball(0.057, StiffeningHysteresis(3.75e4, 0.0335, 0.8, 7.3)), 40),
+        ("free", Ball(0.057, SineLaw(4e4)), 40),  # the Xo search runs in lockstep too
+        # several tiles (lockstep.TILE = 64) and a ragged last one, with offsets
+        ("face free", tennis_ball(), 2 * lockstep.TILE + 22),
+        ("face held", tennis_ball(), 2 * lockstep.TILE + 22),
     ],
 )
-def test_whole_impacts_come_out_the_same(name, ball):
+def test_whole_impacts_come_out_the_same(name, ball, count):
     racket = _racket(name)
     start, stop = racket.strings.extent
-    x = np.linspace(start, stop, 40)
+    x = np.linspace(start, stop, count)
     y = None
     if name.startswith("face"):  # within the bed's width near its middle
-        x = np.linspace(0.8 * start + 0.2 * stop, 0.2 * start + 0.8 * stop, 40)
-        y = np.linspace(-0.02, 0.02, 40)
+        x = np.linspace(0.8 * start + 0.2 * stop, 0.2 * start + 0.8 * stop, count)
+        y = np.linspace(-0.02, 0.02, count)
     results = {}
     for which, threshold in (("scalar", 10**9), ("lockstep", 0)):
         with dispatch.lockstep_from(threshold):

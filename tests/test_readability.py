@@ -28,12 +28,26 @@ DEFAULT_RUNS = [
 
 
 @pytest.mark.parametrize("argv", DEFAULT_RUNS, ids=" ".join)
-def test_every_default_run_prints_at_most_100_columns(argv, capsys):
+def test_every_default_run_prints_at_most_100_columns(argv, capsys, monkeypatch):
+    from studies.cli import show
+
+    made = []  # every header a table printed: (column, numeric, label)
+
+    def recording(column, numeric=True):
+        made.append((column, numeric, label(column, numeric)))
+        return made[-1][2]
+
+    monkeypatch.setattr(show, "label", recording)
     assert main(argv) == 0
     out = capsys.readouterr().out
+    bare = [(c, text) for c, numeric, text in made if numeric and not _UNIT.search(text)]
+    assert not bare, bare  # a numeric header without a unit, not listed as dimensionless
     wide = [line for line in out.splitlines() if len(line) > WIDTH]
     assert not wide, wide
     assert "not shown" not in out  # the default tables fit whole
+
+
+_UNIT = re.compile(r"\[[^\]]+\]")  # "[m/s]", "[-]"
 
 
 def test_every_sweep_column_has_a_unit_or_says_it_is_dimensionless():
@@ -43,6 +57,8 @@ def test_every_sweep_column_has_a_unit_or_says_it_is_dimensionless():
         assert re.search(r"\[[^\]]+\]$", label(column)), column
     assert label("contact_time_s") == "contact time [s]"
     assert label("e") == "e [-]" and label("nodes_cm_from_butt") == "nodes from butt [cm]"
+    assert label("mode") == "mode [-]" and label("damping_ratio") == "damping ratio [-]"
+    assert label("stiffness") == "stiffness"  # neither a unit nor listed: no "[-]" made up
 
 
 def test_a_printed_table_labels_its_headers_and_folds_per_row_units():
@@ -77,6 +93,28 @@ def test_mph_in_gives_mph_out(capsys):
     assert "ball at 40 mph" in capsys.readouterr().out
     assert main(["ball", "--speeds-mph", "20"]) == 0
     assert "[mph]" in capsys.readouterr().out
+    assert main(["collide", "--va-mph", "30"]) == 0
+    out = capsys.readouterr().out
+    assert "velocity after [mph]" in out and "[m/s]" not in out
+    assert main(["sweep", "--swing-speed", "30", "--points", "3"]) == 0
+    out = capsys.readouterr().out
+    assert "[m/s]" in out and "[mph]" not in out  # m/s in, m/s out: no exit speed in mph
+    assert main(["sweep", "--swing-speed-mph", "60", "--points", "3"]) == 0
+    out = capsys.readouterr().out
+    assert "impact" in out and "[mph]" in out and "[m/s]" not in out
+
+
+def test_sentences_give_each_number_its_unit(capsys):
+    for argv in (["sweep", "--points", "3"], ["modes"], ["feel"],
+                 ["map", "--grid", "5", "4"]):  # fmt: skip
+        assert main(argv) == 0
+        out = capsys.readouterr().out
+        assert "cm from the tip" in out and not re.search(r"\d( m)? from the tip", out), out
+    assert main(["drop"]) == 0
+    said = re.search(
+        r"^e (\S+) \(bounce/drop height = e\u00b2 = (\S+)\)$", capsys.readouterr().out, re.M
+    )
+    assert said and float(said[2]) == pytest.approx(float(said[1]) ** 2, abs=1e-3)
 
 
 def test_recontacts_are_flagged_with_one_line_saying_what_they_are(capsys):
@@ -147,6 +185,8 @@ PLOT_RUNS = [
     ["validate"],
 ]
 _RAW = re.compile(r"\b[a-z]+_[a-z]+(_[a-zA-Z0-9]+)*\b")  # a column's name: speed_m_s
+_NUMBER = re.compile(r"(?<![\w.-])(?<!Eq\. )\d+(\.\d+)?(?![\w.-])")  # not V1, mode-1, Eq. 21
+_SAID = re.compile(r"\d\s?(mph|m/s|lb|Hz|cm|mm|ms|kg|g|N/m|N|J|s|m|%)(?![\w/])")  # 30 mph
 
 
 def _drawn(argv, tmp_path, monkeypatch):
@@ -174,6 +214,10 @@ def test_every_plot_labels_its_axes_with_units_and_keeps_its_legends_off_the_dat
             continue
         for entry in legend.get_texts():
             assert not _RAW.search(entry.get_text()), entry.get_text()
+            if _NUMBER.search(entry.get_text()):  # a number: its unit, or [-], beside it
+                assert _UNIT.search(entry.get_text()) or _SAID.search(entry.get_text()), (
+                    entry.get_text()
+                )
         box, area = legend.get_window_extent(), ax.get_window_extent()
         overlap_x = min(box.x1, area.x1) - max(box.x0, area.x0)
         overlap_y = min(box.y1, area.y1) - max(box.y0, area.y0)

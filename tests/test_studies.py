@@ -63,9 +63,9 @@ def test_serve_what_if_stiffer_strings_cost_more():
     table = serve_what_if(
         paper_racket(), tennis_ball(), string_stiffness=[2e4, 4e4, 8e4], ball_stiffness=[3e4, 6e4]
     )
-    strings = table[table.varied == "string_stiffness"]["reduction_simulated_percent"]
+    strings = table[table.varied == "strings"]["reduction_simulated_percent"]
     assert np.all(np.diff(strings.to_numpy()) > 0)  # paper: higher tension, larger reduction
-    balls = table[table.varied == "ball_stiffness"]["reduction_simulated_percent"]
+    balls = table[table.varied == "ball"]["reduction_simulated_percent"]
     assert np.all(np.diff(balls.to_numpy()) < 0)
 
 

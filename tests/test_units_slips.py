@@ -52,6 +52,7 @@ CASES = [
      245 / LB, "lb"),
     (["compare", "--tension-lb", "25", "--points", "3"], "warn", "kg", "25 kg", 25 * 9.80665 / LB,
      "lb"),
+    (["serve", "--pivot-cm-from-butt", "-0.05"], "warn", "m", "-0.05 m", -5.0, "cm"),
     (["feel", "--duration-ms", "0.05"], "refuse", "seconds", "0.05 s", 50.0, "ms"),
     (["sweep", "--string-stiffness", "40", "--points", "3"], "refuse", "kN/m", "40", 40000.0,
      "N/m"),
@@ -135,3 +136,11 @@ def test_a_value_no_slip_explains_gets_the_range_only(capsys):
 def test_a_usual_value_is_not_asked_about(capsys):
     assert main(["compare", "--tension-lb", "55", "--points", "3"]) == 0
     assert "typed as" not in capsys.readouterr().err
+
+
+def test_a_speed_above_any_stroke_is_asked_about_even_without_a_slip(capsys):
+    """200 m/s is no mph slip (200 mph is 89 m/s, still too fast), but still suspect."""
+    assert main(["serve", "--racket-speed", "200"]) == 0
+    err = capsys.readouterr().err
+    assert "--racket-speed 200 m/s is faster than any recorded stroke" in err, err
+    assert "typed as" not in err

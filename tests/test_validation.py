@@ -121,3 +121,11 @@ def test_every_comparison_is_in_exactly_one_group(table):
 
     named = [name for _, rows in groups(table) for name in rows.index]
     assert sorted(named) == sorted(table.index)  # each once, none left out
+
+
+def test_the_savage_rows_name_their_racket_and_grip():
+    savage = {name: c.quantity for name, c in ITEMS.items() if name.startswith("savage-")}
+    assert len(savage) >= 5 and len(set(savage.values())) == len(savage)  # no row twice
+    for name, quantity in savage.items():
+        _, racket, grip = name.split("-")
+        assert f"racket {racket}, {grip} grip" in quantity, quantity

@@ -8,6 +8,7 @@ import numpy as np
 
 from ball import BALL_PRESETS, WALL, collide
 from common.checks import CM_AS_M, SPEED_RANGE, in_range, shown
+from common.units import MPH
 from studies.cli.files import check_outputs, save_plot, write_table
 from studies.cli.options import _ball_arg, _print_table, _racket_arg, _speed, _speed_option
 from studies.config import load_ball, load_racket
@@ -69,12 +70,14 @@ def cmd_collide(args) -> int:
     from studies.cli.show import label
 
     names = {"a": args.a, "b": args.b} if args.a != args.b else {"a": "ball a", "b": "ball b"}
+    unit, size = ("mph", MPH) if args.va_mph is not None or args.vb_mph is not None else ("m/s", 1)
     said = {
-        "v_a_after_m_s": f"{names['a']}'s velocity after [m/s]",
-        "v_b_after_m_s": f"{names['b']}'s velocity after [m/s]",
+        "v_a_after_m_s": f"{names['a']}'s velocity after [{unit}]",
+        "v_b_after_m_s": f"{names['b']}'s velocity after [{unit}]",
         "x_o_m": "Xo of the sine law [m]",
     }
     for key, value in rows.items():
+        value = value / size if key in ("v_a_after_m_s", "v_b_after_m_s") else value
         print(f"{said.get(key, label(key)):<34} {value:.6g}")
     if args.out:
         write_table(pd.DataFrame([rows]), args.out)
@@ -128,8 +131,11 @@ def cmd_drop(args) -> int:
           f"{result.speed:.3g} m/s")  # fmt: skip
     print(f"bounces back at {result.rebound_speed:.3g} m/s, up to {result.bounce_height:.3g} m "
           f"({100 * result.bounce_height:.1f} cm)")  # fmt: skip
-    meaning = "the ball's COR, bounce/drop = e^2" if onto is None else "the apparent COR e_A"
-    print(f"rebound ratio {result.rebound_ratio:.4f} ({meaning})")
+    ratio = result.rebound_ratio  # rebound / arrival speed
+    if onto is None:
+        print(f"e {ratio:.4f} (bounce/drop height = e\u00b2 = {ratio**2:.3f})")
+    else:
+        print(f"e_A {ratio:.4f} (the apparent COR: rebound / arrival speed)")
     print(f"contact {1e3 * result.contact_time:.3g} ms, peak force {result.peak_force:.4g} N, "
           f"largest compression {1e3 * float(np.max(result.compression)):.3g} mm")  # fmt: skip
     if args.out:
@@ -182,8 +188,6 @@ def cmd_ball(args) -> int:
     ball = load_ball(args.ball)
     table = rigid_bounce_table(ball, speeds)
     if args.speeds_mph is not None:  # mph in, mph out
-        from common.units import MPH
-
         table.insert(1, "speed_mph", table["speed_m_s"] / MPH)
     _print_table(table.drop(columns="speed_m_s") if args.speeds_mph is not None else table)
     _print_static_test(static_test(ball, args.ball))

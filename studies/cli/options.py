@@ -5,6 +5,7 @@ ball, speed, swing and tension options, and their values checked in the unit typ
 from __future__ import annotations
 
 import argparse
+import warnings
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -14,11 +15,13 @@ from ball import DEFAULT_BALL
 from common.checks import (
     FASTEST_STROKE,
     KG_AS_LB,
+    M_AS_CM,
     MPH_AS_M_S,
     N_AS_LB,
     SPEED_RANGE,
     in_range,
     shown,
+    slip_hints,
     suspect,
 )
 from common.units import MPH
@@ -81,10 +84,13 @@ def _speed(args, name: str, allow_zero: bool = False, signed: bool = False):
             checked.append(0.0)
         else:
             checked.append(in_range(flag, value, low, high, unit) * scale)
-        if unit == "m/s":  # allowed, but likely a slip
+        # allowed, but asked about (mph typed as m/s?).  FASTEST_STROKE is the serve's
+        # ball-speed record; as the limit of a racket head's (or swing's) speed it is an
+        # assumption, a generous bound: a racket head is slower than the ball it serves.
+        if unit == "m/s":
             suspect(flag, abs(value), (0.0, FASTEST_STROKE), "m/s", (MPH_AS_M_S,),
                     f"faster than any recorded stroke (about {FASTEST_STROKE:g} m/s)",
-                    f" ({flag}-mph {shown(value)})")  # fmt: skip
+                    f" ({flag}-mph {shown(value)})", always=True)  # fmt: skip
     return checked if isinstance(values, list) else checked[0]
 
 
@@ -123,8 +129,10 @@ def _tensions(args):
 
 
 STRUNG_AT_LB = (40.0, 65.0)
-"""What rackets are strung at [lb] (:data:`racket.specs.sheet.SPEC_RANGES`' source): a
-tension below it that is one in kg is asked about."""
+"""What rackets are strung at [lb] (the 40-65 lb :data:`racket.specs.sheet.SPEC_RANGES`
+names): an assumption, not a measurement (no source for it in the project's
+measurements, /work/shared/data/measurements.md).  A tension below it that is one in kg is
+asked about."""
 
 
 def _tension(value_lb: float) -> float:
@@ -178,11 +186,18 @@ def _check_swing(args, swing, racket, positions, name: str = "swing_speed") -> N
 
 
 def _pivot(args) -> float:
-    """``--pivot-cm-from-butt`` [cm] checked in cm (:data:`racket.swing.PIVOT_RANGE`), in m."""
+    """``--pivot-cm-from-butt`` [cm] checked in cm (:data:`racket.swing.PIVOT_RANGE`), in m;
+    one within 1 cm of the butt that is a pivot in m is asked about (m typed as cm?).
+    """
     from racket.swing import PIVOT_RANGE
 
     low, high = (100 * end for end in PIVOT_RANGE)
-    return in_range("--pivot-cm-from-butt", args.pivot_cm_from_butt, low, high, "cm") / 100
+    value = in_range("--pivot-cm-from-butt", args.pivot_cm_from_butt, low, high, "cm")
+    slipped = slip_hints(value, low, high, "cm", (M_AS_CM,)) if 0 < abs(value) < 1 else ""
+    if slipped:
+        warnings.warn(f"--pivot-cm-from-butt {shown(value)} cm is within 1 cm of the butt: "
+                      f"{slipped}", stacklevel=2)  # fmt: skip
+    return value / 100
 
 
 def _labels(names: list[str]) -> list[tuple[str, str]]:

@@ -51,11 +51,11 @@ def cmd_modes(args) -> int:
     cop = rigid_centre_of_percussion(racket, hand)
     print(
         f"centre of percussion  {100 * (beam.length - cop):.1f} cm from the butt "
-        f"({100 * cop:.1f} from the tip; hand {100 * HAND_FROM_BUTT:.0f} cm from the butt)"
+        f"({100 * cop:.1f} cm from the tip; hand {100 * HAND_FROM_BUTT:.0f} cm from the butt)"
     )
     print(
         f"effective mass at the string centre ({100 * (beam.length - centre):.1f} cm from "
-        f"the butt, {100 * centre:.1f} from the tip)  "
+        f"the butt, {100 * centre:.1f} cm from the tip)  "
         f"{beam.effective_mass(centre):.4f} kg"
     )
     rows = []
@@ -199,9 +199,9 @@ def cmd_feel(args) -> int:
     )  # fmt: skip
     length = racket.beam.length
     print(
-        f"impact {100 * (length - position):.1f} cm from the butt ({100 * position:.1f} from "
+        f"impact {100 * (length - position):.1f} cm from the butt ({100 * position:.1f} cm from "
         f"the tip){'' if args.offset is None else f', {100 * args.offset:+.1f} cm off the axis'}"
-        f"; the handle read {100 * feel.grip_from_butt:.1f} cm from the butt ({racket.support})"
+        f"; handle read {100 * feel.grip_from_butt:.1f} cm from the butt ({racket.support})"
     )
     print(f"peak handle velocity      {feel.peak_velocity:.3f} m/s")
     print(f"peak handle acceleration  {feel.peak_acceleration:.0f} m/s^2 "

@@ -22,6 +22,7 @@ LABELS = {
     "ball_rebound_m_s": "ball rebound [m/s]",
     "vibration_energy_fraction": "vibration / ball's energy [-]",
     "swing_speed_m_s": "impact point's speed [m/s]",
+    "swing_speed_mph": "impact point's speed [mph]",
     "recontacts": "re-contacts [-]",
     "relative_difference": "relative difference [-]",
     "spec_sheet": "spec sheet",
@@ -37,6 +38,10 @@ LABELS = {
 }
 """Labels of the columns whose names do not read well by :func:`label`'s rule."""
 
+DIMENSIONLESS = frozenset({"e", "e_A", "e0", "e_van_zandt", "mode", "recontacts"})
+"""The numeric columns without a unit (besides names ending in ``_ratio``, ``_fraction`` or
+``_count``): labelled "[-]"; any other numeric column's name must say its unit."""
+
 _UNITS = (
     ("_kgcm2", "kg cm^2"), ("_cm2", "cm^2"), ("_in2", "in^2"), ("_m_s2", "m/s^2"),
     ("_m_s", "m/s"), ("_rad_s", "rad/s"), ("_mph", "mph"), ("_N_m", "N/m"), ("_n_m", "N/m"),
@@ -48,8 +53,9 @@ _UNITS = (
 
 def label(column: str, numeric: bool = True) -> str:
     """A column's printed label: "contact_time_s" -> "contact time [s]",
-    "nodes_cm_from_butt" -> "nodes from butt [cm]"; a numeric column without a unit in its
-    name is dimensionless, "[-]"; a label that already ends in "]" is kept.
+    "nodes_cm_from_butt" -> "nodes from butt [cm]"; a numeric column listed in
+    :data:`DIMENSIONLESS` (or named a ratio, fraction or count) says "[-]"; any other name
+    without a unit gets none (a slip the tests catch); a label that already ends in "]" is kept.
 
     Parameters
     ----------
@@ -69,7 +75,8 @@ def label(column: str, numeric: bool = True) -> str:
     for suffix, unit in _UNITS:
         if name.endswith(suffix) and len(name) > len(suffix):
             return f"{name[: -len(suffix)].replace('_', ' ')} [{unit}]"
-    return name.replace("_", " ") + (" [-]" if numeric else "")
+    plain = column in DIMENSIONLESS or name.endswith(("_ratio", "_count"))
+    return name.replace("_", " ") + (" [-]" if numeric and plain else "")
 
 
 _UNIT_WORDS = {"kg", "g", "cm", "mm", "m", "cm^2", "in^2", "Hz", "N", "N/m", "m/s", "mph", "s",

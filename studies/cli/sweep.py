@@ -157,7 +157,7 @@ def cmd_sweep(args) -> int:
     shown = ["position_from_butt_cm", "e", "e_A"]  # the rest: --out
     shown += ["recontacts"] if table["recontacts"].any() else []
     shown += [f"ball_rebound_{speed}", "vibration_energy_fraction"]
-    shown += [f"swing_speed_{speed}", "exit_speed_mph"] if swung else []
+    shown += [f"swing_speed_{speed}"] if swung else []  # the rebound is the exit speed
     units = {"speed_m_s": f"speed_{speed}", "tension_N": "tension_lb" if args.tension_lb else None}
     shown += [units.get(c, c) or c for c in grid]
     _print_table(table[list(dict.fromkeys(shown))].iloc[:: max(1, len(table) // 25)])
@@ -165,7 +165,7 @@ def cmd_sweep(args) -> int:
     best = table.loc[table["e"].idxmax()]
     print(
         f"\nlargest e = {best['e']:.4f} at {best['position_from_butt_cm']:.1f} cm from the butt "
-        f"({best['position_from_tip_m']:.3f} m from the tip) "
+        f"({100 * best['position_from_tip_m']:.1f} cm from the tip) "
         f"({len(table)} impacts)"
     )
     for path in filter(None, (args.out, args.csv, args.json)):

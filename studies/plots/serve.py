@@ -20,7 +20,7 @@ def plot_serve_what_if(table, ax=None):
     """
     ax = _axes(ax, 1)
     for (varied, group), marker in zip(table.groupby("varied", sort=False), "os", strict=False):
-        label = "string-bed stiffness" if varied == "string_stiffness" else "ball stiffness"
+        label = "string-bed stiffness" if varied == "strings" else "ball stiffness"
         ax.plot(group["value"], group["reduction_simulated_percent"], marker + "-", label=label)
     ax.set_xscale("log")
     ax.set_xlabel("stiffness [N/m]")

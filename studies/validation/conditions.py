@@ -13,7 +13,7 @@ import numpy as np
 import pandas as pd
 
 from ball import BALL_PRESETS, WALL, collide
-from ball.catalog import ITF_DROP_SPEED
+from ball.catalog import ITF_DROP_SPEED, TWU_SPEED
 from common.units import GRAVITY
 from racket import CATALOG, GRIPS, Hand, from_specs, impact
 from racket.specs.ra import f1_from_ra
@@ -35,9 +35,6 @@ about 4e4 N/m" (Cross 2000, Sec. III)."""
 CROSS_BED = 3e4
 """String-plane stiffness [N/m] for Cross's 1 m drop onto clamped strings (tennis.html gives
 no racket): the seed paper's "about 3e4 N/m at 55 lb" (Sec. VIII), a typical stringing."""
-
-TWU_SPEED = 16.5
-"""Ball speed [m/s] of TWU "Racquet Control" part 1 (16.5 +/- 1 m/s)."""
 
 TWU_PIVOT_SPEED = 17.9
 """Ball speed [m/s] of TWU "Racquet Control" part 2."""

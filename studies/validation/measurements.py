@@ -60,7 +60,7 @@ def _savage(label: str, free_hz: float, grip: str, held_hz: float, band) -> Comp
     drop = 100.0 * (1.0 - held_hz / free_hz)
     low, high, note = band if band else (drop - 2.0, drop + 2.0, "assumption: +/-2 points")
     return Comparison(
-        f"savage-{label}-{grip}", "first-mode drop, held vs free [%]",
+        f"savage-{label}-{grip}", f"first-mode drop, racket {label}, {grip} grip vs free [%]",
         f"racket {label} ({free_hz} Hz free), {grip} grip (racket.GRIPS)",
         drop, low, high, _SAVAGE, "calibration", note,
         lambda: _savage_drops()[label, grip],
