@@ -102,8 +102,11 @@ def test_the_maths_is_typeset_when_the_site_is_built(site):
 
 
 def _run_outputs(html: str) -> list[str]:
-    """The page from each block the build ran (docs/hooks/run.py wraps what it made)."""
-    return html.split('<div class="run-output">')[1:]
+    """What each block the build ran made (docs/hooks/run.py wraps it between a div and an
+    end marker): the page between the two, no further."""
+    parts = html.split('<div class="run-output">')[1:]
+    assert all('class="run-end"' in part for part in parts), "an output without its end"
+    return [part.split('class="run-end"')[0] for part in parts]
 
 
 @pytest.mark.parametrize(
@@ -119,7 +122,7 @@ def test_every_guide_page_shows_output_or_a_figure_the_build_made(site, source):
     page = _page(site, source)
     outputs = _run_outputs(_html(page))
     assert outputs, f"{source} has no output made by the build"
-    made = "".join(outputs)  # from the first block the build filled on
+    made = "".join(outputs)  # only what the build made
     printed = made.count('<span class="go">') + made.count('<span class="filename">output</span>')
     figures = re.findall(r'<img [^>]*src="((?:\.\./)*run/[^"]+)"', made)
     for src in figures:

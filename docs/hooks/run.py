@@ -171,7 +171,14 @@ def _fence(lang: str, text: str, title: str | None = None) -> str:
 
 
 def _wrap(parts: list[str]) -> str:
-    return '<div class="run-output" markdown>\n\n' + "\n".join(parts) + "\n</div>\n"
+    """The Markdown of a block's output, in a div that ends with a marker (the site's tests
+    read only what lies between the two).
+    """
+    return (
+        '<div class="run-output" markdown>\n\n'
+        + "\n".join(parts)
+        + '\n\n<span class="run-end"></span>\n\n</div>\n'
+    )
 
 
 def load_kernel() -> None:
