@@ -90,7 +90,9 @@ def _fit_table(sheet: SpecSheet, beam: Beam, throat: float) -> pd.DataFrame:
             )
         )
     table = pd.DataFrame(rows, columns=["quantity", "spec_sheet", "fitted_model", "unit"])
-    table["relative_difference"] = table["fitted_model"] / table["spec_sheet"] - 1.0
+    difference = table["fitted_model"] / table["spec_sheet"] - 1.0
+    # an exact fit's round-off (a few 1e-16) is no difference: 0, not -2.2e-16
+    table["relative_difference"] = difference.where(difference.abs() > 1e-12, 0.0)
     return table
 
 
