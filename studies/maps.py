@@ -22,7 +22,7 @@ from common.checks import speed as check_speed
 from common.units import MPH
 from racket import TENNIS_BALL_RADIUS, Racket, Swing, impact
 from studies.landmarks import hand_pivot, percussion_centre, whole
-from studies.scale import impacts_of, run_impacts
+from studies.scale import impacts_of, run_calls
 from studies.sweeps import BALL_SPEED
 
 SWEET_FRACTION = 0.05
@@ -282,7 +282,7 @@ def face_map(
         ball's radius (the whole ball on the strings), or the tennis ball's
         (:data:`racket.TENNIS_BALL_RADIUS`) for a ball without one.
     executor : concurrent.futures.Executor, optional
-        Run the impacts on it, in chunks (:func:`studies.scale.run_impacts`); bit-identical
+        Run the impacts on it, in chunks (:func:`studies.scale.run_calls`); bit-identical
         to the run in this process (the default).
 
     Returns
@@ -338,7 +338,7 @@ def face_map(
     if swing is not None:
         calls.append(impacts_of(racket, ball, x, speed, y, swing))
     hits, *swung = (SimpleNamespace(**part) for part in
-                    run_impacts(calls, _face_fields, executor, progress=False))  # fmt: skip
+                    run_calls(calls, _face_fields, executor, progress=False))  # fmt: skip
     swung = swung[0] if swung else None
 
     def on_grid(values, result=hits):  # the grid's points lead each call's impacts
@@ -378,7 +378,7 @@ def face_map(
 
 def _face_fields(result) -> dict:
     """The numbers of an impact that a :class:`FaceMap` reads (for
-    :func:`studies.scale.run_impacts`).
+    :func:`studies.scale.run_calls`).
     """
     names = ("e", "e_A", "ball_rebound", "vibration_energy", "energy_initial", "roll_rate",
              "v_cm", "omega")  # fmt: skip

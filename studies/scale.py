@@ -1,6 +1,6 @@
 """Studies on many processes or machines: the impacts in chunks on an executor.
 
-:func:`run_impacts` runs calls of :func:`racket.impact` on any
+:func:`run_calls` runs calls of :func:`racket.impact` on any
 :class:`concurrent.futures.Executor`: a ``ProcessPoolExecutor`` (:func:`executor_for` with
 ``workers``), or a Dask cluster's ``client.get_executor()`` (:func:`executor_for` with a
 scheduler's address).  The impact points are cut into chunks of at most
@@ -169,7 +169,7 @@ def _chunk(total: int) -> int:
     return int(np.clip(math.ceil(total / MIN_TASKS), MIN_TASK_IMPACTS, TASK_IMPACTS))
 
 
-def run_impacts(
+def run_calls(
     calls: Sequence[Impacts],
     read: Callable,
     executor: Executor | None = None,

@@ -27,7 +27,7 @@ from racket.specs.sheet import SPEC_RANGES
 from racket.specs.strings import with_tension
 from racket.swing import check_swung_support
 from racket.swing import equal_effort as same_effort
-from studies.scale import impacts_of, run_impacts
+from studies.scale import impacts_of, run_calls
 from studies.tables import impact_columns
 
 if TYPE_CHECKING:
@@ -257,7 +257,7 @@ def sweep(
     calls = [impacts_of(v, b, positions, sp, offset, swing) for sp, v, _, b, _ in combos]
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
-        parts = run_impacts(calls, impact_columns, executor, progress, "sweep")
+        parts = run_calls(calls, impact_columns, executor, progress, "sweep")
     _first_of_each_kind(caught)
     columns = {name: [part[name] for part in parts] for name in COLUMNS}
     del parts
@@ -362,7 +362,7 @@ def compare(
             own = same_effort(swing, reference, racket.beam.swingweight)
         swings.append(own)
         calls.append(impacts_of(racket, ball, x, speed, swing=own))
-    parts = run_impacts(calls, impact_columns, executor, progress, "compare")
+    parts = run_calls(calls, impact_columns, executor, progress, "compare")
     frames = []
     for label, own, part in zip(rackets, swings, parts, strict=True):
         frame = pd.DataFrame(part)

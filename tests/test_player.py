@@ -263,7 +263,7 @@ def test_sweep_refuses_a_held_swing_before_any_impact(monkeypatch):
     from racket import Swing, paper_racket
 
     ran = []
-    monkeypatch.setattr(sweeps, "run_impacts", lambda *a, **k: ran.append(a))
+    monkeypatch.setattr(sweeps, "run_calls", lambda *a, **k: ran.append(a))
     with pytest.raises(ValueError, match="swing_speed must be 0 for a hand-held racket"):
         sweeps.sweep(paper_racket(), tennis_ball(), [0.1], 0.0, support=["free", "hand-held"],
                      swing=Swing(20.0), progress=False)  # fmt: skip

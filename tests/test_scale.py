@@ -22,7 +22,7 @@ from studies.scale import (
     check_scheduler,
     check_workers,
     executor_for,
-    run_impacts,
+    run_calls,
 )
 from studies.sweeps import compare, sweep
 from studies.tables import impact_columns
@@ -185,7 +185,7 @@ def test_scheduler_addresses(address):
 
 def test_run_impacts_in_this_process_keeps_each_call_whole():
     calls = [Impacts(paper_racket(), tennis_ball(), np.linspace(0.1, 0.2, n), 10.0) for n in (3, 5)]
-    out = run_impacts(calls, impact_columns)
+    out = run_calls(calls, impact_columns)
     assert [part["e"].size for part in out] == [3, 5]
 
 

@@ -129,10 +129,9 @@ def _tensions(args):
 
 
 STRUNG_AT_LB = (40.0, 65.0)
-"""What rackets are strung at [lb] (the 40-65 lb :data:`racket.specs.sheet.SPEC_RANGES`
-names): an assumption, not a measurement (no source for it in the project's
-measurements, /work/shared/data/measurements.md).  A tension below it that is one in kg is
-asked about."""
+"""What rackets are usually strung at [lb]: an assumption, not a measurement (the project's
+measurements give none; :data:`racket.specs.strings.TENSION_RANGE_LB` accepts 20-80 lb).  A
+tension below it that is one in kg is asked about."""
 
 
 def _tension(value_lb: float) -> float:
