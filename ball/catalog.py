@@ -1,7 +1,7 @@
 """Real tennis balls: presets of :class:`~ball.stiffening.StiffeningHysteresis` calibrated to
 what is published, with the ITF's static bands of each type beside them.
 
-What each preset is calibrated to (``../shared/data/measurements.md``, section 1):
+What each preset is calibrated to (``data/measurements.md``, section 1):
 
 * its rigid-surface COR at 7.06 m/s (the ITF's 254 cm drop): the middle of its type's ITF
   rebound band, e = sqrt(h / H) (ITF Rules of Tennis, Appendix I);

@@ -20,7 +20,7 @@ import numpy as np
 
 from beam import Beam
 from beam.beam import DEFAULT_MODES
-from racket import Racket, impact, paper_racket, tennis_ball
+from racket import Racket, impact, paper_ball, paper_racket
 from racket.solver import DEFAULT_STEPS_PER_CONTACT
 
 SPEED = 20.0
@@ -42,7 +42,7 @@ def _no_static_correction():
 
 def main() -> None:
     """Print the error frontier (modes x steps) beside the defaults."""
-    ball, x = tennis_ball(), np.linspace(0.0, 0.32, 161)
+    ball, x = paper_ball(), np.linspace(0.0, 0.32, 161)
     for support in ("free", "hand-held"):
         ref = impact(_racket(64, support), ball, x, SPEED, steps_per_contact=4800).e
         print(f"\n{support} racket: max |e - e_ref| over 161 points (time of the sweep)")

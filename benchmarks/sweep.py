@@ -39,7 +39,7 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from ball import Ball, SineLaw
-from racket import CATALOG, dispatch, impact, paper_racket, tennis_ball
+from racket import CATALOG, dispatch, impact, paper_ball, paper_racket
 from racket.solver import DEFAULT_STEPS_PER_CONTACT
 from racket.stepper import Stepper
 from studies.maps import face_map
@@ -173,7 +173,7 @@ def main() -> None:
     """Print every figure beside its target."""
     warnings.simplefilter("ignore")
     print(_load(), "(at the start)")
-    racket, ball = paper_racket(), tennis_ball()
+    racket, ball = paper_racket(), paper_ball()
     x = np.linspace(0.0, 0.32, POINTS)
 
     t0 = time.perf_counter()

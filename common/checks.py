@@ -11,10 +11,11 @@ from __future__ import annotations
 import math
 import numbers
 import warnings
+from decimal import ROUND_CEILING, ROUND_FLOOR, Decimal
 
 import numpy as np
 
-from common.units import GRAVITY, IN2, INCH, LB, MPH, OUNCE
+from common.units import GRAVITY, IN2, INCH, KMH, LB, MPH, OUNCE, SPEED_UNITS
 
 SPEED_RANGE = (1e-3, 300.0)
 """Impact and swing speeds [m/s] racket-impact accepts: from 1 mm/s to well above the
@@ -22,9 +23,21 @@ fastest recorded serve (73 m/s, 163 mph).  The solvers are scale-free and resolv
 outside this range a number is almost surely a typo (or the wrong unit)."""
 
 
-FASTEST_STROKE = 73.0
-"""The fastest recorded serve [m/s] (163 mph; an assumption as to the exact record, which
-is about this): a speed typed in m/s above it is more likely mph typed as m/s."""
+FASTEST_STROKE = 263.4 * KMH
+"""The fastest recorded serve [m/s]: 263.4 km/h (163.7 mph, 73.2 m/s), Sam Groth, Busan
+2012, as reported (e.g. sports-qa.com, "How fast does the fastest tennis serve travel",
+2023; a Challenger radar, not ratified).  A ball speed typed above it, in any unit, is asked
+about: mph or km/h typed as m/s, km/h typed as mph?"""
+
+FASTEST_HEAD = 0.70 * FASTEST_STROKE
+"""The fastest racket-head (string centre) speed [m/s] a stroke is taken to reach: 51.2 m/s
+(115 mph, 184 km/h).  **An assumption**: no record of head speeds is kept; this is the
+serve record times 0.70, the ratio of racket to ball speed of professional strokes
+(tennisspeedresearch.blogspot.com, "Introduction to racket speed", 2006).  High-performance
+players' fast serves reach 31.0 m/s at the head's centre on average (Elliott, Marshall &
+Noffal, J. Appl. Biomech. 11 (1995) 433), and the model's record serve off the Pure Drive's
+string centre needs 49.7 m/s (``studies.serve.head_speed_for``).  A head speed typed above
+it, in any unit, is asked about."""
 
 
 def _unit(unit: str) -> str:
@@ -124,6 +137,17 @@ for."""
 MPH_AS_M_S = (MPH, "mph typed as m/s?", "mph")
 """A speed in mph where m/s are asked for."""
 
+KMH_AS_M_S = (KMH, "km/h typed as m/s?", "km/h")
+"""A speed in km/h where m/s are asked for."""
+
+KMH_AS_MPH = (KMH / MPH, "km/h typed as mph?", "km/h")
+"""A speed in km/h where mph are asked for."""
+
+SPEED_SLIPS = {"m/s": (MPH_AS_M_S, KMH_AS_M_S), "mph": (KMH_AS_MPH,), "km/h": ()}
+"""The slips of unit that make a speed typed in each unit of
+:data:`common.units.SPEED_UNITS` look too fast (a speed in a smaller unit typed as a larger
+one; none makes one typed in km/h too fast: mph or m/s typed as km/h look slower)."""
+
 N_AS_LB = (1.0 / LB, "newtons typed as lb?", "N")
 """A string tension in N where lb are asked for."""
 
@@ -161,7 +185,7 @@ S_AS_MS = (1e3, "seconds typed as ms?", "s")
 """A duration in s where ms are asked for."""
 
 
-def slip_hints(value, low: float, high: float, unit: str = "", slips=()) -> str:
+def slip_hints(value, low: float, high: float, unit: str = "", slips=(), instead=None) -> str:
     """The likely slips of unit that bring ``value`` into ``[low, high]``, as a message
     quotes them ("grams typed as kg? 57 would be 0.057 kg"; several joined by "; "), or ""
     if none does.
@@ -177,13 +201,17 @@ def slip_hints(value, low: float, high: float, unit: str = "", slips=()) -> str:
     slips : sequence of tuple, optional
         Each (factor [-] that turns the value typed into ``unit``, what the slip is[, the
         unit the value was likely typed in]), e.g. :data:`GRAMS_AS_KG`, :data:`MPH_AS_M_S`.
+    instead : callable, optional
+        Given the unit a slip's value was likely typed in, the text that follows the slip,
+        e.g. the option to use: " (--speed-mph 120)".
     """
     x, hints = float(value), []
     for factor, slip, *typed in slips:
         if low <= x * factor <= high:
             was = f"{shown(value)}{_unit(typed[0]) if typed else ''}"
             converted = float(f"{x * factor:.4g}")  # 4 digits, no exponent below 1e6
-            hints.append(f"{slip} {was} would be {converted:g}{_unit(unit)}")
+            after = instead(typed[0]) if instead and typed else ""
+            hints.append(f"{slip} {was} would be {converted:g}{_unit(unit)}{after}")
     return "; ".join(hints)
 
 
@@ -216,13 +244,44 @@ def in_range(
         slipped = slip_hints(value, low, high, unit, slips)
         hint = f" ({slipped}){hint}" if slipped else hint
         raise ValueError(
-            f"{name} must be in [{low:g}, {high:g}]{_unit(unit)}, got {shown(value)}{hint}"
+            f"{name} must be in [{ends(low, high)}]{_unit(unit)}, got {shown(value)}{hint}"
         )
     return x
 
 
+def ends(low: float, high: float, digits: int = 4) -> str:
+    """The range ``[low, high]`` as a message quotes it, "low, high": each end to ``digits``
+    significant digits (more only where the two would meet), rounded inwards, so that every
+    value between the ends quoted is accepted ("0.002237, 671" for 0.00223694-671.081).
+
+    Parameters
+    ----------
+    low, high : float
+        The range's ends [any unit], ``low <= high``.
+    digits : int, optional
+        Significant digits of each end.
+    """
+    for places in range(digits, 18):
+        said = [_rounded(low, places, ROUND_CEILING), _rounded(high, places, ROUND_FLOOR)]
+        if float(said[0]) <= float(said[1]):
+            return ", ".join(said)
+    return f"{low!r}, {high!r}"
+
+
+def _rounded(x: float, digits: int, rounding: str) -> str:
+    """``x`` to ``digits`` significant digits, rounded up or down (``rounding``), as :g."""
+    if not math.isfinite(x) or x == 0.0:
+        return f"{x:g}"
+    exact = Decimal(repr(float(x)))  # the shortest decimal that is x: 0.05, not 0.05000...03
+    step = Decimal(1).scaleb(exact.adjusted() - digits + 1)
+    said = float(exact.quantize(step))  # the nearest, if x is it but for round-off (3.6e-3)
+    if abs(said - x) > 1e-12 * abs(x):
+        said = float(exact.quantize(step, rounding=rounding))
+    return f"{said:.{digits}g}" if digits > 6 else f"{said:g}"
+
+
 def suspect(
-    name: str, value, usual: tuple, unit: str, slips, why: str, hint: str = "", always=False
+    name: str, value, usual: tuple, unit: str, slips, why: str, instead=None, always=False
 ) -> None:
     """Warn (``UserWarning``) when ``value``, possible, lies outside the ``usual`` range and
     a slip of unit brings it in (or, if ``always``, whether or not one does): "--tension-lb
@@ -243,20 +302,71 @@ def suspect(
         Likely slips of unit (:func:`slip_hints`).
     why : str
         What makes the value suspect, e.g. "faster than any recorded stroke (about 73 m/s)".
-    hint : str, optional
-        Appended to the warning when a slip fits, e.g. the option to use instead.
+    instead : callable, optional
+        Given the unit a fitting slip's value was likely typed in, the text that follows
+        that slip, e.g. the option to use (:func:`slip_hints`).
     always : bool, optional
         Warn outside ``usual`` even when no slip fits (``why`` alone then).
     """
     x = float(value)
     if usual[0] <= x <= usual[1]:
         return
-    slipped = slip_hints(value, *usual, unit, slips)
+    slipped = slip_hints(value, *usual, unit, slips, instead)
     said = f"{name} {shown(value)}{_unit(unit)} is {why}"
     if slipped:
-        warnings.warn(f"{said}: {slipped}{hint}", stacklevel=3)
+        warnings.warn(f"{said}: {slipped}", stacklevel=3)
     elif always:
         warnings.warn(said, stacklevel=3)
+
+
+def too_fast(name: str, value, unit: str, fastest: float, what: str, instead=None) -> None:
+    """Warn (``UserWarning``, :func:`suspect`) when the speed ``value`` [``unit``], of either
+    sign, is faster than ``fastest`` [m/s], naming the slips of unit that would explain it
+    (:data:`SPEED_SLIPS`): "--speed-mph 180 mph is faster than any recorded stroke (the
+    serve record, about 163.7 mph)".
+
+    Parameters
+    ----------
+    name : str
+        The argument's name, as the message quotes it.
+    value : float
+        The speed typed [``unit``].
+    unit : str
+        Its unit: a key of :data:`common.units.SPEED_UNITS`.
+    fastest : float
+        The fastest plausible speed [m/s]: :data:`FASTEST_STROKE` or :data:`FASTEST_HEAD`.
+    what : str
+        What ``fastest`` is, as the message says it ("the serve record").
+    instead : callable, optional
+        Given the unit a fitting slip's value was likely typed in, the text that follows
+        that slip, e.g. the option to use (:func:`slip_hints`).
+    """
+    limit = fastest / SPEED_UNITS[unit]
+    why = f"faster than any recorded stroke ({what}, about {limit:.3g} {unit})"
+    suspect(name, value, (-limit, limit), unit, SPEED_SLIPS[unit], why, instead, always=True)
+
+
+STRUNG_AT_LB = (40.0, 65.0)
+"""What rackets are usually strung at [lb]: an assumption, not a measurement (the project's
+measurements give none; :data:`racket.specs.strings.TENSION_RANGE_LB` accepts 20-80 lb).  A
+tension below it that is one in kg is asked about."""
+
+
+def loose_tension(name: str, value_lb) -> None:
+    """Warn (``UserWarning``, :func:`suspect`) when a string tension [lb] lies below
+    :data:`STRUNG_AT_LB` and is one in kg typed as lb ("--tension-lb 25 lb is below what
+    rackets are strung at (40-65 lb): kg typed as lb? 25 kg would be 55.12 lb").
+
+    Parameters
+    ----------
+    name : str
+        The argument's name, as the message quotes it (a flag or a TOML key).
+    value_lb : float
+        The tension typed [lb].
+    """
+    low, high = STRUNG_AT_LB
+    why = f"below what rackets are strung at ({low:g}-{high:g} lb)"
+    suspect(name, value_lb, STRUNG_AT_LB, "lb", (KG_AS_LB,), why)
 
 
 def speed(name: str, value, allow_zero: bool = False) -> float:

@@ -21,3 +21,13 @@ load is 80.07 N with it)."""
 
 OUNCE = 0.028349523125
 """One ounce (avoirdupois) [kg] (racket weights are quoted in oz)."""
+
+KMH = 1.0 / 3.6
+"""One kilometre per hour [m/s] (speeds are quoted in km/h outside the US and the UK)."""
+
+SPEED_UNITS = {"m/s": 1.0, "mph": MPH, "km/h": KMH}
+"""The size [m/s] of each unit a speed may be typed and shown in, by its symbol."""
+
+SPEED_SUFFIXES = {"m/s": "m_s", "mph": "mph", "km/h": "kmh"}
+"""The suffix of a column of speeds in each unit of :data:`SPEED_UNITS`
+(``exit_speed_m_s``, ``exit_speed_mph``, ``exit_speed_kmh``)."""

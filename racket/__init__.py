@@ -1,15 +1,24 @@
 """Ball impacts on a flexible racket (paper Sec. VII).
 
 Public API: :class:`Racket`, :class:`StringBed`, :class:`Hand`, :func:`impact` and its
-:class:`Impact` result, a :class:`Swing` about a pivot, the presets :func:`paper_racket` and
-:func:`tennis_ball`, rackets from spec sheets (:func:`from_specs`,
-:func:`string_bed_stiffness`, the :data:`CATALOG` of well-known rackets) and the modelled flex
-test (:func:`flex_test_stiffness`).
+:class:`Impact` result, a :class:`Swing` about a pivot, the default racket and ball
+(:func:`default_racket`, the catalogue's Pure Drive 2021, and :func:`default_ball`, the ITF
+type 2 ball), the paper's (:func:`paper_racket`, :func:`paper_ball`), rackets from spec
+sheets (:func:`from_specs`, :func:`string_bed_stiffness`, the :data:`CATALOG` of well-known
+rackets) and the modelled flex test (:func:`flex_test_stiffness`).
 """
 
 from common.version import __version__
 from racket.hand import GRIPS, Hand
-from racket.presets import TENNIS_BALL_MASS, TENNIS_BALL_RADIUS, paper_racket, tennis_ball
+from racket.presets import (
+    DEFAULT_RACKET,
+    TENNIS_BALL_MASS,
+    TENNIS_BALL_RADIUS,
+    default_ball,
+    default_racket,
+    paper_ball,
+    paper_racket,
+)
 from racket.racket import SUPPORTS, Racket, StringBed
 from racket.solver import Impact, impact
 from racket.specs import from_specs, string_bed_stiffness
@@ -19,6 +28,7 @@ from racket.swing import Swing
 
 __all__ = [
     "CATALOG",
+    "DEFAULT_RACKET",
     "GRIPS",
     "SUPPORTS",
     "TENNIS_BALL_MASS",
@@ -29,10 +39,12 @@ __all__ = [
     "StringBed",
     "Swing",
     "__version__",
+    "default_ball",
+    "default_racket",
     "flex_test_stiffness",
     "from_specs",
     "impact",
+    "paper_ball",
     "paper_racket",
     "string_bed_stiffness",
-    "tennis_ball",
 ]

@@ -1,12 +1,26 @@
-"""What the hand feels: the handle's motion at the grip after an impact, and its spectrum.
+"""What the hand feels: the shock and the vibration of the handle at the grip after an
+impact.
 
 :func:`hand_feel` takes the contact force of an impact (the solver's history) and drives the
 racket's linear dynamics with it (the same real 2x2 blocks, each stepped exactly for a force
 varying linearly over a step, :meth:`racket.system.BlockSystem.step`), on past the moment
-the ball leaves, for ``duration``: the velocity and acceleration of the handle at the middle
-of the hand against time, their peaks and spectrum, the twist rate there for an impact off
-the axis, and, for a hand-held racket, the energy the hand's dashpot takes out of the frame
-(what reaches the hand) beside the frame's vibration energy left at the end.
+the ball leaves, for ``duration``, and reads the handle at the middle of the hand.  Its
+motion is split by the blocks (:attr:`racket.system.BlockSystem.dc`) into the two things a
+player feels (R. Cross, "The sweet spots of a tennis racquet", Sports Engineering 1 (1998)
+63-78: "Forces on the hand arise from rotation, translation and vibration of the handle"):
+
+* the shock, the jolt of the impact: the racket's motion as a rigid body in the hand (a free
+  racket's rigid-body modes; a held one's slow blocks, the racket and the hand's mass
+  translating and rocking together), its largest acceleration at the grip while the ball is
+  on the strings.  A ball at the centre of percussion sets the racket turning about the hand
+  and leaves no shock (none at all on a free racket);
+* the vibration: the other blocks, the frame's bending (and, held, the hand springing on the
+  handle), its largest acceleration at the grip after the ball has left, and its spectrum.
+
+Both are accelerations, so the motion of the racket and the hand drifting away together
+after the impact (nothing holds a model hand to a body) is in neither.  Also: the twist rate
+at the grip for an impact off the axis and, for a hand-held racket, the energy the hand's
+dashpot takes out of the frame beside the frame's vibration energy left at the end.
 """
 
 from __future__ import annotations
@@ -23,7 +37,8 @@ from racket.solver import impact
 
 @dataclass(frozen=True)
 class HandFeel:
-    """The handle's motion at the grip after one impact (built by :func:`hand_feel`).
+    """The handle's motion at the grip after one impact (built by :func:`hand_feel`; see
+    the module docstring for the shock and the vibration).
 
     Attributes
     ----------
@@ -33,13 +48,23 @@ class HandFeel:
         Contact force on the strings [N] (0 once the ball has left).
     velocity, acceleration : (T,) ndarray
         Velocity [m/s] and acceleration [m/s^2] of the handle at ``grip`` along the ball's
-        path (rigid-body motion included).
+        path, all of it (the velocity includes the racket and hand drifting away together).
+    shock_acceleration, vibration_acceleration : (T,) ndarray
+        The acceleration's two parts [m/s^2]: the racket's rigid-body motion in the hand and
+        the vibration (they add up to ``acceleration``).
+    shock : float
+        The largest magnitude of ``shock_acceleration`` while the ball is on the strings
+        (``t <= contact_time``) [m/s^2].
+    vibration : float
+        The largest magnitude of ``vibration_acceleration`` after the ball has left
+        [m/s^2].
     twist_rate : (T,) ndarray or None
         The handle's angular velocity about the long axis [rad/s] (impacts off the axis).
     frequencies, spectrum : ndarray
-        The acceleration's amplitude spectrum [m/s^2] (Hann window) against frequency [Hz].
-    peak_velocity, peak_acceleration : float
-        Largest magnitudes [m/s] and [m/s^2].
+        The amplitude spectrum of ``vibration_acceleration`` [m/s^2] (Hann window) against
+        frequency [Hz].
+    peak_acceleration : float
+        Largest magnitude of ``acceleration`` [m/s^2].
     hand_energy : float
         Energy the hand's dashpot took out of the racket over ``t`` [J] (0 for a free
         racket): the racket's recoil and its vibration.
@@ -52,9 +77,7 @@ class HandFeel:
         The energy left at the end in the frame's own bending and torsion modes (their
         free-free modal coordinates and frequencies; the hand's spring excluded) [J].
     grip : float
-        Where the handle is read [m from the tip].
-    grip_from_butt : float
-        The same [m from the butt].
+        Where the handle is read, the middle of the hand [m from the tip].
     contact_time : float
         [s].
     mode_frequencies : ndarray or None
@@ -67,16 +90,18 @@ class HandFeel:
     force: np.ndarray
     velocity: np.ndarray
     acceleration: np.ndarray
+    shock_acceleration: np.ndarray
+    vibration_acceleration: np.ndarray
+    shock: float
+    vibration: float
     twist_rate: np.ndarray | None
     frequencies: np.ndarray
     spectrum: np.ndarray
-    peak_velocity: float
     peak_acceleration: float
     hand_energy: float
     hand_vibration_energy: float
     vibration_energy_end: float
     grip: float
-    grip_from_butt: float
     contact_time: float
     mode_frequencies: np.ndarray | None = None
 
@@ -110,7 +135,8 @@ def hand_feel(
     offset: float | None = None,
     duration: float = 0.05,
 ) -> HandFeel:
-    """The handle's motion at the middle of the hand after one impact.
+    """The handle's motion at the middle of the hand after one impact: its shock and its
+    vibration (see the module docstring).
 
     Parameters
     ----------
@@ -161,10 +187,15 @@ def hand_feel(
     for k in range(1, steps):  # exact for a force linear over each step
         s = np.einsum("bij,bj->bi", trans, s) + g0u * force[k - 1] + g1u * force[k]
         states[k] = s
+    rates = np.einsum("bij,tbj->tbi", system.blocks, states) + force[:, None, None] * unit
     q, qd = system.modal_state(states)
-    qdd = -q @ system.stiffness.T - qd @ system.damping.T + force[:, None] * phi[0]
+    qdd = system.modal_state(rates)[1]
     velocity = qd @ phi_grip[0]
     acceleration = qdd @ phi_grip[0]
+    shock = system.modal_state(rates * system.dc[None, :, None])[1] @ phi_grip[0]
+    vibration = acceleration - shock
+    t = np.arange(steps) * dt
+    touching = t <= hit.contact_time  # the ball on the strings
     twist = None
     frame = np.arange(n)  # the frame's coordinates (not a hand's mass), in order
     if system.hand_coordinate is not None:
@@ -191,22 +222,24 @@ def hand_feel(
         np.sum(qd[-1, elastic] ** 2 + (omega[elastic] * q[-1, elastic]) ** 2)
     )
     window = np.hanning(steps)
-    spectrum = 2.0 * np.abs(np.fft.rfft(acceleration * window)) / window.sum()
+    spectrum = 2.0 * np.abs(np.fft.rfft(vibration * window)) / window.sum()
     return HandFeel(
-        t=np.arange(steps) * dt,
+        t=t,
         force=force,
         velocity=velocity,
         acceleration=acceleration,
+        shock_acceleration=shock,
+        vibration_acceleration=vibration,
+        shock=float(np.abs(shock[touching]).max()),
+        vibration=float(np.abs(vibration[~touching]).max()),
         twist_rate=twist,
         frequencies=np.fft.rfftfreq(steps, dt),
         spectrum=spectrum,
-        peak_velocity=float(np.abs(velocity).max()),
         peak_acceleration=float(np.abs(acceleration).max()),
         hand_energy=hand_energy,
         hand_vibration_energy=hand_vibration,
         vibration_energy_end=vibration_end,
         grip=grip,
-        grip_from_butt=racket.beam.length - grip,
         contact_time=float(hit.contact_time),
         mode_frequencies=_natural_frequencies(system.stiffness, system.damping),
     )

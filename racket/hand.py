@@ -78,7 +78,7 @@ GRIP_MASSES = {"light": 0.13, "medium": 0.19, "tight": 1.0}
 """Effective mass [kg] of the hand and forearm that each grip moves.  Calibrated (with
 :data:`GRIP_STIFFNESS`, one stiffness for all, by least squares, rounded) so that the first
 bending mode of a held racket falls from the free one by the fractions Savage measured
-(PhD thesis, RMIT 2006, appendix; ``../shared/data/measurements.md`` section 3): racket A,
+(PhD thesis, RMIT 2006, appendix; ``data/measurements.md`` section 3): racket A,
 183.75 Hz free, 170.25 / 165.0 / about 145 Hz held lightly / medium / tightly (7.3, 10.2 and
 about 21 %); racket B, 162.5 Hz free, 149 / 146.25 / 142.5 Hz (8.3, 10.0 and 12.3 %).  The
 model frames are the Pure Drive's sheet tuned to those free frequencies (his rackets' mass

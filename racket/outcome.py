@@ -38,8 +38,6 @@ class Impact:
     ----------
     position : float or ndarray
         Impact point [m from the tip].
-    position_from_butt : float or ndarray
-        The same [m from the butt], as spec sheets count.
     offset : float or ndarray or None
         Impact point's distance from the long axis [m, + towards 3 o'clock], or None for
         impacts on the axis without the roll and torsion modes (the paper's 1-D model).
@@ -106,7 +104,6 @@ point_velocity_dc_history : ndarray or None
     """
 
     position: np.ndarray
-    position_from_butt: np.ndarray
     offset: np.ndarray | None
     speed: float
     swing_speed: float
@@ -245,7 +242,6 @@ def outcome(stepper: Stepper, racket, ball, x, y, speed, x_o, outputs, histories
         m_eff = racket.beam.effective_mass(x, y if stepper.face else None)
     fields = dict(
         position=x,
-        position_from_butt=racket.beam.length - x,
         offset=y,
         swing_speed=np.array(stepper.closing - speed),
         e=split[:, budget.E],

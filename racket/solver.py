@@ -47,7 +47,7 @@ from racket.outcome import SELF_CONSISTENT_TOL, Impact, outcome  # noqa: F401  (
 from racket.racket import Racket
 from racket.stepper import Stepper as _Stepper
 from racket.stepper import contact_time_scale
-from racket.swing import PIVOT_RANGE, check_swung_support
+from racket.swing import ARM_REACH, check_swung_support
 from racket.unhappy_search import SCAN_RATIO, unhappy_x_o  # noqa: F401  (as above)
 
 DEFAULT_STEPS_PER_CONTACT = 300
@@ -62,8 +62,8 @@ SINE_STEPS_PER_CONTACT = 600
 opening are not placed within their step: e within 1.6e-5 of a 2400-step solution on the
 paper racket (10.3 g and 57 g balls at 10 m/s)."""
 
-PIVOT_BEYOND_BUTT = -PIVOT_RANGE[0]
-"""Farthest swing pivot beyond the butt [m] (:data:`racket.swing.PIVOT_RANGE`)."""
+PIVOT_BEYOND_BUTT = ARM_REACH
+"""Farthest swing pivot beyond the butt [m] (:data:`racket.swing.ARM_REACH`)."""
 
 F1_MIN = 20.0
 """Lowest first bending frequency [Hz] of a frame that the impact solver accepts (at 10 Hz
@@ -153,8 +153,8 @@ def impact(
 
     Examples
     --------
-    >>> from racket import paper_racket, tennis_ball
-    >>> r = impact(paper_racket(), tennis_ball(), 0.16, 10.0)  # the string centre
+    >>> from racket import paper_racket, paper_ball
+    >>> r = impact(paper_racket(), paper_ball(), 0.16, 10.0)  # the string centre
     >>> round(r.e, 3), round(r.e_A, 3)
     (0.887, 0.442)
     """
@@ -307,8 +307,8 @@ def load_kernel() -> None:
     in lockstep; a program that shows progress (the interactive page, the test suite) calls
     it before its first impact.
     """
-    from racket.presets import paper_racket, tennis_ball
+    from racket.presets import paper_ball, paper_racket
 
-    impact(paper_racket(), tennis_ball(), 0.1, 10.0)
+    impact(paper_racket(), paper_ball(), 0.1, 10.0)
     many = LOCKSTEP_MIN * pool_size()  # enough for the lockstep kernel on every thread
-    impact(paper_racket(), tennis_ball(), np.linspace(0.0, 0.3, many), 10.0)
+    impact(paper_racket(), paper_ball(), np.linspace(0.0, 0.3, many), 10.0)

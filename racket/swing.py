@@ -13,10 +13,14 @@ WRIST_BEYOND_BUTT = 0.05
 """Default swing pivot: the wrist, this far beyond the butt [m] (a hand on the grip holds
 the butt against the heel of the palm; an assumption, not a measurement)."""
 
-PIVOT_RANGE = (-1.0, 0.3)
-"""Where a pivot may be [m from the butt, + towards the tip, - beyond the butt]: from a
-straight arm swung from the shoulder (an arm is about 0.7 m long) to the top of the grip
-and throat (0.3 m; both bounds are assumptions, generous on purpose)."""
+ARM_REACH = 1.0
+"""Farthest a pivot may be beyond the butt [m]: a straight arm swung from the shoulder (an
+arm is about 0.7 m long; the bound is an assumption, generous on purpose)."""
+
+PIVOT_FROM_TIP_RANGE = (0.0, 2.5)
+"""Where a pivot may be given [m from the tip], on any racket (the TOML's longest, 1.5 m,
+plus :data:`ARM_REACH`); on a racket, it must also be short of the impact points and
+within :data:`ARM_REACH` of its butt (:meth:`Swing.check_points`)."""
 
 
 def check_swung_support(support: str) -> None:
@@ -44,14 +48,15 @@ class Swing:
     head_speed : float
         Racket-head speed [m/s]: the speed of the string bed's centre towards the ball, in
         [0.001, 300].  Every other point moves in proportion to its distance from the pivot.
-    pivot_from_butt : float
-        The pivot [m from the butt, + towards the tip, - beyond it], in [-1, 0.3]; default
-        -0.05, the wrist (:data:`WRIST_BEYOND_BUTT`).
+    pivot_from_tip : float or None
+        The pivot [m from the tip, like every position]; default None, the wrist, 5 cm
+        beyond the butt of the racket swung (:data:`WRIST_BEYOND_BUTT`), whatever its
+        length.
 
     Notes
     -----
     The racket's speed at an impact point x [m from the tip] is omega (x_p - x), with
-    x_p = L - pivot_from_butt the pivot and omega = head_speed / (x_p - x_centre) (small
+    x_p the pivot and omega = head_speed / (x_p - x_centre) (small
     rotations during the contact; the rigid-body motion superposes on the collision,
     :mod:`studies.serve`).
 
@@ -65,19 +70,27 @@ class Swing:
     """
 
     head_speed: float
-    pivot_from_butt: float = -WRIST_BEYOND_BUTT
+    pivot_from_tip: float | None = None
 
     def __post_init__(self):
         object.__setattr__(self, "head_speed", check_speed("head_speed", self.head_speed))
-        object.__setattr__(
-            self,
-            "pivot_from_butt",
-            in_range("pivot_from_butt", self.pivot_from_butt, *PIVOT_RANGE, "m from the butt"),
-        )
+        if self.pivot_from_tip is not None:
+            pivot = in_range(
+                "pivot_from_tip", self.pivot_from_tip, *PIVOT_FROM_TIP_RANGE, "m from the tip"
+            )
+            object.__setattr__(self, "pivot_from_tip", pivot)
 
     def pivot(self, racket) -> float:
         """The pivot [m from the tip] on ``racket``."""
-        return racket.beam.length - self.pivot_from_butt
+        if self.pivot_from_tip is None:
+            return racket.beam.length + WRIST_BEYOND_BUTT
+        return self.pivot_from_tip
+
+    def pivot_words(self) -> str:
+        """The pivot in words: "about the wrist" or "about 73.6 cm from the tip"."""
+        if self.pivot_from_tip is None:
+            return f"about the wrist ({100 * WRIST_BEYOND_BUTT:g} cm beyond the butt)"
+        return f"about {100 * self.pivot_from_tip:.4g} cm from the tip"
 
     def angular_velocity(self, racket) -> float:
         """The racket's angular velocity [rad/s]."""
@@ -96,8 +109,8 @@ class Swing:
 
     def reach(self, racket, position) -> tuple[float, float, float]:
         """What this swing may be for the impact points ``position`` [m from the tip]: the
-        pivot must be short of every point and of the string centre, < the first value [m
-        from the butt], so that each moves towards the ball; and the head speed between the
+        pivot must be short of every point and of the string centre, > the first value [m
+        from the tip], so that each moves towards the ball; and the head speed between the
         second and the third [m/s], so that it and each point's speed are in
         :data:`common.checks.SPEED_RANGE` (the point nearest the tip is the fastest; both
         are ``inf`` when the pivot is not short of the points).
@@ -111,8 +124,8 @@ class Swing:
         """
         x = np.asarray(position, dtype=float)
         nearest_butt = max(float(np.max(x, initial=-np.inf)), racket.strings.center)
-        pivot_limit = racket.beam.length - nearest_butt
-        if self.pivot_from_butt >= pivot_limit:
+        pivot_limit = nearest_butt
+        if self.pivot(racket) <= pivot_limit:
             return pivot_limit, np.inf, np.inf
         ratio = (self.pivot(racket) - x) / (self.pivot(racket) - racket.strings.center)
         return (
@@ -123,7 +136,8 @@ class Swing:
 
     def check_points(self, racket, position, head=None, pivot=None) -> None:
         """Raise ``ValueError`` naming the pivot if it is not short of the impact points
-        ``position`` [m from the tip], or the head speed if it moves one of them out of
+        ``position`` [m from the tip] or is more than :data:`ARM_REACH` beyond the butt, or
+        the head speed if it moves one of them out of
         :data:`common.checks.SPEED_RANGE` (:meth:`reach`).
 
         Parameters
@@ -136,16 +150,18 @@ class Swing:
             How the caller's user gave the head speed and the pivot, for the message: the
             name, the value as typed, its unit and the unit's size [m/s or m], e.g.
             ``("--swing-speed-mph", 60.0, "mph", MPH)``; default ``head_speed`` [m/s] and
-            ``pivot_from_butt`` [m from the butt].
+            ``pivot_from_tip`` [m from the tip].
         """
         pivot_limit, low, high = self.reach(racket, position)
         name, typed, unit, size = pivot or (
-            "pivot_from_butt", self.pivot_from_butt, "m from the butt", 1.0
+            "pivot_from_tip", self.pivot_from_tip, "m from the tip", 1.0
         )  # fmt: skip
-        if self.pivot_from_butt >= pivot_limit:
+        farthest = racket.beam.length + ARM_REACH
+        if not pivot_limit < self.pivot(racket) <= farthest:
             raise ValueError(
-                f"{name} must be < {pivot_limit / size:.4g} {unit}, short of the impact points "
-                f"and the string centre, got {shown(typed)}"
+                f"{name} must be in ({pivot_limit / size:.4g}, {farthest / size:.4g}] {unit}: "
+                f"short of the impact points and the string centre, at most "
+                f"{100 * ARM_REACH:g} cm beyond the butt (an arm), got {shown(typed)}"
             )
         name, typed, unit, size = head or ("head_speed", self.head_speed, "m/s", 1.0)
         if not low <= self.head_speed <= high:
@@ -186,4 +202,4 @@ def equal_effort(swing: Swing, reference_swingweight: float, swingweight: float)
     ratio = positive("reference_swingweight", reference_swingweight, "kg m^2") / positive(
         "swingweight", swingweight, "kg m^2"
     )
-    return Swing(swing.head_speed * ratio**EFFORT_EXPONENT, swing.pivot_from_butt)
+    return Swing(swing.head_speed * ratio**EFFORT_EXPONENT, swing.pivot_from_tip)

@@ -5,7 +5,10 @@ Why Shiny: its reactive graph recomputes only what a changed control feeds, it d
 project's own matplotlib figures server-side (no second plotting stack), and its JavaScript
 and CSS ship inside the Python package, so the page works offline.  The page only arranges
 controls and outputs; :mod:`studies.dashboard` computes and :mod:`studies.plots_page` draws.
-Speeds are in mph (m/s in the tooltip and small text).
+Its controls start at the command line's defaults (:class:`studies.dashboard.PageInputs`),
+every card and plot says what it was computed for, positions are in cm from the tip (the
+balance, as spec sheets give it, from the butt).  Speeds are in mph (m/s in the tooltip
+and small text).
 """
 
 from __future__ import annotations
@@ -15,15 +18,20 @@ import os
 import socket
 import threading
 
-import pandas as pd
 from shiny import App, reactive, render, ui
 
-from ball import DEFAULT_BALL
-from common.units import IN2, MPH
 from racket import CATALOG
+from racket.swing import ARM_REACH, WRIST_BEYOND_BUTT
 from studies.config import BALLS
-from studies.dashboard import MY_SHEET, PageInputs, page_results
-from studies.maps import SWEET_FRACTION
+from studies.dashboard import (
+    CONTROL_LABELS,
+    HEAD_SPEED_MAX_MPH,
+    MY_SHEET,
+    SHEET_FIELDS,
+    PageInputs,
+    page_results,
+)
+from studies.page_cards import built_sides, error_cards, headline_cards, spots_table
 
 DEFAULT_PORT = 8050
 """The page's default port (``mkdocs serve``, the docs, takes 8000)."""
@@ -36,8 +44,11 @@ _STYLE = """
 .metric .diff { font-size: 1.05rem; text-align: right; }
 .metric .unit { color: #6c757d; }
 .metric table { width: 100%; }
+.conditions { color: #6c757d; font-size: 0.8rem; white-space: normal; }
 .racket-table { font-size: 0.9rem; width: 100%; }
-.racket-table td, .racket-table th { padding: 0.1rem 0.5rem; text-align: right; }
+.racket-table td, .racket-table th { padding: 0.1rem 0.5rem; }
+.racket-table .number { text-align: right; }
+.racket-table .words { text-align: left; }
 """
 
 
@@ -50,37 +61,67 @@ def _warm_up() -> None:
 
 
 def _controls():
+    """The sidebar's controls, each starting at its default in
+    :class:`studies.dashboard.PageInputs` (the command line's).
+    """
+    start = PageInputs()
     choices = {name: name for name in [*CATALOG, MY_SHEET]}
+    label = SHEET_FIELDS
     sheet = ui.panel_conditional(
         f"input.racket === '{MY_SHEET}' || input.racket_b === '{MY_SHEET}'",
         ui.tags.b("My spec sheet"),
-        ui.input_numeric("mass_g", "Strung mass [g]", 300, min=230, max=380, step=1),
-        ui.input_numeric("balance_cm", "Balance [cm from the butt]", 33, min=30, max=37, step=0.1),
-        ui.input_numeric("swingweight", "Swingweight [kg cm²]", 315, min=270, max=370, step=1),
-        ui.input_numeric("head", "Head size [in²]", 100, min=85, max=120, step=1),
+        ui.input_numeric("mass_g", label["mass_g"], start.mass_g, min=230, max=380, step=1),
+        ui.input_numeric(
+            "balance_cm", label["balance_cm"], start.balance_cm, min=30, max=37, step=0.1
+        ),
+        ui.input_numeric(
+            "swingweight",
+            label["swingweight_kgcm2"],
+            start.swingweight_kgcm2,
+            min=270,
+            max=370,
+            step=1,
+        ),
+        ui.input_numeric(
+            "head", label["head_size_in2"], start.head_size_in2, min=85, max=120, step=1
+        ),
         ui.input_radio_buttons(
             "stiffness", "Frame stiffness given as", {"f1": "frequency f1", "ra": "RA"}
         ),
         ui.panel_conditional(
             "input.stiffness === 'f1'",
-            ui.input_numeric("f1", "Frame frequency f1 [Hz]", 150, min=100, max=200, step=1),
+            ui.input_numeric("f1", label["f1_hz"], start.f1_hz, min=100, max=200, step=1),
         ),
         ui.panel_conditional(
             "input.stiffness === 'ra'",
-            ui.input_numeric("ra", "RA (f1 from the TWU regression)", 66, min=50, max=80, step=1),
+            ui.input_numeric(
+                "ra", f"{label['ra']} (f1 from the TWU regression)", 66, min=50, max=80, step=1
+            ),
         ),
     )
+    wrist = f"Pivot at the wrist ({100 * WRIST_BEYOND_BUTT:g} cm beyond the butt)"
+    farthest = 100 * (CATALOG[start.racket].specs["length_m"] + ARM_REACH)
     return [
-        ui.input_select("racket", "Racket A", choices, selected="pure-drive-2021"),
-        ui.input_select("racket_b", "Racket B", choices, selected="pro-staff-97l-cv"),
+        ui.input_select("racket", "Racket A", choices, selected=start.racket),
+        ui.input_select("racket_b", "Racket B", choices, selected=start.racket_b),
         sheet,
-        ui.input_slider("lead_g", "Lead tape on A, per side [g]", 0, 15, 0, step=0.5),
-        ui.input_select("lead_at", "Lead at (o'clock)", _CLOCK),
-        ui.input_slider("swing", "Racket-head speed [mph]", 20, 150, 70, step=1),
-        ui.input_slider("ball_speed", "Incoming ball speed [mph]", 10, 80, 37, step=1),
-        ui.input_slider("tension", "Tension, both [lb]", 40, 70, 55, step=1),
-        ui.input_select("ball", "Ball", list(BALLS), selected=DEFAULT_BALL),
-        ui.input_slider("pivot", "Swing pivot [cm from the butt, - beyond]", -20, 10, -5, step=1),
+        ui.input_slider("lead_g", "Lead tape on A, per side [g]", 0, 15, start.lead_g, step=0.5),
+        ui.input_select("lead_at", "Lead at (o'clock)", _CLOCK, selected=start.lead_at),
+        ui.input_slider(
+            "swing", CONTROL_LABELS["swing_mph"], 20, HEAD_SPEED_MAX_MPH, start.swing_mph, step=1
+        ),
+        ui.input_slider(
+            "ball_speed", CONTROL_LABELS["ball_speed_mph"], 10, 80, start.ball_speed_mph, step=0.1
+        ),
+        ui.input_slider("tension", "Tension, both [lb]", 40, 70, start.tension_lb, step=1),
+        ui.input_select("ball", "Ball", list(BALLS), selected=start.ball),
+        ui.input_checkbox("at_wrist", wrist, start.pivot_cm_from_tip is None),
+        ui.panel_conditional(
+            "!input.at_wrist",
+            ui.input_slider(
+                "pivot", CONTROL_LABELS["pivot_cm_from_tip"], 40, round(farthest), 74, step=0.5
+            ),
+        ),
     ]
 
 
@@ -100,97 +141,25 @@ app_ui = ui.page_sidebar(
         col_widths=[6, 6],
     ),
     ui.layout_columns(
-        _card("face_a", "Sweet area of A (e_A over the face)", "600px"),
-        _card("face_b", "Sweet area of B (e_A over the face)", "600px"),
+        ui.card(
+            ui.card_header("Sweet area of A (e_A over the face)"),
+            ui.output_ui("face_a_error"),
+            ui.output_plot("face_a", height="600px"),
+        ),
+        ui.card(
+            ui.card_header("Sweet area of B (e_A over the face)"),
+            ui.output_ui("face_b_error"),
+            ui.output_plot("face_b", height="600px"),
+        ),
         col_widths=[6, 6],
     ),
     ui.layout_columns(
         _card("power_plot", "Rebound ratio e_A along the racket (racket at rest)"),
-        ui.card(ui.card_header("Where to hit [cm from the butt]"), ui.output_table("spots")),
+        ui.card(ui.card_header("Where to hit [cm from the tip]"), ui.output_ui("spots")),
         col_widths=[6, 6],
     ),
     title="racket-impact: two rackets side by side",
 )
-
-
-def _row(label: str, cells, diff: bool = False):
-    """A table row: ``cells`` are (text, tooltip, id) triples."""
-    kind = "diff" if diff else "value"
-    return ui.tags.tr(
-        ui.tags.th(label),
-        *(ui.tags.td(ui.tags.span(t, id=i, title=tip), class_=kind) for t, tip, i in cells),
-    )
-
-
-def _metric(card_id: str, title: str, note: str, columns, a, b, digits, si=None, small=""):
-    """A headline card: one column per quantity (``columns``: its header with unit), rows
-    A, B and B - A (the difference of the numbers shown, each rounded to ``digits``);
-    ``si`` (factor, unit) per column puts the SI value in each number's tooltip.
-    """
-    si = si or [None] * len(columns)
-    rows = []
-    for label, values, key in (("A", a, "a"), ("B", b, "b")):
-        rows.append(_row(label, [
-            (f"{v:.{d}f}", "" if s is None else f"{v * s[0]:.{d}f} {s[1]}", f"{card_id}_{key}_{k}")
-            for k, (v, d, s) in enumerate(zip(values, digits, si, strict=True))
-        ]))  # fmt: skip
-    diffs = [round(y, d) - round(x, d) for x, y, d in zip(a, b, digits, strict=True)]
-    rows.append(_row("B − A", [
-        (f"{v:+.{d}f}", "B minus A", f"{card_id}_diff_{k}")
-        for k, (v, d) in enumerate(zip(diffs, digits, strict=True))
-    ], diff=True))  # fmt: skip
-    head = ui.tags.tr(ui.tags.th(""), *(ui.tags.th(c, class_="unit text-end") for c in columns))
-    return ui.card(
-        ui.card_header(ui.div(ui.tags.b(title), ui.div(note, class_="small text-muted"))),
-        ui.tags.table(ui.tags.thead(head), ui.tags.tbody(*rows)),
-        ui.div(small, class_="small text-muted") if small else None,
-        id=card_id,
-        class_="metric",
-    )
-
-
-def _cards(r, swing_mph: float):
-    """The headline cards and the rackets' own numbers for results ``r``."""
-    a, b = r.a.summary, r.b.summary
-
-    def pick(*keys):
-        return [a[k] for k in keys], [b[k] for k in keys]
-
-    serve = _metric(
-        "card_serve", "Serve speed", f"off the string centre at {swing_mph:.0f} mph head speed",
-        ["serve [mph]"], *pick("serve_mph"), [1], [(MPH, "m/s")],
-        small=f"A {a['serve_mph'] * MPH:.1f} m/s, B {b['serve_mph'] * MPH:.1f} m/s",
-    )  # fmt: skip
-    power = _metric(
-        "card_power", "Power at the centre", "the incoming ball at the string centre",
-        ["e_A [-]", "exit [mph]"], *pick("e_A_centre", "exit_centre_mph"), [3, 1],
-        [None, (MPH, "m/s")],
-        small="e_A: rebound ratio off the racket at rest; exit: ball speed off the swing",
-    )  # fmt: skip
-    cm2_in2 = 1e-4 / IN2  # [in^2 per cm^2]
-    within = f"where e_A is within {100 * SWEET_FRACTION:g} % of its largest"
-    sweet_in2 = [s["sweet_area_cm2"] * cm2_in2 for s in (a, b)]
-    sweet = _metric(
-        "card_sweet", "Sweet area", within, ["area [cm²]"], *pick("sweet_area_cm2"), [1],
-        [(cm2_in2, "in²")], small=f"A {sweet_in2[0]:.1f} in², B {sweet_in2[1]:.1f} in²",
-    )  # fmt: skip
-    feel = _metric(
-        "card_feel", "Feel at the hand", "strongest vibration of the handle, centre hit",
-        ["[Hz]", "peak [×g]"], *pick("feel_hz", "feel_peak_g"), [0, 0],
-        small=f"A: {a['feel_mode']}; B: {b['feel_mode']}",
-    )  # fmt: skip
-    taped = " with lead tape" if "effort_head_taped_mph" in a else ""
-    spec = _metric(
-        "card_racket", "The rackets", f"A: {r.a.name}{taped}; B: {r.b.name}",
-        ["mass [g]", "balance [cm]", "swingweight [kg cm²]", "twistweight [kg cm²]", "f1 [Hz]"],
-        *pick("mass_g", "balance_cm", "swingweight_kgcm2", "twistweight_kgcm2", "f1_hz"),
-        [0, 1, 0, 1, 0], small="balance from the butt; swingweight about 10 cm from the butt",
-    )  # fmt: skip
-    return ui.div(
-        ui.layout_column_wrap(serve, power, sweet, feel, width="240px", fill=False),
-        spec,
-        id="numbers-text",
-    )
 
 
 def _inputs(input) -> PageInputs:
@@ -210,7 +179,7 @@ def _inputs(input) -> PageInputs:
         tension_lb=input.tension(),
         ball_speed_mph=input.ball_speed(),
         swing_mph=input.swing(),
-        pivot_cm_from_butt=input.pivot(),
+        pivot_cm_from_tip=None if input.at_wrist() else input.pivot(),
     )
 
 
@@ -249,72 +218,88 @@ def server(input, output, session):
             return ui.div()
         if isinstance(r, str):
             return ui.div(r, id="numbers-text", class_="alert alert-danger")
-        return _cards(r, input.swing())
+        if not built_sides(r):
+            return ui.div(*error_cards(r), id="numbers-text")
+        return headline_cards(r, input.swing())
 
     @render.ui
     def notes():
         r = ready()
         if r is None:
             return ui.div()
-        s = r.a.summary
         notes = [ui.div(f"Note: {w}", class_="text-warning small") for w in r.warnings]
-        for side in (r.a, r.b):
-            if "f1_from_ra" in side.summary:
-                notes.insert(0, ui.div(side.summary["f1_from_ra"], class_="text-muted small"))
+        for one in built_sides(r).values():
+            if "f1_from_ra" in one.summary:
+                notes.insert(0, ui.div(one.summary["f1_from_ra"], class_="text-muted small"))
+        s = r.a.summary if r.a is not None else {}
         if "effort_head_taped_mph" in s:  # lead tape: the swing at equal effort
-            notes.insert(0, ui.div(
-                f"A at equal effort (a heavier swingweight swings slower, Cross and Bower 2006): "
+            said = (
+                "A at equal effort (a heavier swingweight swings slower, Cross and Bower 2006): "
                 f"without the tape {s['effort_head_untaped_mph']:.1f} mph head speed, "
                 f"{s['effort_exit_untaped_mph']:.1f} mph off the centre; with it "
-                f"{s['effort_head_taped_mph']:.1f} mph, {s['effort_exit_taped_mph']:.1f} mph",
-                id="equal-effort", class_="small",
-            ))  # fmt: skip
+                f"{s['effort_head_taped_mph']:.1f} mph, {s['effort_exit_taped_mph']:.1f} mph"
+            )
+            notes.insert(0, ui.div(said, id="equal-effort", class_="small"))
         return ui.div(*notes, id="notes")
 
     def labels(r):
-        return {f"A: {r.a.name}": r.a, f"B: {r.b.name}": r.b}
+        return {f"{side}: {one.name}": one for side, one in built_sides(r).items()}
+
+    def built():
+        r = ready()
+        return r if r is not None and built_sides(r) else None
 
     @render.plot(alt="serve speed against racket-head speed, rackets A and B")
     def serve_plot():
         from studies.plots_page import plot_serve_speeds
 
-        r = ready()
+        r = built()
         if r is None:
             return None
         serves = {k: v.serves for k, v in labels(r).items()}
-        return plot_serve_speeds(serves, input.swing()).figure
+        said = r.conditions["serve"]
+        return plot_serve_speeds(serves, input.swing(), conditions=said).figure
 
     @render.plot(alt="ball speed off the swung strings along the racket, A and B")
     def exit_plot():
         from studies.plots_page import plot_along_racket
 
-        r = ready()
+        r = built()
         if r is None:
             return None
         tables = {k: v.along for k, v in labels(r).items()}
         ylabel = f"ball speed off the strings [mph] (swing {input.swing():.0f} mph)"
-        return plot_along_racket(tables, "exit_speed_swung_mph", ylabel, mph=True).figure
+        return plot_along_racket(
+            tables, "exit_speed_swung_mph", ylabel, mph=True, conditions=r.conditions["exit"]
+        ).figure
 
     @render.plot(alt="e_A along the racket, A and B")
     def power_plot():
         from studies.plots_page import plot_along_racket
 
-        r = ready()
+        r = built()
         if r is None:
             return None
         tables = {k: v.along for k, v in labels(r).items()}
-        return plot_along_racket(tables, "e_A", "rebound ratio e_A [-]").figure
+        return plot_along_racket(
+            tables, "e_A", "rebound ratio e_A [-]", conditions=r.conditions["e_A"]
+        ).figure
 
     def face(side: str):
         from studies.plots_page import plot_face_map_page
 
         r = ready()
-        if r is None:
+        one = None if r is None else built_sides(r).get(side)
+        if one is None:
             return None
-        one = r.a if side == "A" else r.b
-        speed = input.ball_speed()
-        title = f"{side}: {one.name}\nball at {speed:.0f} mph ({speed * MPH:.1f} m/s)"
-        return plot_face_map_page(one.face, title).figure
+        said = r.conditions[f"face_{side.lower()}"]
+        return plot_face_map_page(one.face, f"{side}: {one.name}", conditions=said).figure
+
+    def face_error(side: str):
+        r = ready()
+        if r is None or side not in r.errors:
+            return ui.div()
+        return ui.div(r.errors[side], class_="alert alert-danger py-2 mb-0")
 
     @render.plot(alt="e_A over the string face of racket A")
     def face_a():
@@ -324,14 +309,18 @@ def server(input, output, session):
     def face_b():
         return face("B")
 
-    @render.table
+    @render.ui
+    def face_a_error():
+        return face_error("A")
+
+    @render.ui
+    def face_b_error():
+        return face_error("B")
+
+    @render.ui
     def spots():
-        r = ready()
-        if r is None:
-            return None
-        a, b = (s.spots.set_index("spot")["from_butt_cm"] for s in (r.a, r.b))
-        table = pd.DataFrame({"A": a, "B": b}).reset_index(names="spot")
-        return table.round(1)
+        r = built()
+        return ui.div() if r is None else spots_table(r)
 
 
 app = App(app_ui, server)
@@ -357,8 +346,9 @@ def run(host: str = "127.0.0.1", port: int = DEFAULT_PORT, announce=print) -> No
     try:
         socket.getaddrinfo(host, port, type=socket.SOCK_STREAM)
     except socket.gaierror as err:
-        raise ValueError(f"host must be an address of this machine, got {host!r} "
-                         f"({err.strerror})") from None  # fmt: skip
+        raise ValueError(
+            f"host must be an address of this machine, got {host!r} ({err.strerror})"
+        ) from None
     try:
         sock = socket.create_server((host, port), backlog=2048)
     except OSError as err:

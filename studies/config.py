@@ -14,7 +14,7 @@ keys are errors)::
     roll_inertia_per_length = [...]  # kg m per segment (optional: offsets, twistweight)
     torsional_stiffness = [...] # N m^2 per segment (optional: torsion modes)
     point_masses = [[0.05, 0.004]]   # [position m from the tip, mass kg(, offset m)]
-    lead_tape = [{mass_g = 3.0, from_butt_cm = 68.0},   # lead tape, in tennis units: on the
+    lead_tape = [{mass_g = 3.0, from_tip_cm = 0.5},     # lead tape, in tennis units: on the
                  {mass_g = 2.0, at = "3 and 9"}]        # axis, or at a clock position
                                                         # of the head (mass_g per side)
     damping = 0.005             # modal damping ratio (one value or one per mode)
@@ -46,7 +46,7 @@ keys are errors)::
                                 # grip_length = 0.10 (m from the butt), mass = 0.2 (kg)
 
     [ball]
-    preset = "itf-type-2"       # a real ball (ball.catalog), "tennis" (the paper's), ...
+    preset = "itf-type-2"       # a real ball (ball.catalog), "paper" (the paper's), ...
                                 # or: mass (kg) and law, with the law's parameters:
     mass = 0.057
     law = "linear-hysteresis"   # "linear-spring" (k), "linear-hysteresis" (k, e),
@@ -68,7 +68,6 @@ from pathlib import Path
 
 from ball import (
     BALL_PRESETS,
-    DEFAULT_BALL,
     Ball,
     GrowingHysteresis,
     LinearHysteresis,
@@ -79,7 +78,7 @@ from ball import (
 )
 from beam import Beam
 from common import checks as slip  # the slips of unit: slip.CM_AS_M, ...
-from common.checks import in_range, positive, shown
+from common.checks import in_range, loose_tension, positive, shown
 from racket import (
     CATALOG,
     GRIPS,
@@ -88,8 +87,8 @@ from racket import (
     Hand,
     Racket,
     from_specs,
+    paper_ball,
     paper_racket,
-    tennis_ball,
 )
 from racket.solver import F1_MIN
 from racket.specs.sheet import SPEC_RANGES
@@ -109,7 +108,7 @@ that mass and a density of about 1.25 g/cm^3 is 2.5 cm across)."""
 
 BALLS = {
     **{name: preset.ball for name, preset in BALL_PRESETS.items()},
-    "tennis": tennis_ball,
+    "paper": paper_ball,
     "zero-cor-tennis": lambda: Ball(TENNIS_BALL_MASS, SineLaw(k0=4e4), TENNIS_BALL_RADIUS),
     "happy": lambda: Ball(0.0103, LinearSpring(k=2e4), SMALL_BALL_RADIUS),
     "unhappy": lambda: Ball(0.0103, SineLaw(k0=2e4), SMALL_BALL_RADIUS),
@@ -117,24 +116,6 @@ BALLS = {
 """Ball presets by name: the real balls of :mod:`ball.catalog` (ITF types 1-3, high
 altitude, pressureless, punctured), the paper's tennis ball, its zero-COR twin (Sec. VIII),
 and the happy and unhappy balls of Secs. IV-VI."""
-
-PAPER_BALL = "tennis"
-"""The ball of the paper's racket (the paper's linear ball; Sec. III)."""
-
-
-def default_ball(*rackets) -> str:
-    """The ball a command uses when none is given: the paper's ball when every racket is the
-    paper's (``"paper"``), so that the paper's numbers stay the paper's, and the ITF type 2
-    ball (:data:`ball.catalog.DEFAULT_BALL`) for every real racket.
-
-    Parameters
-    ----------
-    *rackets : str
-        The rackets of the command, as given (presets, TOML files, LABEL=...).
-    """
-    names = [r.partition("=")[2] if "=" in r else r for r in rackets]
-    return PAPER_BALL if names and all(n == "paper" for n in names) else DEFAULT_BALL
-
 
 SPEC_SLIPS = {
     "length_m": (slip.CM_AS_M, slip.INCH_AS_M),
@@ -230,7 +211,7 @@ _SPEC_KEYS = {
     "beam_width_mm",
     "torsion_hz",
 }
-_LEAD_KEYS = {"mass_g", "from_butt_cm", "at"}
+_LEAD_KEYS = {"mass_g", "from_tip_cm", "at"}
 _HAND_KEYS = {"grip", "stiffness", "damping", "grip_length", "mass"}
 _BALL_KEYS = {"preset", "mass", "radius", "law", "calibrated_to"} | {
     p for _, params in LAWS.values() for p in params
@@ -318,6 +299,8 @@ def racket_from_table(table: dict) -> Racket:
             )
         _check_keys(table["specs"], _SPEC_KEYS, "racket.specs")
         _check_ranges(table["specs"], "racket.specs")
+        if "tension_lb" in table["specs"]:  # asked about as --tension-lb is (kg typed as lb?)
+            loose_tension("[racket.specs] tension_lb", table["specs"]["tension_lb"])
         base = from_specs(**table["specs"])
     else:
         base = _preset(table.get("preset", "paper"), RACKETS, "racket")
@@ -379,13 +362,13 @@ def racket_from_table(table: dict) -> Racket:
 
 
 def _with_lead_tape(racket: Racket, tape) -> Racket:
-    """``racket`` with one ``lead_tape`` entry: ``mass_g`` and either ``from_butt_cm`` (on the
+    """``racket`` with one ``lead_tape`` entry: ``mass_g`` and either ``from_tip_cm`` (on the
     long axis) or ``at`` (a clock position of the head, ``mass_g`` per side).
     """
     _check_keys(tape, _LEAD_KEYS, "racket.lead_tape")
-    if "mass_g" not in tape or len(set(tape) & {"from_butt_cm", "at"}) != 1:
+    if "mass_g" not in tape or len(set(tape) & {"from_tip_cm", "at"}) != 1:
         raise ValueError(
-            "each lead_tape entry needs mass_g and one of from_butt_cm or at (a clock "
+            "each lead_tape entry needs mass_g and one of from_tip_cm or at (a clock "
             "position such as '12' or '3 and 9')"
         )
     mass_g = in_range("lead_tape mass_g", tape["mass_g"], 0.0, 200.0, "g")
@@ -394,8 +377,8 @@ def _with_lead_tape(racket: Racket, tape) -> Racket:
     if "at" in tape:
         return racket.with_lead_tape(mass_g / 1000.0, tape["at"])
     length = racket.beam.length
-    from_butt = in_range("lead_tape from_butt_cm", tape["from_butt_cm"], 0.0, 100 * length, "cm")
-    return racket.with_mass(mass_g / 1000.0, length - from_butt / 100.0)
+    from_tip = in_range("lead_tape from_tip_cm", tape["from_tip_cm"], 0.0, 100 * length, "cm")
+    return racket.with_mass(mass_g / 1000.0, from_tip / 100.0)
 
 
 def ball_from_table(table: dict) -> Ball:

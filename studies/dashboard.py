@@ -3,12 +3,18 @@ without a browser): two rackets, A and B (each a catalogue preset or the spec sh
 tape by clock position on A, one tension for both), a ball and a swing in; for each, the
 headline numbers a coach reads (serve speed, power at the centre, sweet area, feel, the
 racket's own numbers), the serve speed against the head speed, e_A and the swung exit speed
-along the racket, the face map and the sweet spots out; and B - A.
+along the racket, the face map and the sweet spots out; and B - A.  Every number comes from
+the functions the command line calls (:func:`studies.serve.serve_table`,
+:func:`studies.maps.face_map`, ...) with the same defaults (:data:`racket.DEFAULT_RACKET`,
+:data:`ball.DEFAULT_BALL`, :data:`studies.sweeps.BALL_SPEED`), and every output says what it
+was computed for (:func:`page_conditions`).  A racket that cannot be built (an impossible
+spec sheet) is one line in its place, the other racket's outputs intact.
 """
 
 from __future__ import annotations
 
 import functools
+import re
 import warnings
 from dataclasses import dataclass, field, replace
 
@@ -17,39 +23,77 @@ import pandas as pd
 
 from ball import DEFAULT_BALL
 from common.checks import SPEED_RANGE, in_range, non_negative
-from common.units import GRAVITY, LB, MPH
-from racket import CATALOG, Swing, from_specs, impact
+from common.units import LB, MPH
+from racket import CATALOG, DEFAULT_RACKET, Swing, from_specs, impact
 from racket.feel import hand_feel
 from racket.specs.ra import ra_note
 from racket.specs.sheet import SPEC_RANGES
 from racket.specs.strings import with_tension
-from racket.swing import PIVOT_RANGE, equal_effort
+from racket.swing import PIVOT_FROM_TIP_RANGE, equal_effort
 from studies.config import BALLS
+from studies.feel import FEEL_SUPPORT, feel_numbers
 from studies.maps import face_map
+from studies.page_conditions import page_conditions
 from studies.serve import serve, serve_table
+from studies.sweeps import BALL_SPEED
 from studies.sweetspots import sweet_spots
 from studies.tables import impact_table
 
 MY_SHEET = "my spec sheet"
 """The racket choice that fits the page's spec-sheet fields."""
 
-HEAD_SPEEDS_MPH = np.arange(20.0, 151.0, 10.0)
-"""Head speeds of the serve-speed curve [mph]: a slow feed to a fast professional serve
-(about 150 mph head speed at the top of the men's game; an assumption for the plot's reach)."""
+HEAD_SPEED_MAX_MPH = 110.0
+"""The page's fastest racket-head speed [mph] (49.2 m/s): the head speed at which the
+catalogue's rackets serve the fastest recorded serve (:data:`common.checks.FASTEST_STROKE`,
+263.4 km/h, Sam Groth, Busan 2012; Reuters, "Groth fires down fastest recorded serve at
+263kph", 12 May 2012) off the string centre about the wrist with the ITF balls, 110.8-113.2
+mph (:func:`studies.serve.head_speed_for`, measured on this model), rounded down: no
+position of the page's slider serves faster than anyone has (tests/test_page_truth.py).  It
+is below the fastest head speed assumed for any stroke (:data:`common.checks.FASTEST_HEAD`,
+115 mph; a professional's 120 mph serve is hit by the racket's tip at nearly 120 mph, the
+impact point about 22 % slower: popularmechanics.com/adventure/sports/a2072/4221210)."""
+
+HEAD_SPEEDS_MPH = np.arange(20.0, HEAD_SPEED_MAX_MPH + 1.0, 10.0)
+"""Head speeds of the serve-speed curve [mph]: a slow feed to :data:`HEAD_SPEED_MAX_MPH`."""
 
 COMPARED = (
-    "serve_mph", "exit_centre_mph", "e_A_centre", "sweet_area_cm2", "feel_hz", "mass_g",
-    "balance_cm", "swingweight_kgcm2", "twistweight_kgcm2", "f1_hz",
+    "serve_mph", "exit_centre_mph", "e_A_centre", "sweet_area_cm2", "feel_shock_g",
+    "feel_vibration_g", "feel_hz", "mass_g", "balance_cm", "swingweight_kgcm2",
+    "twistweight_kgcm2", "f1_hz",
 )  # fmt: skip
 """The headline numbers the page shows for A, B and B - A."""
 
-_SHEET = ("mass_g", "balance_cm", "swingweight_kgcm2", "head_size_in2", "f1_hz", "ra")
-_MODE_NAMES = ("first", "second", "third", "fourth", "fifth")
+SHEET_FIELDS = {
+    "mass_g": "Strung mass [g]",
+    "balance_cm": "Balance [cm from the butt]",
+    "swingweight_kgcm2": "Swingweight [kg cm²]",
+    "head_size_in2": "Head size [in²]",
+    "f1_hz": "Frame frequency f1 [Hz]",
+    "ra": "RA",
+}
+"""The spec sheet's fields as the page labels them (its inputs and its error messages; the
+balance from the butt, as spec sheets give it)."""
+
+CONTROL_LABELS = {
+    "swing_mph": "Racket-head speed [mph]",
+    "ball_speed_mph": "Incoming ball speed [mph]",
+    "pivot_cm_from_tip": "Swing pivot [cm from the tip]",
+}
+"""The speed and pivot controls as the page labels them (its sliders and its messages)."""
+
+_SHEET = tuple(SHEET_FIELDS)
+_FIT_NAMES = {  # how racket.specs names the sheet's fields in its messages
+    "mass_kg": "mass_g", "balance_cm": "balance_cm", "balance": "balance_cm",
+    "swingweight_kgcm2": "swingweight_kgcm2", "head_size_in2": "head_size_in2",
+    "head size": "head_size_in2", "f1_hz": "f1_hz", "ra": "ra",
+}  # fmt: skip
 
 
 @dataclass(frozen=True)
 class PageInputs:
-    """The page's controls, in the units a player types.
+    """The page's controls, in the units a player types; the defaults are the command
+    line's (:data:`racket.DEFAULT_RACKET`, :data:`ball.DEFAULT_BALL`,
+    :data:`studies.sweeps.BALL_SPEED`, the catalogue's tension, the swing about the wrist).
 
     Parameters
     ----------
@@ -67,16 +111,19 @@ class PageInputs:
     ball : str
         A ball preset (:data:`studies.config.BALLS`); default the ITF type 2 ball.
     tension_lb : float
-        String tension of both rackets [lb].
+        String tension of both rackets [lb]; default the catalogue's (55 lb).
     ball_speed_mph : float
-        Incoming ball speed [mph] (racket at rest, the groundstroke and the feel).
+        Incoming ball speed [mph] (racket at rest, the groundstroke and the feel); default
+        :data:`studies.sweeps.BALL_SPEED` (16.5 m/s, TWU's).
     swing_mph : float
-        Racket-head speed of the swing [mph] (the serve and the groundstroke).
-    pivot_cm_from_butt : float
-        The swing's pivot [cm from the butt, negative beyond it].
+        Racket-head (string centre) speed of the swing [mph] (the serve and the
+        groundstroke), as ``racket-impact serve --racket-speed-mph`` takes it.
+    pivot_cm_from_tip : float or None
+        The swing's pivot [cm from the tip]; None (default) the wrist, 5 cm beyond the butt
+        of each racket (:class:`racket.Swing`), as the command line's default.
     """
 
-    racket: str = "pure-drive-2021"
+    racket: str = DEFAULT_RACKET
     racket_b: str = "pro-staff-97l-cv"
     mass_g: float = 300.0
     balance_cm: float = 33.0
@@ -87,10 +134,10 @@ class PageInputs:
     lead_g: float = 0.0
     lead_at: str = "3 and 9"
     ball: str = DEFAULT_BALL
-    tension_lb: float = 55.0
-    ball_speed_mph: float = 37.0
+    tension_lb: float = CATALOG[DEFAULT_RACKET].specs["tension_lb"]
+    ball_speed_mph: float = BALL_SPEED / MPH
     swing_mph: float = 70.0
-    pivot_cm_from_butt: float = -5.0
+    pivot_cm_from_tip: float | None = None
 
 
 @dataclass(frozen=True)
@@ -117,10 +164,12 @@ class RacketResults:
         The headline numbers: ``serve_mph`` (the serve off the centre at the page's head
         speed) and ``serve_tipward_mph`` (5 cm towards the tip), ``exit_centre_mph`` (the
         groundstroke off the centre), ``e_A_centre``, ``e_A_3_oclock``, ``largest_e_A`` and
-        where (``largest_e_A_from_butt_cm``), ``sweet_area_cm2``, the feel (``feel_hz``,
-        ``feel_mode``, ``feel_peak_g``), ``mass_g``, ``balance_cm``, ``swingweight_kgcm2``,
-        ``twistweight_kgcm2``, ``f1_hz``; with lead tape the swing at equal effort
-        (``effort_*``); with an RA rating, ``f1_from_ra`` (:func:`racket.specs.ra.ra_note`).
+        where (``largest_e_A_from_tip_cm``), ``sweet_area_cm2``, the feel
+        (:func:`feel_summary`: ``feel_shock_g``, ``feel_vibration_g``, ``feel_hz``,
+        ``feel_mode``, ``feel_support``, ``feel_grip``), ``mass_g``, ``balance_cm``,
+        ``swingweight_kgcm2``, ``twistweight_kgcm2``, ``f1_hz``; with lead tape the swing at
+        equal effort (``effort_*``); with an RA rating, ``f1_from_ra``
+        (:func:`racket.specs.ra.ra_note`).
     warnings : tuple of str
         The simulation's warnings for this racket, one of each.
     """
@@ -141,18 +190,25 @@ class PageResults:
 
     Attributes
     ----------
-    a, b : RacketResults
-        Rackets A and B.
+    a, b : RacketResults or None
+        Rackets A and B; None for one that cannot be built (its line in ``errors``).
     difference : dict
-        B - A of each of :data:`COMPARED`.
+        B - A of each of :data:`COMPARED` ({} unless both are built).
     warnings : tuple of str
         The simulation's warnings, one of each.
+    errors : dict
+        ``"A"`` or ``"B"`` -> why that racket cannot be built, one line naming the input as
+        the page labels it, with its range.
+    conditions : dict
+        What each output was computed for, one line each (:func:`page_conditions`).
     """
 
-    a: RacketResults
-    b: RacketResults
+    a: RacketResults | None
+    b: RacketResults | None
     difference: dict = field(default_factory=dict)
     warnings: tuple = ()
+    errors: dict = field(default_factory=dict)
+    conditions: dict = field(default_factory=dict)
 
 
 def page_racket(inputs: PageInputs):
@@ -173,7 +229,7 @@ def _untaped(inputs: PageInputs, name: str, which: str):
     sheet = None
     if name == MY_SHEET:
         low, high, _ = SPEC_RANGES["mass_kg"]  # checked in grams, as the page asks for them
-        in_range("mass_g", inputs.mass_g, 1e3 * low, 1e3 * high, "g")
+        in_range(SHEET_FIELDS["mass_g"], inputs.mass_g, 1e3 * low, 1e3 * high, "g")
         sheet = tuple(getattr(inputs, k) for k in _SHEET)
     return _built(name, inputs.tension_lb, sheet)
 
@@ -182,22 +238,43 @@ def _untaped(inputs: PageInputs, name: str, which: str):
 def _built(name: str, tension_lb: float, sheet: tuple | None):
     """The racket ``name`` at ``tension_lb`` [lb], from the spec ``sheet`` (mass [g],
     balance [cm], swingweight [kg cm^2], head size [in^2], f1 [Hz], RA) for
-    :data:`MY_SHEET` (kept: a fit and its modes take a second or two).
+    :data:`MY_SHEET` (kept: a fit and its modes take a second or two); a refusal of the
+    sheet in the page's words (:func:`said_on_page`).
     """
     if sheet is not None:
         mass_g, balance_cm, swingweight, head, f1_hz, ra = sheet
-        return from_specs(
-            mass_kg=mass_g / 1e3,
-            balance_cm=balance_cm,
-            swingweight_kgcm2=swingweight,
-            head_size_in2=head,
-            f1_hz=f1_hz,
-            ra=ra,
-            tension_lb=tension_lb,
-        )
+        try:
+            return from_specs(
+                mass_kg=mass_g / 1e3,
+                balance_cm=balance_cm,
+                swingweight_kgcm2=swingweight,
+                head_size_in2=head,
+                f1_hz=f1_hz,
+                ra=ra,
+                tension_lb=tension_lb,
+            )
+        except ValueError as err:
+            raise ValueError(said_on_page(str(err))) from None
     low, high, unit = SPEC_RANGES["tension_lb"]
     tension = in_range("tension_lb", tension_lb, low, high, unit) * LB
     return with_tension(CATALOG[name].racket(), tension)
+
+
+def said_on_page(message: str) -> str:
+    """A refusal of :func:`racket.specs.from_specs` in the page's words: the spec sheet's
+    field named as the page labels it (:data:`SHEET_FIELDS`), units as the page writes
+    them, no module paths.
+
+    Parameters
+    ----------
+    message : str
+        The refusal, e.g. "swingweight_kgcm2 must be in (257, 333) kg cm^2 for a 300 g
+        racket ... (racket.specs.parts.PARTS), got 370".
+    """
+    names = "|".join(sorted(map(re.escape, _FIT_NAMES), key=len, reverse=True))
+    said = re.sub(rf"^({names})\b", lambda m: SHEET_FIELDS[_FIT_NAMES[m[1]]], message)
+    said = re.sub(r" \((?:[a-z_]+\.)+[A-Za-z_]+\)", "", said)  # "(racket.specs.parts.PARTS)"
+    return said.replace("kg cm^2", "kg cm²").replace("in^2", "in²")
 
 
 def _with_tape(racket, inputs: PageInputs):
@@ -207,8 +284,8 @@ def _with_tape(racket, inputs: PageInputs):
 
 
 def page_swing(inputs: PageInputs, racket, positions) -> Swing:
-    """The page's swing, its head speed checked in mph and its pivot in cm, as the page
-    asks for them, for the impact points ``positions`` [m from the tip]
+    """The page's swing, its head speed checked in mph and its pivot in cm from the tip, as
+    the page asks for them, for the impact points ``positions`` [m from the tip]
     (:meth:`racket.Swing.check_points`).
 
     Parameters
@@ -220,15 +297,18 @@ def page_swing(inputs: PageInputs, racket, positions) -> Swing:
     positions : array_like
         The impact points [m from the tip].
     """
-    low, high = (100 * end for end in PIVOT_RANGE)
-    pivot_cm = in_range("pivot_cm_from_butt", inputs.pivot_cm_from_butt, low, high, "cm")
-    swing_mph = in_range("swing_mph", inputs.swing_mph, *(v / MPH for v in SPEED_RANGE), "mph")
-    swing = Swing(swing_mph * MPH, pivot_cm / 100)
+    head, at = CONTROL_LABELS["swing_mph"], CONTROL_LABELS["pivot_cm_from_tip"]
+    swing_mph = in_range(head, inputs.swing_mph, *(v / MPH for v in SPEED_RANGE), "mph")
+    pivot = inputs.pivot_cm_from_tip
+    if pivot is not None:
+        low, high = (100 * end for end in PIVOT_FROM_TIP_RANGE)
+        pivot = in_range(at, pivot, low, high, "cm from the tip") / 100
+    swing = Swing(swing_mph * MPH, pivot)
     swing.check_points(
         racket,
         positions,
-        head=("swing_mph", inputs.swing_mph, "mph", MPH),
-        pivot=("pivot_cm_from_butt", inputs.pivot_cm_from_butt, "cm", 0.01),
+        head=(head, inputs.swing_mph, "mph", MPH),
+        pivot=(at, inputs.pivot_cm_from_tip, "cm from the tip", 0.01),
     )
     return swing
 
@@ -237,7 +317,9 @@ def page_results(inputs: PageInputs, points: int = 61) -> PageResults:
     """Everything the page shows for ``inputs`` (the warnings on the way, e.g. a ball
     squashed beyond its radius, collected for the page: one of each).  Each racket's
     results are kept for the last few controls that feed it, so that choosing B does not
-    compute A again.
+    compute A again.  A racket that cannot be built (e.g. an impossible spec sheet) is left
+    out with its reason in ``errors``; the controls both share are checked first
+    (``ValueError``).
 
     Parameters
     ----------
@@ -247,16 +329,26 @@ def page_results(inputs: PageInputs, points: int = 61) -> PageResults:
         Impact points along each racket.
     """
     for which in ("racket", "racket_b"):
-        _untaped(inputs, getattr(inputs, which), which)  # checked (and kept) first
+        if getattr(inputs, which) not in [*CATALOG, MY_SHEET]:
+            raise ValueError(
+                f"{which} must be one of {[*CATALOG, MY_SHEET]}, got {getattr(inputs, which)!r}"
+            )
     if inputs.ball not in BALLS:
         raise ValueError(f"ball must be one of {list(BALLS)}, got {inputs.ball!r}")
     low, high = (v / MPH for v in SPEED_RANGE)
-    in_range("ball_speed_mph", inputs.ball_speed_mph, low, high, "mph")
+    in_range(CONTROL_LABELS["ball_speed_mph"], inputs.ball_speed_mph, low, high, "mph")
+    in_range("tension_lb", inputs.tension_lb, *SPEC_RANGES["tension_lb"])
     non_negative("lead_g", inputs.lead_g, "g")
-    a = _side(_fed(inputs, inputs.racket, inputs.lead_g), points)
-    b = _side(_fed(inputs, inputs.racket_b, 0.0), points)
-    difference = {k: b.summary[k] - a.summary[k] for k in COMPARED}
-    return PageResults(a, b, difference, tuple(dict.fromkeys(a.warnings + b.warnings)))
+    sides, errors = {}, {}
+    for side, name, lead_g in (("A", inputs.racket, inputs.lead_g), ("B", inputs.racket_b, 0)):
+        try:
+            sides[side] = _side(_fed(inputs, name, lead_g), points)
+        except ValueError as err:
+            errors[side] = f"Racket {side} ({name}): {err}"
+    a, b = sides.get("A"), sides.get("B")
+    difference = {} if errors else {k: b.summary[k] - a.summary[k] for k in COMPARED}
+    said = tuple(dict.fromkeys(w for s in sides.values() for w in s.warnings))
+    return PageResults(a, b, difference, said, errors, page_conditions(inputs, a, b))
 
 
 def _fed(inputs: PageInputs, name: str, lead_g: float) -> PageInputs:
@@ -288,7 +380,11 @@ def _side(inputs: PageInputs, points: int) -> RacketResults:
 def racket_results(
     name: str, racket, inputs: PageInputs, speed: float, points: int = 61
 ) -> RacketResults:
-    """What the page shows for ``racket`` (the page's choice ``name``).
+    """What the page shows for ``racket`` (the page's choice ``name``), each number from the
+    function the command line calls for it: the serve from
+    :func:`studies.serve.serve_table` (``racket-impact serve``), the face map from
+    :func:`studies.maps.face_map` (``map``), the impacts along the racket from
+    :func:`racket.impact` (``sweep``), the feel from :func:`feel_summary` (``feel``).
 
     Parameters
     ----------
@@ -312,7 +408,7 @@ def racket_results(
     face = face_map(racket, ball, speed)
     centre = racket.strings.center
     served = serve_table(racket, ball, [centre, centre - 0.05], swing.head_speed,
-                         swing.pivot_from_butt, zero_cor=False)  # fmt: skip
+                         swing.pivot_from_tip, zero_cor=False)  # fmt: skip
     curve = [
         serve(racket, ball, centre, replace(swing, head_speed=v * MPH)) for v in HEAD_SPEEDS_MPH
     ]
@@ -325,7 +421,7 @@ def racket_results(
         "e_A_centre": face.e_A_centre,
         "e_A_3_oclock": face.e_A_side,
         "largest_e_A": float(along["e_A"].iloc[best]),
-        "largest_e_A_from_butt_cm": float(along["position_from_butt_cm"].iloc[best]),
+        "largest_e_A_from_tip_cm": float(along["position_from_tip_cm"].iloc[best]),
         "sweet_area_cm2": face.sweet_area_cm2,
         **feel_summary(racket, ball, speed),
         "mass_g": 1e3 * racket.beam.mass,
@@ -341,15 +437,15 @@ def racket_results(
 
 
 def feel_summary(racket, ball, speed: float) -> dict:
-    """The feel of a ball at ``speed`` [m/s] hitting the string centre of ``racket`` at
-    rest (:func:`racket.feel.hand_feel`, the handle read at the middle of the grip): the
-    strongest vibration of the handle above 20 Hz (:meth:`racket.feel.HandFeel.strongest`),
-    named by the natural frequency of the racket as supported that it is, when it is one.
+    """What the hand feels when a ball at ``speed`` [m/s] hits the string centre of
+    ``racket`` at rest, the racket held as ``racket-impact feel`` holds it by default
+    (:data:`studies.feel.FEEL_SUPPORT`, with the racket's own grip): the numbers that command
+    prints (:func:`racket.feel.hand_feel`, :func:`studies.feel.feel_numbers`).
 
     Parameters
     ----------
     racket : Racket
-        A free or hand-held racket.
+        The racket (its support is replaced by :data:`studies.feel.FEEL_SUPPORT`).
     ball : Ball
     speed : float
         Ball speed [m/s].
@@ -357,22 +453,11 @@ def feel_summary(racket, ball, speed: float) -> dict:
     Returns
     -------
     dict
-        ``feel_hz`` [Hz], ``feel_mode`` (words), ``feel_peak_g`` (the handle's peak
-        acceleration [g]).
+        ``feel_shock_g`` and ``feel_vibration_g`` [g], ``feel_hz`` [Hz], ``feel_mode``
+        (words), ``feel_support`` and ``feel_grip`` (:func:`studies.feel.feel_numbers`).
     """
-    feel = hand_feel(racket, ball, racket.strings.center, speed)
-    hz, is_mode = feel.strongest()
-    if is_mode:
-        nearest = int(np.argmin(np.abs(feel.mode_frequencies - hz)))
-        order = _MODE_NAMES[nearest] if nearest < len(_MODE_NAMES) else f"{nearest + 1}th"
-        words = f"the racket's {order} natural frequency"
-    else:
-        words = f"between the racket's modes (to ±{feel.frequencies[1]:.0f} Hz)"
-    return {
-        "feel_hz": hz,
-        "feel_mode": words,
-        "feel_peak_g": feel.peak_acceleration / GRAVITY,
-    }
+    held = replace(racket, support=FEEL_SUPPORT)
+    return feel_numbers(hand_feel(held, ball, held.strings.center, speed), held)
 
 
 def _equal_effort(inputs: PageInputs, base, racket, speed: float) -> dict:

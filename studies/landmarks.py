@@ -24,22 +24,27 @@ rigid-body velocity over an even grip is its value at the middle.  (Not the flex
 handle support, ``racket.specs.stiffness.HANDLE_SUPPORT``, a testing machine's.)"""
 
 
-def hand_pivot(racket: Racket, grip_from_butt: float | None = None) -> float:
+HANDLE_REACH = 0.3
+"""How far from the butt a hand may hold the racket [m]: the handle and throat (an
+assumption, generous on purpose)."""
+
+
+def hand_pivot(racket: Racket, hand_from_tip: float | None = None) -> float:
     """Where the hand pivots [m from the tip].
 
     Parameters
     ----------
     racket : Racket
         The racket (its length, and its hand's grip).
-    grip_from_butt : float, optional
-        The hand [m from the butt], in [0, 0.3]; default the middle of ``racket.hand``'s
-        grip (:data:`HAND_FROM_BUTT` for the default hand).
+    hand_from_tip : float, optional
+        The hand [m from the tip], on the handle: within :data:`HANDLE_REACH` of the butt;
+        default the middle of ``racket.hand``'s grip (:data:`HAND_FROM_BUTT` from the butt
+        for the default hand).
     """
-    if grip_from_butt is None:
-        grip = 0.5 * racket.hand.grip_length
-    else:
-        grip = in_range("grip_from_butt", grip_from_butt, 0.0, 0.3, "m")
-    return racket.beam.length - grip
+    length = racket.beam.length
+    if hand_from_tip is None:
+        return length - 0.5 * racket.hand.grip_length
+    return in_range("hand_from_tip", hand_from_tip, length - HANDLE_REACH, length, "m")
 
 
 def rigid_centre_of_percussion(racket: Racket, pivot: float) -> float:

@@ -19,7 +19,7 @@ import numpy as np
 from ball import Ball
 from common.checks import in_range, shown
 from common.checks import speed as check_speed
-from common.units import MPH
+from common.units import MPH, SPEED_UNITS
 from racket import TENNIS_BALL_RADIUS, Racket, Swing, impact
 from studies.landmarks import hand_pivot, percussion_centre, whole
 from studies.scale import impacts_of, run_calls
@@ -128,7 +128,7 @@ class FaceMap:
 
         x = np.broadcast_to(self.positions[:, None], self.offsets.shape).ravel()
         columns = {
-            "position_from_butt_cm": 100 * (self.length - x),
+            "position_from_tip_cm": 100 * x,
             "position_from_tip_m": x,
             "offset_m": self.offsets.ravel(),
         }
@@ -147,20 +147,20 @@ class FaceMap:
         columns["in_sweet_area"] = self.e_A.ravel() >= self.sweet_threshold
         return pd.DataFrame(columns)
 
-    def summary(self, mph: bool = False) -> list[str]:
+    def summary(self, unit: str = "m/s") -> list[str]:
         """The map in a few lines: where e_A is largest, the sweet area, e_A at the centre
         and at 3 o'clock near the frame, the node line and the centre of percussion.
 
         Parameters
         ----------
-        mph : bool
-            Speeds in mph (as the user typed them), else in m/s.
+        unit : str
+            Speeds in "m/s", "mph" or "km/h" (as the user typed them).
         """
-        size, unit = (MPH, "mph") if mph else (1.0, "m/s")
+        size = SPEED_UNITS[unit]
         i, j = np.unravel_index(np.argmax(self.e_A), self.e_A.shape)
 
         def butt(x):
-            return f"{100 * (self.length - x):.1f} cm from the butt ({100 * x:.1f} cm from the tip)"
+            return f"{100 * x:.1f} cm from the tip"
 
         nodes = ", ".join(butt(n) for n in self.node)
         if self.support == "clamped-head":
@@ -189,7 +189,7 @@ class FaceMap:
             i, j = np.unravel_index(np.argmax(self.exit_speed_swung), self.e_A.shape)
             lines.append(
                 f"swung at {self.swing.head_speed / size:.4g} {unit} head speed about a pivot "
-                f"{-100 * self.swing.pivot_from_butt:g} cm beyond the butt: exit speed "
+                f"{self.swing.pivot_words()[6:]}: exit speed "
                 f"{np.min(self.exit_speed_swung) / size:.2f}-"
                 f"{np.max(self.exit_speed_swung) / size:.2f} {unit}, fastest at "
                 f"{butt(self.positions[i])}"
@@ -291,8 +291,8 @@ def face_map(
 
     Examples
     --------
-    >>> from racket import CATALOG, tennis_ball
-    >>> face = face_map(CATALOG["pure-drive-2021"].racket(), tennis_ball())
+    >>> from racket import CATALOG, paper_ball
+    >>> face = face_map(CATALOG["pure-drive-2021"].racket(), paper_ball())
     >>> face.e_A.shape, round(face.sweet_area_cm2)
     ((15, 9), 34)
     """
@@ -463,7 +463,6 @@ def compare_summary(rackets, table, ball: Ball, speed: float):
         row = {
             "racket": label,
             "largest_e": best["e"],
-            "largest_e_from_butt_cm": 100 * (racket.beam.length - best["position_from_tip_m"]),
             "largest_e_from_tip_cm": 100 * best["position_from_tip_m"],
             "e_at_string_centre": float(
                 np.interp(racket.strings.center, group["position_from_tip_m"], group["e"])
@@ -473,11 +472,8 @@ def compare_summary(rackets, table, ball: Ball, speed: float):
                 group["head_speed_m_s"].iloc[0] / MPH if "head_speed_m_s" in group else np.nan
             ),
             "largest_exit_mph": group["exit_speed_mph"].max(),
-            "largest_exit_from_butt_cm": 100 * (racket.beam.length - fastest),
             "largest_exit_from_tip_cm": 100 * fastest,
-            "node_from_butt_cm": 100 * (racket.beam.length - node),
             "node_from_tip_cm": 100 * node,
-            "centre_of_percussion_from_butt_cm": 100 * (racket.beam.length - cop),
             "centre_of_percussion_from_tip_cm": 100 * cop,
             "e_A_centre": np.nan,
             "e_A_3_oclock": np.nan,

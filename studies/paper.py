@@ -6,7 +6,7 @@ import numpy as np
 import pandas as pd
 
 from ball import WALL, Ball, LinearSpring, SineLaw, collide, series_cor, unhappy_cor
-from racket import TENNIS_BALL_MASS, impact, paper_racket, tennis_ball
+from racket import TENNIS_BALL_MASS, impact, paper_ball, paper_racket
 from studies.serve import serve_table
 
 UNHAPPY = Ball(0.0103, SineLaw(k0=2e4))
@@ -81,13 +81,13 @@ def paper_table() -> pd.DataFrame:
         0.01,
     )
 
-    clamped = impact(paper_racket("clamped-head"), tennis_ball(), 0.16, 10.0)
+    clamped = impact(paper_racket("clamped-head"), paper_ball(), 0.16, 10.0)
     add("Eq. 6: tennis ball on head-clamped strings, e", 0.88, clamped.e, 0.01)
     add("Eq. 6 (formula) vs simulation", series_cor(0.75, 4e4, 4e4), clamped.e, 1e-3)
 
     racket = paper_racket()
     x = np.linspace(0.0, 0.32, 321)
-    sweep = impact(racket, tennis_ball(), x, 10.0)
+    sweep = impact(racket, paper_ball(), x, 10.0)
     add("Sec. VII: largest e, at the vibration node", 0.86, sweep.e.max(), 0.03)
     add(
         "Sec. VII: position of largest e minus mode-1 node [m]",
@@ -106,7 +106,7 @@ def paper_table() -> pd.DataFrame:
 
     zero = impact(paper_racket("clamped-head"), Ball(TENNIS_BALL_MASS, SineLaw(4e4)), 0.16, 10.0)
     add("Sec. VIII: zero-COR ball on clamped strings, e", 0.5, zero.e, 0.05)
-    serve = serve_table(racket, tennis_ball(), racket_speed=40.0)
+    serve = serve_table(racket, paper_ball(), racket_speed=40.0)
     add(
         "Sec. VIII: serve speed / racket speed, normal ball",
         1.39,

@@ -1,9 +1,10 @@
 """The page's plots (matplotlib): one quantity per Axes, several rackets on it, labels with
 units, the legend outside the data (above the Axes, or below the figure).
 
-Each function takes results computed elsewhere (:mod:`studies.dashboard`) and an optional
-``ax``, draws, and returns the Axes; none calls ``show()``.  Speeds are in mph, as the page
-speaks, with m/s on a secondary axis.
+Each function takes results computed elsewhere (:mod:`studies.dashboard`), an optional
+``ax`` and the conditions the results are for (:mod:`studies.page_conditions`, drawn as the
+figure's heading), draws, and returns the Axes; none calls ``show()``.  Speeds are in mph,
+as the page speaks, with m/s on a secondary axis; positions in cm from the tip.
 """
 
 from __future__ import annotations
@@ -24,6 +25,15 @@ def _axes(ax, figsize=(6.4, 4.0)):
     return ax
 
 
+def _heading(ax, conditions: str | None) -> None:
+    """``conditions`` as the figure's heading, wrapped when drawn: the page sizes the figure
+    to its card after the plot is made (Shiny), and its tight layout keeps the heading clear
+    of the Axes and the legend above them.
+    """
+    if conditions:
+        ax.figure.suptitle(conditions, wrap=True, fontsize="small")
+
+
 def _legend_above(ax, **style) -> None:
     """The Axes' legend above it, clear of the data (in one row unless ``style`` says)."""
     style = {"loc": "lower left", "ncols": 2, "frameon": False, **style}
@@ -38,7 +48,9 @@ def _mph_and_m_s(ax) -> None:
     )
 
 
-def plot_serve_speeds(serves, head_speed_mph: float | None = None, ax=None):
+def plot_serve_speeds(
+    serves, head_speed_mph: float | None = None, ax=None, conditions: str | None = None
+):
     """Serve speed off the string centre against the racket-head speed, one line per
     racket, and a dot at the page's head speed.
 
@@ -50,6 +62,8 @@ def plot_serve_speeds(serves, head_speed_mph: float | None = None, ax=None):
     head_speed_mph : float, optional
         The head speed to mark [mph].
     ax : Axes, optional
+    conditions : str, optional
+        What the serves are for (racket, ball, swing), drawn as the heading; None: none.
     """
     ax = _axes(ax)
     for k, (label, table) in enumerate(serves.items()):
@@ -65,10 +79,13 @@ def plot_serve_speeds(serves, head_speed_mph: float | None = None, ax=None):
     ax.grid(alpha=0.3)
     _mph_and_m_s(ax)
     _legend_above(ax)
+    _heading(ax, conditions)
     return ax
 
 
-def plot_along_racket(tables, column: str, ylabel: str, ax=None, mph: bool = False):
+def plot_along_racket(
+    tables, column: str, ylabel: str, ax=None, mph: bool = False, conditions: str | None = None
+):
     """One quantity along the racket, one line per racket, each racket's string centre
     marked.
 
@@ -84,6 +101,8 @@ def plot_along_racket(tables, column: str, ylabel: str, ax=None, mph: bool = Fal
     ax : Axes, optional
     mph : bool
         The quantity is a speed in mph: add the m/s axis.
+    conditions : str, optional
+        What the tables are for (rackets, ball, speed, swing), drawn as the heading.
     """
     ax = _axes(ax)
     for k, (label, table) in enumerate(tables.items()):
@@ -96,24 +115,28 @@ def plot_along_racket(tables, column: str, ylabel: str, ax=None, mph: bool = Fal
     if mph:
         _mph_and_m_s(ax)
     _legend_above(ax)
+    _heading(ax, conditions)
     return ax
 
 
-def plot_face_map_page(face_map, title: str, ax=None):
-    """:func:`studies.plots.plot_face_map` (e_A over the face), its legend titled
-    ``title`` and moved above the Axes (in place of the Axes' title), clear of the axis
-    labels and of the face, and a shorter x label, clear of the colour bar.
+def plot_face_map_page(face_map, title: str, ax=None, conditions: str | None = None):
+    """:func:`studies.plots.plot_face_map` (e_A over the face, speeds in mph), its legend
+    titled ``title`` and moved above the Axes (in place of the Axes' title), clear of the
+    axis labels and of the face, and a shorter x label, clear of the colour bar.
 
     Parameters
     ----------
     face_map : FaceMap
     title : str
     ax : Axes, optional
+    conditions : str, optional
+        What the map is for (racket, ball, speed), drawn as the heading.
     """
     from studies.plots import plot_face_map
 
-    ax = plot_face_map(face_map, ax=_axes(ax, figsize=(4.6, 7.0)))
+    ax = plot_face_map(face_map, ax=_axes(ax, figsize=(4.6, 7.0)), unit="mph")
     ax.set_title("")
     ax.set_xlabel("off the axis [cm] (+: 3 o'clock)")  # short: clear of the colour bar
     _legend_above(ax, loc="lower center", ncols=1, frameon=True, title=title)
+    _heading(ax, conditions)
     return ax

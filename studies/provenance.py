@@ -100,7 +100,11 @@ def _input(spec: str, originals: dict | None = None) -> dict:
 
 
 def describe(
-    argv: list[str], command: str, options: dict | None = None, originals: dict | None = None
+    argv: list[str],
+    command: str,
+    options: dict | None = None,
+    originals: dict | None = None,
+    conditions: str | None = None,
 ) -> dict:
     """The sidecar's content for a run of ``racket-impact``.
 
@@ -115,6 +119,9 @@ def describe(
     originals : dict, optional
         For a rerun: the recorded TOML copies' paths -> the paths first given, so that the
         new sidecar names the user's files, not the rerun's temporary copies.
+    conditions : str, optional
+        What the table was computed for, in one line: racket, ball, speeds, support, grip,
+        strings (:mod:`studies.conditions`), the header line of the printed table.
     """
     originals = originals or {}
     argv = [_restored(word, originals) for word in argv]
@@ -131,6 +138,7 @@ def describe(
     return {
         "made_by": "racket-impact",
         "command": list(argv),
+        **({"conditions": conditions} if conditions else {}),
         "options": json.loads(json.dumps(options, default=str)),
         "inputs": inputs,
         "versions": versions(),
@@ -204,7 +212,8 @@ def read_sidecar(path) -> dict:
         raise bad("command", "a list of strings")
     if not all(_text(word) for word in command):
         raise bad("command", f"a list of {TEXT}")
-    for key, kind in (("options", dict), ("versions", dict), ("written_utc", str), ("table", str)):
+    for key, kind in (("options", dict), ("versions", dict), ("written_utc", str), ("table", str),
+                      ("conditions", str)):  # fmt: skip
         if key in record and not isinstance(record[key], kind):
             raise bad(key, f"a {'JSON object' if kind is dict else 'string'}")
     inputs = record.get("inputs")

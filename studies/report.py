@@ -114,7 +114,8 @@ def _properties(racket: Racket, spots: pd.DataFrame) -> pd.DataFrame:
     rows = [
         ("length", 100 * beam.length, "cm"),
         ("mass", 1e3 * beam.mass, "g"),
-        ("balance", 100 * beam.balance, "cm from the butt"),
+        ("centre of mass", 100 * beam.center_of_mass, "cm from the tip"),
+        ("balance", 100 * beam.balance, "cm (spec sheets give it from the butt)"),
         ("swingweight", beam.swingweight_kgcm2, "kg cm^2 (axis 10 cm from the butt)"),
         ("recoil weight", beam.recoil_weight_kgcm2, "kg cm^2 (about the centre of mass)"),
         *(
@@ -129,8 +130,8 @@ def _properties(racket: Racket, spots: pd.DataFrame) -> pd.DataFrame:
         ),
         (
             "centre of percussion",
-            cop["from_butt_cm"],
-            f"cm from the butt (hand {cop['value']:.0f} cm from the butt)",
+            cop["from_tip_cm"],
+            f"cm from the tip (hand at {cop['value']:.1f} cm from the tip)",
         ),
         ("string-bed stiffness", racket.strings.stiffness, "N/m"),
         ("string bed", 100 * (racket.strings.extent[1] - racket.strings.extent[0]), "cm long"),
@@ -156,9 +157,6 @@ def _modes(racket: Racket, count: int) -> pd.DataFrame:
         row = {
             "mode": k,
             "free_Hz": modes.frequencies[k - 1],
-            "nodes_cm_from_butt": ", ".join(
-                f"{100 * (modes.length - n):.1f}" for n in modes.nodes(k)
-            ),
             "nodes_cm_from_tip": ", ".join(f"{100 * n:.1f}" for n in modes.nodes(k)),
         }
         row["hand_held_Hz"], row["hand_held_damping_ratio"] = held_mode(held, k + 1)
@@ -205,7 +203,7 @@ def spec_report(
     effective = pd.DataFrame(
         {
             "position_from_tip_m": x,
-            "position_from_butt_cm": 100 * (racket.beam.length - x),
+            "position_from_tip_cm": 100 * x,
             "effective_mass_kg": racket.beam.effective_mass(x),
         }
     )

@@ -39,7 +39,6 @@ from common.checks import SPEED_RANGE, in_range, positive, shown
 from common.checks import speed as check_speed
 from common.units import MPH
 from racket import Racket, Swing, impact
-from racket.swing import WRIST_BEYOND_BUTT
 
 
 def zero_cor_ball(ball: Ball, force: float) -> Ball:
@@ -83,7 +82,7 @@ def serve(racket: Racket, ball: Ball, position: float, swing: Swing) -> dict:
     Returns
     -------
     dict
-        ``position_from_tip_m``, ``position_from_butt_cm``, ``head_speed_m_s``,
+        ``position_from_tip_m``, ``position_from_tip_cm``, ``head_speed_m_s``,
         ``point_speed_m_s`` (v2), ``e``, ``effective_mass_kg``, ``serve_eq22_m_s``,
         ``serve_simulated_m_s``, their ratios to v2 ``ratio_eq22`` and ``ratio_simulated``,
         the speeds in mph (``*_mph``), and the peak force ``peak_force_N``.
@@ -94,7 +93,7 @@ def serve(racket: Racket, ball: Ball, position: float, swing: Swing) -> dict:
     eq22 = serve_speed(min(max(at_rest.e, 0.0), 1.0), ball.mass, at_rest.effective_mass, v2)
     return {
         "position_from_tip_m": float(position),
-        "position_from_butt_cm": 100 * (racket.beam.length - position),
+        "position_from_tip_cm": 100 * position,
         "head_speed_m_s": swing.head_speed,
         "point_speed_m_s": v2,
         "e": at_rest.e,
@@ -116,7 +115,7 @@ def serve_table(
     ball: Ball,
     position=None,
     racket_speed: float = 40.0,
-    pivot_from_butt: float = -WRIST_BEYOND_BUTT,
+    pivot_from_tip: float | None = None,
     zero_cor: bool = True,
 ) -> pd.DataFrame:
     """Serve speeds of ``ball`` (and of its zero-COR twin) at each position, for one swing.
@@ -130,8 +129,8 @@ def serve_table(
     racket_speed : float
         Racket-head speed [m/s]: the string centre's speed (:class:`racket.Swing`); the
         impact point's speed follows from its distance to the pivot.
-    pivot_from_butt : float
-        The swing's pivot [m from the butt, - beyond it]; default the wrist, 5 cm beyond.
+    pivot_from_tip : float, optional
+        The swing's pivot [m from the tip]; default the wrist, 5 cm beyond the butt.
     zero_cor : bool
         Add the rows of the zero-COR twin (:func:`zero_cor_ball` at the peak force of the
         ball's serve at each position; for a sine-law ball the same ball, so the reduction
@@ -150,7 +149,7 @@ def serve_table(
             f"position must be one impact point or a list of them [m from the tip], got "
             f"{shown(position)}"
         )
-    swing = Swing(racket_speed, pivot_from_butt)
+    swing = Swing(racket_speed, pivot_from_tip)
     rows = [{"ball": "normal", **serve(racket, ball, float(x), swing)} for x in positions]
     if zero_cor:  # each point's twin as stiff as the ball is in that point's serve
         rows += [
@@ -177,7 +176,7 @@ def head_speed_for(
     ball: Ball,
     target: float,
     position: float | None = None,
-    pivot_from_butt: float = -WRIST_BEYOND_BUTT,
+    pivot_from_tip: float | None = None,
 ) -> float:
     """The racket-head speed [m/s] whose swing sends ``ball`` (at rest) off at ``target``
     (the simulated serve, solved by Brent's method to 1e-9 m/s).
@@ -192,23 +191,23 @@ def head_speed_for(
         Serve (ball exit) speed to reach [m/s].
     position : float, optional
         Impact point [m from the tip]; default the centre of the strings.
-    pivot_from_butt : float
-        The swing's pivot [m from the butt, - beyond it]; default the wrist.
+    pivot_from_tip : float, optional
+        The swing's pivot [m from the tip]; default the wrist, 5 cm beyond the butt.
     """
     from scipy.optimize import brentq
 
     target = check_speed("target", target)
     position = racket.strings.center if position is None else float(position)
-    heads, reach = serve_reach(racket, ball, position, pivot_from_butt)
+    heads, reach = serve_reach(racket, ball, position, pivot_from_tip)
     if not reach[0] < target < reach[1]:
         raise ValueError(
             f"target ball speed must be in ({reach[0]:.4g}, {reach[1]:.4g}) m/s at "
-            f"{100 * (racket.beam.length - position):.1f} cm from the butt (head speeds of "
+            f"{100 * position:.1f} cm from the tip (head speeds of "
             f"{heads[0]:g}-{heads[1]:.4g} m/s), got {shown(target)}"
         )
 
     def miss(head):
-        return _serve(racket, ball, position, head, pivot_from_butt) - target
+        return _serve(racket, ball, position, head, pivot_from_tip) - target
 
     with warnings.catch_warnings():  # the search passes through absurd speeds
         warnings.simplefilter("ignore")
@@ -216,7 +215,7 @@ def head_speed_for(
 
 
 def serve_reach(
-    racket: Racket, ball: Ball, position: float, pivot_from_butt: float = -WRIST_BEYOND_BUTT
+    racket: Racket, ball: Ball, position: float, pivot_from_tip: float | None = None
 ) -> tuple[tuple[float, float], tuple[float, float]]:
     """The racket-head speeds [m/s] :func:`head_speed_for` searches, and the serve speeds
     [m/s] they reach (the simulated serve at each end): from :data:`SLOWEST_HEAD_SPEED` to
@@ -224,22 +223,22 @@ def serve_reach(
 
     Parameters
     ----------
-    racket, ball, position, pivot_from_butt :
+    racket, ball, position, pivot_from_tip :
         As in :func:`head_speed_for` (``position`` given).
     """
-    ratio = float(Swing(1.0, pivot_from_butt).point_speeds(racket, position))
+    ratio = float(Swing(1.0, pivot_from_tip).point_speeds(racket, position))
     heads = SLOWEST_HEAD_SPEED, SPEED_RANGE[1] / max(ratio, 1.0)
     with warnings.catch_warnings():  # the ends are absurd speeds
         warnings.simplefilter("ignore")
-        reach = tuple(_serve(racket, ball, position, h, pivot_from_butt) for h in heads)
+        reach = tuple(_serve(racket, ball, position, h, pivot_from_tip) for h in heads)
     return heads, reach
 
 
-def _serve(racket, ball, position, head, pivot_from_butt) -> float:
+def _serve(racket, ball, position, head, pivot_from_tip) -> float:
     """The simulated serve speed [m/s] alone (:func:`serve` would also run the impact at
     rest).
     """
-    moved = Swing(head, pivot_from_butt).impact_kwargs(racket, position)
+    moved = Swing(head, pivot_from_tip).impact_kwargs(racket, position)
     return float(impact(racket, ball, position, 0.0, **moved).ball_rebound)
 
 
@@ -250,13 +249,13 @@ def serve_what_if(
     racket_speed: float = 40.0,
     string_stiffness=None,
     ball_stiffness=None,
-    pivot_from_butt: float = -WRIST_BEYOND_BUTT,
+    pivot_from_tip: float | None = None,
 ) -> pd.DataFrame:
     """Serve-speed reduction from a zero-COR ball against string and ball stiffness.
 
     Parameters
     ----------
-    racket, ball, position, racket_speed, pivot_from_butt :
+    racket, ball, position, racket_speed, pivot_from_tip :
         As in :func:`serve_table` (one position).
     string_stiffness : sequence of float, optional
         String-bed stiffnesses [N/m] (tension), each in
@@ -288,10 +287,10 @@ def serve_what_if(
     rows = []
     for k_s in string_stiffness:
         variant = replace(racket, strings=replace(racket.strings, stiffness=float(k_s)))
-        row = serve_table(variant, ball, position, racket_speed, pivot_from_butt).loc["zero-COR"]
+        row = serve_table(variant, ball, position, racket_speed, pivot_from_tip).loc["zero-COR"]
         rows.append({"varied": "strings", "value": float(k_s), **row.to_dict()})
     for k_b in ball_stiffness:
         stiff = replace(ball, law=replace(ball.law, k=float(k_b)))
-        row = serve_table(racket, stiff, position, racket_speed, pivot_from_butt).loc["zero-COR"]
+        row = serve_table(racket, stiff, position, racket_speed, pivot_from_tip).loc["zero-COR"]
         rows.append({"varied": "ball", "value": float(k_b), **row.to_dict()})
     return pd.DataFrame(rows)

@@ -83,7 +83,7 @@ def check_impacts(count: int, what: str) -> None:
 
 
 COLUMNS = (
-    "position_from_butt_cm",
+    "position_from_tip_cm",
     "position_from_tip_m",
     "offset_m",
     "e",

@@ -19,14 +19,14 @@ def sweet_spots(
     ball,
     speed: float | None = None,
     swing=None,
-    grip_from_butt: float | None = None,
+    hand_from_tip: float | None = None,
     points: int = 201,
 ):
-    """The racket's sweet spots in one table, every position in cm from the butt (as spec
-    sheets give them) with the distance from the tip beside it.
+    """The racket's sweet spots in one table, every position in cm from the tip (as every
+    position here).
 
     Rows: the node(s) of the first free bending mode on the strings (no vibration
-    excited), the centre of percussion for a hand at ``grip_from_butt`` (no jar to the
+    excited), the centre of percussion for a hand at ``hand_from_tip`` (no jar to the
     hand: the impact point after which the hand's rigid-body velocity is zero,
     :func:`studies.landmarks.percussion_centre`), the points of largest e (Eq. 21) and
     largest e_A along the strings (racket at rest, ball at ``speed``), the
@@ -47,8 +47,8 @@ def sweet_spots(
         at :data:`studies.sweeps.BALL_SPEED`).
     swing : Swing, optional
         A swing of the (free) racket for the exit speed.
-    grip_from_butt : float, optional
-        Where the hand pivots [m from the butt], in [0, 0.3]; default the middle of the
+    hand_from_tip : float, optional
+        Where the hand pivots [m from the tip], on the handle; default the middle of the
         racket's grip (:func:`studies.landmarks.hand_pivot`).
     points : int
         Points along the strings, a whole number in [11, 10001].
@@ -58,13 +58,13 @@ def sweet_spots(
     DataFrame
         ``spot`` (a key: "node of mode 1", "centre of percussion", "largest e", "largest
         e_A", "dead spot", "largest exit speed", "sweet area"), ``said`` (the spot in a
-        player's words, with its value), ``from_butt_cm``, ``from_tip_cm``, ``value``,
+        player's words, with its value), ``from_tip_cm``, ``value``,
         ``unit``, ``meaning``.
     """
     speed = BALL_SPEED if speed is None else speed
-    pivot = hand_pivot(racket, grip_from_butt)
+    pivot = hand_pivot(racket, hand_from_tip)
     points = whole("points", points, 11, 10001)
-    beam, length = racket.beam, racket.beam.length
+    beam = racket.beam
     start, end = racket.strings.extent
     margin = min(TENNIS_BALL_RADIUS if ball.radius is None else ball.radius, 0.25 * (end - start))
     x = np.linspace(start + margin, end - margin, points)
@@ -76,7 +76,6 @@ def sweet_spots(
             {
                 "spot": spot,
                 "said": said,
-                "from_butt_cm": 100 * (length - where),
                 "from_tip_cm": 100 * where,
                 "value": value,
                 "unit": unit,
@@ -90,9 +89,9 @@ def sweet_spots(
             add("node of mode 1", f"node of the first mode ({f1:.0f} Hz)", node, f1, "Hz",
                 "the frame's first mode is not set ringing: least vibration")  # fmt: skip
     cop = percussion_centre(racket, x, still.v_cm, still.omega, pivot)
-    grip = 100 * (length - pivot)
-    add("centre of percussion", f"centre of percussion (grip at {grip:.0f} cm)",
-        cop, grip, "cm from the butt (the hand)", "no jar to the hand")  # fmt: skip
+    hand = 100 * pivot
+    add("centre of percussion", f"centre of percussion (hand at {hand:.1f} cm)",
+        cop, hand, "cm from the tip (the hand)", "no jar to the hand")  # fmt: skip
     for spot, said, values, pick, meaning in (
         ("largest e", "best rebound of the frame, e", still.e, np.argmax,
          "the frame gives back most (Eq. 21)"),

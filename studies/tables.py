@@ -36,7 +36,7 @@ def impact_columns(result: Impact) -> dict:
         The result of :func:`racket.impact` (SI).
     """
     columns = {
-        "position_from_butt_cm": 100 * np.asarray(result.position_from_butt),
+        "position_from_tip_cm": 100 * np.asarray(result.position),
         "position_from_tip_m": result.position,
         "offset_m": 0.0 * result.position if result.offset is None else result.offset,
         "e": result.e,
@@ -59,7 +59,10 @@ def impact_columns(result: Impact) -> dict:
 
 
 def feel_table(feel) -> pd.DataFrame:
-    """The histories of :func:`racket.feel.hand_feel`, one row per time step.
+    """The histories of :func:`racket.feel.hand_feel`, one row per time step: the contact
+    force, the handle's velocity and acceleration at the middle of the hand, the
+    acceleration's two parts (the shock's rigid-body motion and the vibration, which add up
+    to it) and, off the axis, the twist rate.
 
     Parameters
     ----------
@@ -73,6 +76,8 @@ def feel_table(feel) -> pd.DataFrame:
         "force_N": feel.force,
         "handle_velocity_m_s": feel.velocity,
         "handle_acceleration_m_s2": feel.acceleration,
+        "handle_shock_acceleration_m_s2": feel.shock_acceleration,
+        "handle_vibration_acceleration_m_s2": feel.vibration_acceleration,
     }
     if feel.twist_rate is not None:
         columns["handle_twist_rate_rad_s"] = feel.twist_rate

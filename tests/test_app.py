@@ -17,7 +17,14 @@ import matplotlib
 import pytest
 
 from racket.swing import EFFORT_EXPONENT
-from studies.dashboard import COMPARED, HEAD_SPEEDS_MPH, MY_SHEET, PageInputs, page_results
+from studies.dashboard import (
+    COMPARED,
+    HEAD_SPEED_MAX_MPH,
+    HEAD_SPEEDS_MPH,
+    MY_SHEET,
+    PageInputs,
+    page_results,
+)
 
 matplotlib.use("Agg")
 
@@ -56,7 +63,9 @@ def test_page_results_follow_the_controls():
     for which in ("racket", "racket_b"):
         with pytest.raises(ValueError, match=f"{which} must be one of"):
             page_results(PageInputs(**{which: "no such racket"}))
-    with pytest.raises(ValueError, match=r"ball_speed_mph must be in \[.*\] mph, got 900"):
+    with pytest.raises(
+        ValueError, match=r"Incoming ball speed \[mph\] must be in \[.*\] mph, got 900"
+    ):
         page_results(PageInputs(ball_speed_mph=900.0))
 
 
@@ -70,25 +79,25 @@ def test_two_rackets_and_their_difference():
 
 
 def test_serve_speed_against_head_speed_covers_real_play():
-    r = page_results(PageInputs(swing_mph=150.0))
+    r = page_results(PageInputs(swing_mph=HEAD_SPEED_MAX_MPH))
     serves = r.a.serves
-    assert serves["head_speed_mph"].max() == pytest.approx(150.0)
+    assert serves["head_speed_mph"].max() == pytest.approx(HEAD_SPEED_MAX_MPH)
     assert list(serves["head_speed_mph"]) == pytest.approx(list(HEAD_SPEEDS_MPH))
     assert serves["serve_simulated_mph"].is_monotonic_increasing
     # the card's serve at the page's head speed is the curve's point there
     assert r.a.summary["serve_mph"] == pytest.approx(serves["serve_simulated_mph"].iloc[-1])
 
 
-def test_the_feel_is_named_by_the_mode_it_rings_at():
-    r = page_results(PageInputs())
-    for side in (r.a, r.b):
-        s = side.summary
-        # a centre hit on a free racket rings the handle at the frame's first bending mode:
-        # its damped frequency, f1 sqrt(1 - zeta^2) (zeta 0.005: 1.25e-5 below f1)
-        assert s["feel_mode"] == "the racket's first natural frequency"
-        assert s["feel_hz"] == pytest.approx(s["f1_hz"], rel=5e-5)
-        assert s["feel_hz"] < s["f1_hz"]
-        assert s["feel_peak_g"] > 0
+def test_the_pivot_is_from_the_tip_or_the_wrist():
+    wrist = page_results(PageInputs()).a.summary["serve_mph"]
+    length_cm = 100 * page_results(PageInputs()).a.racket.beam.length
+    same = page_results(PageInputs(pivot_cm_from_tip=length_cm + 5.0)).a.summary["serve_mph"]
+    assert same == pytest.approx(wrist, rel=1e-9)  # the wrist is 5 cm beyond the butt
+    closer = page_results(PageInputs(pivot_cm_from_tip=length_cm - 10.0)).a.summary
+    assert closer["serve_tipward_mph"] != pytest.approx(same)
+    on_strings = page_results(PageInputs(pivot_cm_from_tip=10.0)).errors  # each racket's line
+    assert list(on_strings) == ["A", "B"]
+    assert re.search(r"Swing pivot \[cm from the tip\] must be in \(.*\] cm", on_strings["A"])
 
 
 def _overlap(a, b) -> bool:

@@ -8,13 +8,13 @@ import pytest
 
 from ball import WALL, Ball, LinearHysteresis, PowerLawHysteresis, collide
 from beam import Beam
-from racket import Hand, impact, paper_racket, tennis_ball
+from racket import Hand, impact, paper_ball, paper_racket
 from studies.cli import main
 
 NUMERIC_FLAGS = {
-    "sweep": ["--speed", "--speed-mph", "--string-stiffness", "--f1", "--ra"],
-    "compare": ["--speed", "--speed-mph"],
-    "serve": ["--racket-speed", "--racket-speed-mph"],
+    "sweep": ["--speed", "--speed-mph", "--speed-kmh", "--string-stiffness", "--f1", "--ra"],
+    "compare": ["--speed", "--speed-mph", "--speed-kmh"],
+    "serve": ["--racket-speed", "--racket-speed-mph", "--racket-speed-kmh"],
 }
 POINTS = ["--points", "3"]
 
@@ -32,20 +32,21 @@ for flag in ("--from", "--to"):
         CASES.append((["sweep", flag, value, *POINTS], flag))
 for value in ("-3", "nan", "inf", "1e300"):
     CASES.append((["serve", "--position", value], "--position"))
-for value in ("-300", "31", "nan", "inf", "1e300"):
-    CASES.append((["serve", "--pivot-cm-from-butt", value], "--pivot-cm-from-butt"))
-for value in ("0", "-3", "nan", "1e300"):
-    CASES.append((["serve", "--target-ball-speed-mph", value], "--target-ball-speed-mph"))
+for value in ("-3", "300", "nan", "inf", "1e300"):
+    CASES.append((["serve", "--pivot-cm-from-tip", value], "--pivot-cm-from-tip"))
+for flag in ("--target-ball-speed-mph", "--target-ball-speed-kmh"):
+    for value in ("0", "-3", "nan", "1e300"):
+        CASES.append((["serve", flag, value], flag))
 CASES.append((["serve", "--target-ball-speed", "0.05"], "target ball speed must be in"))
-for flag in ("--va", "--va-mph"):
+for flag in ("--va", "--va-mph", "--va-kmh"):
     for value in ("0", "-3", "nan", "inf", "1e300"):
         CASES.append(
             (["collide", flag, value], flag if value in ("nan", "inf", "1e300") else "--va")
         )
-for flag, equal in (("--vb", "4"), ("--vb-mph", "9")):  # --va is 4 m/s (8.9 mph)
+for flag, equal in (("--vb", "4"), ("--vb-mph", "9"), ("--vb-kmh", "14.4")):  # --va 4 m/s
     for value in ("nan", "inf", "1e300", equal):
         CASES.append((["collide", flag, value], flag if value != equal else "--va must exceed"))
-for cmd in (["modes"], ["specs", "paper"]):
+for cmd in (["modes"], ["specs", "--racket", "paper"]):
     for value in ("0", "-2", "nan", "1e300", "201"):
         CASES.append(([*cmd, "--count", value], "--count"))
 
@@ -61,11 +62,11 @@ TOML = {
     "lead_number": ("[racket]\nlead_tape = 5\n", "lead_tape in [racket] must be an array"),
     "lead_entry": ("[racket]\nlead_tape = [5]\n", "[racket.lead_tape] must be a table"),
     "lead_far": (
-        "[racket]\nlead_tape = [{mass_g = 3, from_butt_cm = 100}]\n",
-        "lead_tape from_butt_cm must be in [0, 68] cm, got 100",
+        "[racket]\nlead_tape = [{mass_g = 3, from_tip_cm = 100}]\n",
+        "lead_tape from_tip_cm must be in [0, 68] cm, got 100",
     ),
     "lead_negative": (
-        "[racket]\nlead_tape = [{mass_g = -3, from_butt_cm = 30}]\n",
+        "[racket]\nlead_tape = [{mass_g = -3, from_tip_cm = 30}]\n",
         "lead_tape mass_g must be in [0, 200] g, got -3",
     ),
     "lead_key": ("[racket]\nlead_tape = [{grams = 3}]\n", "unknown key 'grams'"),
@@ -74,8 +75,8 @@ TOML = {
         "one side only; give both sides, '3 and 9'",
     ),
     "lead_both_places": (
-        '[racket]\nlead_tape = [{mass_g = 3, at = "12", from_butt_cm = 60}]\n',
-        "needs mass_g and one of from_butt_cm or at",
+        '[racket]\nlead_tape = [{mass_g = 3, at = "12", from_tip_cm = 60}]\n',
+        "needs mass_g and one of from_tip_cm or at",
     ),
     "hand_key": ("[racket.hand]\ngrip_force = 0.1\n", "unknown key 'grip_force' in [racket.hand]"),
     "hand_grip": ("[racket.hand]\ngrip = 0.1\n", "unknown grip 0.1; grips: light, medium, tight"),
@@ -181,7 +182,7 @@ CASES += [
     (["paper", "--out", "file.txt"], "--out must be a directory"),
     (["paper", "--json", "rows.csv"], "--json must be a file ending in .json"),
     (["modes", "--count", "-2", "--out", "m.csv"], "--count"),
-    (["specs", "paper", "--out", "nodir/x.csv"], "--out: directory 'nodir'"),
+    (["specs", "--racket", "paper", "--out", "nodir/x.csv"], "--out: directory 'nodir'"),
     (["compare", "--plot", "c.txt"], "--plot must be a plot file"),
     # Options given twice, or rackets that would collide under one label.
     (["sweep", "--racket", "paper", "--racket", "pure-drive-2021"], "--racket given twice"),
@@ -256,26 +257,26 @@ def test_internal_errors_say_so_and_debug_shows_the_traceback(workdir, capsys, m
 
 
 def test_a_squashed_ball_warns_in_one_line(workdir, capsys):
-    assert main(["collide", "--a", "tennis", "--b", "wall", "--va-mph", "100"]) == 0
+    assert main(["collide", "--a", "paper", "--b", "wall", "--va-mph", "100"]) == 0
     err = capsys.readouterr().err
     assert err.count("\n") == 1
     assert "warning: the ball is compressed by 53.4 mm, more than its radius (33.5 mm)" in err
 
 
 API_CASES = [
-    (lambda: impact(paper_racket(), tennis_ball(), [], 10.0), "position must give at least one"),
-    (lambda: impact(paper_racket(), tennis_ball(), [[0.1, 0.2]], 10.0), "flat sequence"),
-    (lambda: impact(paper_racket(), tennis_ball(), [0.1, None], 10.0), "got None"),
-    (lambda: impact(paper_racket(), tennis_ball(), np.float64(0.325), 10.0), "got 0.325"),
-    (lambda: impact(paper_racket(), tennis_ball(), 0.1, 1e300), "speed must be in"),
-    (lambda: impact(paper_racket(), tennis_ball(), 0.1, 5e-324), "speed must be in"),
-    (lambda: impact(paper_racket(), tennis_ball(), 0.1, 10.0, steps_per_contact=10), "steps_per"),
-    (lambda: impact(paper_racket(), tennis_ball(), 0.1, 10.0, watch_after=-1), "watch_after"),
-    (lambda: impact(paper_racket(), tennis_ball(), 0.1, 10.0, pivot=5.0), "pivot must lie"),
+    (lambda: impact(paper_racket(), paper_ball(), [], 10.0), "position must give at least one"),
+    (lambda: impact(paper_racket(), paper_ball(), [[0.1, 0.2]], 10.0), "flat sequence"),
+    (lambda: impact(paper_racket(), paper_ball(), [0.1, None], 10.0), "got None"),
+    (lambda: impact(paper_racket(), paper_ball(), np.float64(0.325), 10.0), "got 0.325"),
+    (lambda: impact(paper_racket(), paper_ball(), 0.1, 1e300), "speed must be in"),
+    (lambda: impact(paper_racket(), paper_ball(), 0.1, 5e-324), "speed must be in"),
+    (lambda: impact(paper_racket(), paper_ball(), 0.1, 10.0, steps_per_contact=10), "steps_per"),
+    (lambda: impact(paper_racket(), paper_ball(), 0.1, 10.0, watch_after=-1), "watch_after"),
+    (lambda: impact(paper_racket(), paper_ball(), 0.1, 10.0, pivot=5.0), "pivot must lie"),
     (lambda: Beam.uniform(0.68, 0.34, 120.0, n_modes=300), "n_modes must be in [1, 200]"),
     (lambda: PowerLawHysteresis(1e5, 1e-3, 1e-3), "a must be in [0.5, 5]"),
     (lambda: PowerLawHysteresis.with_cor(1e5, 1.5, 1e-9), "e must be in [0.05"),
-    (lambda: collide(tennis_ball(), WALL, 1e200), "v_a must be in [-300, 300] m/s"),
+    (lambda: collide(paper_ball(), WALL, 1e200), "v_a must be in [-300, 300] m/s"),
     (lambda: Ball(-1.0, LinearHysteresis(4e4, 0.75)), "mass must be > 0 kg, got -1"),
     (lambda: Ball(0.057, LinearHysteresis(4e4, 0.75), radius=-1), "radius must be > 0"),
     (lambda: LinearHysteresis(4e4, 1.2), "e must be in [0, 1], got 1.2"),

@@ -5,7 +5,7 @@ import math
 import pytest
 
 from ball.catalog import ITF_DROP_SPEED, TYPE_2_BANDS
-from racket import tennis_ball
+from racket import paper_ball
 from studies.bounce import rigid_bounce_table
 
 ITF_TYPE2_COR = TYPE_2_BANDS.cor
@@ -18,7 +18,7 @@ def test_itf_drop_speed_and_cor_band():
 
 
 def test_paper_ball_bounces_at_its_own_cor_in_its_own_contact_time():
-    table = rigid_bounce_table(tennis_ball(), [ITF_DROP_SPEED, 20.0])
+    table = rigid_bounce_table(paper_ball(), [ITF_DROP_SPEED, 20.0])
     assert table["e"].to_numpy() == pytest.approx([0.75, 0.75], abs=1e-9)
     # Loading a quarter period of k, unloading a quarter period of k / e**2:
     t = math.pi * math.sqrt(0.057 / 4e4) / 2 * (1 + 0.75)

@@ -47,14 +47,17 @@ def test_the_docs_have_worked_examples():
 def test_documentation_page_runs(page):
     """Every command and Python block of the page runs, in order, in one scratch directory,
     as the site's build runs them (docs/hooks/run.py): a command exits with the status its
-    block expects, a block does not raise.  A page that the built site (site/) ran from this
-    very text and code is not run twice."""
+    block expects, a block does not raise; the markers of its prose find what they quote, and
+    its prose copies no number of its outputs (:func:`check` of docs/hooks/run.py).  A page
+    that the built site ran from this very text and code is not run twice."""
     text = (ROOT / "docs" / page).read_text()
-    manifest = ROOT / "site" / RUN.MANIFEST
-    if manifest.exists() and json.loads(manifest.read_text()).get(page) == RUN.fingerprint(text):
-        pytest.skip("the site in site/ was built from this page and this code: its build ran it")
-    results, _ = RUN.run_page(text, page)
-    assert len(results) == len(list(RUN.BLOCK.finditer(text)))
+    site = RUN.built_site()
+    manifest = site / RUN.MANIFEST if site else None
+    if manifest and manifest.exists():
+        if json.loads(manifest.read_text()).get(page) == RUN.fingerprint(text):
+            pytest.skip(f"the site in {site} was built from this page and this code: it ran it")
+    run = RUN.run_page(text, page)  # RunError: a block failed, or the prose copies an output
+    assert len(run.results) == len(list(RUN.BLOCK.finditer(text)))
 
 
 def _readme_sessions():
@@ -76,6 +79,16 @@ def test_the_readme_starts_with_the_two_commands_and_fits_three_screens():
     ]
     assert len(lines) <= 160
     assert len(_readme_sessions()) >= 3 and "](docs/validation.md)" in README.read_text()
+
+
+def test_the_readme_prose_copies_no_output():
+    """The README's prose quotes no number its console blocks print (the docs pages' rule,
+    ``copied_numbers`` of docs/hooks/run.py): GitHub shows the README as written, with no
+    build to fill a marker, so a copy would go stale when the output changes."""
+    sessions = _readme_sessions()
+    typed = "\n".join(command for command, _ in sessions)
+    copies = RUN.copied_numbers(README.read_text(), [shown for _, shown in sessions], typed)
+    assert not copies, "README.md's prose copies its outputs:\n" + "\n".join(copies)
 
 
 @pytest.mark.parametrize("index", range(len(_readme_sessions())))
@@ -138,7 +151,7 @@ def _named_paths():
     for text in texts:
         files |= set(
             re.findall(
-                r"`((?:ball|beam|racket|studies|common|tests|benchmarks)/[\w/]+\.\w+)`", text
+                r"`((?:ball|beam|racket|studies|common|tests|benchmarks|data)/[\w/]+\.\w+)`", text
             )
         )
         modules |= set(re.findall(r"`((?:studies|common)(?:\.[a-z_][a-z0-9_]*)+)", text))

@@ -10,10 +10,10 @@ from hypothesis import strategies as st
 from scipy.linalg import block_diag
 
 from ball import BALL_PRESETS
-from racket import CATALOG, GRIPS, Hand, from_specs, impact, paper_racket, tennis_ball
+from racket import CATALOG, GRIPS, Hand, from_specs, impact, paper_ball, paper_racket
 from racket.system import free_system, held_mode, held_system
 
-BALL = tennis_ball()
+BALL = paper_ball()
 RACKET = CATALOG["pure-drive-2021"].racket()  # 321 g, 33 cm, 325 kg cm^2, f1 150 Hz
 
 

@@ -8,7 +8,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from racket import CATALOG, TENNIS_BALL_RADIUS, Swing, impact, paper_racket, tennis_ball
+from racket import CATALOG, TENNIS_BALL_RADIUS, Swing, impact, paper_ball, paper_racket
 from racket.feel import hand_feel
 from studies.bounce import rigid_bounce_table
 from studies.cli import main
@@ -71,7 +71,7 @@ def test_a_toml_balls_radius_sets_the_squash_warning(tmp_path, capsys):
 # ----- 2. Swung maps of even grids ---------------------------------------------------------
 @pytest.mark.parametrize("grid", [(4, 4), (5, 4), (4, 5)])
 def test_a_swung_map_of_any_grid_is_each_points_swung_impact(racket, grid):
-    ball, swing = tennis_ball(), Swing(30.0)
+    ball, swing = paper_ball(), Swing(30.0)
     face = face_map(racket, ball, swing=swing, grid=grid)
     x = np.broadcast_to(face.positions[:, None], face.offsets.shape).ravel()
     hit = impact(racket, ball, x, 16.5, offset=face.offsets.ravel(),
@@ -114,7 +114,7 @@ def test_a_clamped_map_says_it_has_no_centre_of_percussion(argv, capsys):
 )
 def test_library_refusals_are_one_line_naming_the_argument(racket, call, message):
     with pytest.raises(ValueError, match=message) as refused:
-        call(racket, tennis_ball())
+        call(racket, paper_ball())
     assert "\n" not in str(refused.value)
 
 
@@ -177,7 +177,7 @@ def test_a_huge_map_is_refused_with_its_count_and_the_limit(racket, capsys):
     line = _one_line_exit_2(["map", "--grid", "1000", "1000"], capsys)
     assert "--grid 1000 1000 asks for 1,000,000 points" in line and f"{MAX_MAP_POINTS:,}" in line
     with pytest.raises(ValueError, match=r"grid \(1000, 1000\) asks for 1,000,000 points"):
-        face_map(racket, tennis_ball(), grid=(1000, 1000))
+        face_map(racket, paper_ball(), grid=(1000, 1000))
 
 
 def test_a_sweep_of_1e8_impacts_is_refused_with_its_count_and_the_limit(capsys):
@@ -185,7 +185,7 @@ def test_a_sweep_of_1e8_impacts_is_refused_with_its_count_and_the_limit(capsys):
     line = _one_line_exit_2(["sweep", "--points", "100000", "--speed", *speeds], capsys)
     assert "--points 100000 x 1000 --speed values ask for 100,000,000 impacts" in line
     assert f"{MAX_IMPACTS:,}" in line
-    racket, ball = paper_racket(), tennis_ball()
+    racket, ball = paper_racket(), paper_ball()
     with pytest.raises(ValueError, match=r"positions x speed ask for 100,000,000 impacts"):
         sweep(racket, ball, np.linspace(0.0, 0.3, 100_000), np.linspace(1.0, 50.0, 1000))
     with pytest.raises(ValueError, match=r"points x rackets ask for 5,100,000 impacts"):

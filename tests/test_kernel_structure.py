@@ -15,7 +15,7 @@ from ball import (
     SineLaw,
 )
 from ball.stiffening import StiffeningHysteresis
-from racket import impact, kernel, paper_racket, solver, tennis_ball
+from racket import impact, kernel, paper_ball, paper_racket, solver
 
 LAWS = [
     LinearSpring(4e4),
@@ -55,9 +55,9 @@ def test_every_law_names_its_kernel_code():
 
 def test_a_large_call_runs_in_chunks_with_the_same_results(monkeypatch):
     x = np.linspace(0.0, 0.32, 23)
-    whole = impact(paper_racket(), tennis_ball(), x, 10.0)
+    whole = impact(paper_racket(), paper_ball(), x, 10.0)
     monkeypatch.setattr(solver, "CHUNK_POINTS", 5)
-    chunked = impact(paper_racket(), tennis_ball(), x, 10.0)
+    chunked = impact(paper_racket(), paper_ball(), x, 10.0)
     for name in ("e", "e_A", "contact_time", "vibration_energy", "energy_residual"):
         assert getattr(chunked, name) == pytest.approx(getattr(whole, name), rel=1e-13, abs=1e-15)
 
@@ -75,7 +75,7 @@ def test_contact_time_is_second_order_in_the_step():
     # The opening is placed within its step, so the contact time converges as dt**2 (it
     # was first order when the contact ended at a step's end).
     at = {
-        n: impact(paper_racket(), tennis_ball(), 0.1, 10.0, steps_per_contact=n).contact_time
+        n: impact(paper_racket(), paper_ball(), 0.1, 10.0, steps_per_contact=n).contact_time
         for n in (100, 200, 400, 6400)
     }
     errors = [abs(at[n] - at[6400]) for n in (100, 200, 400)]

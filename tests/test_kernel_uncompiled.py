@@ -12,15 +12,15 @@ import sys
 import numpy as np
 
 from ball import Ball, PowerLawHysteresis
-from racket import impact, paper_racket, tennis_ball
+from racket import impact, paper_ball, paper_racket
 
 SCRIPT = """
 import json
 from ball import Ball, PowerLawHysteresis
-from racket import impact, paper_racket, tennis_ball
+from racket import impact, paper_racket, paper_ball
 out = {}
 power = Ball(0.057, PowerLawHysteresis(2e6, 1.5, 3.0))
-for name, ball in (("linear", tennis_ball()), ("power", power)):
+for name, ball in (("linear", paper_ball()), ("power", power)):
     r = impact(paper_racket("hand-held"), ball, [0.02, 0.16], 10.0)
     out[name] = [*r.e.tolist(), *r.vibration_energy.tolist(), *r.contact_time.tolist()]
 print(json.dumps(out))
@@ -38,7 +38,7 @@ def test_compiled_kernel_matches_the_uncompiled_code():
     )
     uncompiled = json.loads(run.stdout)
     for name, ball in (
-        ("linear", tennis_ball()),
+        ("linear", paper_ball()),
         ("power", Ball(0.057, PowerLawHysteresis(2e6, 1.5, 3.0))),
     ):
         r = impact(paper_racket("hand-held"), ball, [0.02, 0.16], 10.0)

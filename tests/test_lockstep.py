@@ -31,8 +31,8 @@ from racket import (
     kernel,
     layout,
     lockstep,
+    paper_ball,
     paper_racket,
-    tennis_ball,
 )
 from racket.stepper import Stepper
 
@@ -136,13 +136,13 @@ def test_lockstep_equals_the_scalar_kernel_bit_for_bit(
 @pytest.mark.parametrize(
     "name, ball, count",
     [
-        ("free", tennis_ball(), 40),
+        ("free", paper_ball(), 40),
         ("held, hand's mass", Ball(0.057, PowerLawHysteresis(2e6, 1.5, 3.0)), 40),
         ("face held", Ball(0.057, StiffeningHysteresis(3.75e4, 0.0335, 0.8, 7.3)), 40),
         ("free", Ball(0.057, SineLaw(4e4)), 40),  # the Xo search runs in lockstep too
         # several tiles (lockstep.TILE = 64) and a ragged last one, with offsets
-        ("face free", tennis_ball(), 2 * lockstep.TILE + 22),
-        ("face held", tennis_ball(), 2 * lockstep.TILE + 22),
+        ("face free", paper_ball(), 2 * lockstep.TILE + 22),
+        ("face held", paper_ball(), 2 * lockstep.TILE + 22),
     ],
 )
 def test_whole_impacts_come_out_the_same(name, ball, count):
@@ -174,7 +174,7 @@ def test_the_batch_switch_chooses_each_kernel(monkeypatch):
 
     monkeypatch.setattr(kernel, "run_impacts", spy("scalar", kernel.run_impacts))
     monkeypatch.setattr(lockstep, "run_lockstep", spy("lockstep", lockstep.run_lockstep))
-    racket, ball = paper_racket(), tennis_ball()
+    racket, ball = paper_racket(), paper_ball()
     impact(racket, ball, 0.1, 10.0)
     assert set(ran) == {"scalar"}
     ran.clear()
@@ -189,9 +189,9 @@ def test_the_batch_switch_chooses_each_kernel(monkeypatch):
 SCRIPT = """
 import json
 import numpy as np
-from racket import dispatch, impact, paper_racket, tennis_ball
+from racket import dispatch, impact, paper_racket, paper_ball
 dispatch.LOCKSTEP_MIN = 0
-r = impact(paper_racket("hand-held"), tennis_ball(), [0.02, 0.16, 0.3], 10.0,
+r = impact(paper_racket("hand-held"), paper_ball(), [0.02, 0.16, 0.3], 10.0,
            steps_per_contact=60)
 print(json.dumps([*r.e.tolist(), *r.vibration_energy.tolist(), *r.contact_time.tolist()]))
 """
@@ -208,7 +208,7 @@ def test_the_lockstep_kernel_runs_uncompiled_with_the_same_numbers():
     )
     uncompiled = json.loads(run.stdout)
     with dispatch.lockstep_from(0):
-        r = impact(paper_racket("hand-held"), tennis_ball(), [0.02, 0.16, 0.3], 10.0,
+        r = impact(paper_racket("hand-held"), paper_ball(), [0.02, 0.16, 0.3], 10.0,
                    steps_per_contact=60)  # fmt: skip
     compiled = [*r.e, *r.vibration_energy, *r.contact_time]
     assert np.allclose(compiled, uncompiled, rtol=1e-12, atol=0.0)

@@ -9,7 +9,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from racket import CATALOG, Swing, impact, tennis_ball
+from racket import CATALOG, Swing, impact, paper_ball
 from racket.feel import hand_feel
 from racket.system import held_mode
 from studies.cli import main
@@ -24,7 +24,7 @@ def racket():
 
 
 def test_sweet_spots_agree_with_the_beam_and_count_from_the_butt(racket):
-    table = sweet_spots(racket, tennis_ball(), 10.0, swing=Swing(20.0)).set_index("spot")
+    table = sweet_spots(racket, paper_ball(), 10.0, swing=Swing(20.0)).set_index("spot")
     beam, length = racket.beam, racket.beam.length
     nodes = table[table.index.str.startswith("node of mode 1")]
     start, end = racket.strings.extent  # only where the ball can be centred on the strings
@@ -51,12 +51,12 @@ def test_feel_at_the_hand_is_the_impact_carried_on(racket):
     the solver found when it left (1e-3: the last step of the contact); a free racket's hand
     takes nothing; a hand-held one takes energy, and its handle rings at a held mode."""
     undamped = replace(racket, beam=replace(racket.beam, damping=0.0))
-    feel = hand_feel(undamped, tennis_ball(), 0.12, 20.0, duration=0.03)
-    hit = impact(undamped, tennis_ball(), 0.12, 20.0)
+    feel = hand_feel(undamped, paper_ball(), 0.12, 20.0, duration=0.03)
+    hit = impact(undamped, paper_ball(), 0.12, 20.0)
     assert feel.vibration_energy_end == pytest.approx(hit.vibration_energy, rel=1e-3)
     assert feel.hand_energy == 0.0
     held = replace(racket, support="hand-held")
-    feel = hand_feel(held, tennis_ball(), racket.strings.center, 20.0)
+    feel = hand_feel(held, paper_ball(), racket.strings.center, 20.0)
     assert 0 < feel.hand_vibration_energy < feel.hand_energy
     above = feel.frequencies > 20
     dominant = feel.frequencies[above][np.argmax(feel.spectrum[above])]
@@ -65,7 +65,7 @@ def test_feel_at_the_hand_is_the_impact_carried_on(racket):
     held_hz = [held_mode(system, k)[0] for k in range(2, held.beam.modes.count)]
     assert min(abs(dominant - f) for f in held_hz) <= feel.frequencies[1]
     assert feel.peak_acceleration > 100.0 and feel_table(feel).shape[0] == feel.t.size
-    off = hand_feel(held, tennis_ball(), racket.strings.center, 20.0, offset=0.06)
+    off = hand_feel(held, paper_ball(), racket.strings.center, 20.0, offset=0.06)
     assert np.abs(off.twist_rate).max() > 1.0
 
 
@@ -107,7 +107,7 @@ def test_tension_strings_the_racket_as_its_spec_sheet_does(racket, capsys):
         restrung = with_tension(racket, lb * LB)
         assert restrung.strings.stiffness == pytest.approx(sheet.strings.stiffness, rel=1e-12)
     node = racket.beam.modes.nodes(1)[0]
-    table = sweep(racket, tennis_ball(), [node], 20.0, tension=[45 * LB, 55 * LB, 65 * LB],
+    table = sweep(racket, paper_ball(), [node], 20.0, tension=[45 * LB, 55 * LB, 65 * LB],
                   progress=False)  # fmt: skip
     assert table["tension_N"].tolist() == pytest.approx([45 * LB, 55 * LB, 65 * LB])
     assert np.all(np.diff(table["e"]) < 0)  # tighter strings, lower e at the node
@@ -265,6 +265,6 @@ def test_sweep_refuses_a_held_swing_before_any_impact(monkeypatch):
     ran = []
     monkeypatch.setattr(sweeps, "run_calls", lambda *a, **k: ran.append(a))
     with pytest.raises(ValueError, match="swing_speed must be 0 for a hand-held racket"):
-        sweeps.sweep(paper_racket(), tennis_ball(), [0.1], 0.0, support=["free", "hand-held"],
+        sweeps.sweep(paper_racket(), paper_ball(), [0.1], 0.0, support=["free", "hand-held"],
                      swing=Swing(20.0), progress=False)  # fmt: skip
     assert ran == []

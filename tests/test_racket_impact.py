@@ -16,10 +16,10 @@ from ball import (
     unhappy_cor,
 )
 from beam import Beam
-from racket import Racket, StringBed, impact, paper_racket, tennis_ball
+from racket import Racket, StringBed, impact, paper_ball, paper_racket
 from racket.solver import DEFAULT_STEPS_PER_CONTACT
 
-BALL = tennis_ball()
+BALL = paper_ball()
 POSITIONS = np.linspace(0.0, 0.32, 17)
 
 
@@ -264,8 +264,8 @@ def test_threads_share_the_points_and_change_no_number(monkeypatch, threads):
 
     x = np.linspace(0.0, 0.32, 53)
     monkeypatch.setattr(config, "NUMBA_NUM_THREADS", 1)
-    one = impact(paper_racket("hand-held"), tennis_ball(), x, 20.0)
+    one = impact(paper_racket("hand-held"), paper_ball(), x, 20.0)
     monkeypatch.setattr(config, "NUMBA_NUM_THREADS", threads)
-    many = impact(paper_racket("hand-held"), tennis_ball(), x, 20.0)
+    many = impact(paper_racket("hand-held"), paper_ball(), x, 20.0)
     for name in ("e", "e_A", "contact_time", "peak_force", "vibration_energy"):
         assert np.array_equal(getattr(one, name), getattr(many, name)), name

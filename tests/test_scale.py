@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from ball import Ball, SineLaw
-from racket import CATALOG, Swing, impact, paper_racket, tennis_ball
+from racket import CATALOG, Swing, impact, paper_ball, paper_racket
 from studies.maps import face_map
 from studies.scale import (
     MIN_TASK_IMPACTS,
@@ -47,7 +47,7 @@ def test_tasks_cover_every_point_once_in_order():
     racket, other = paper_racket(), paper_racket("clamped-head")
     counts = [3, 2 * TASK_IMPACTS + 5, 40, 7]
     calls = [
-        Impacts(r, tennis_ball(), np.arange(n, dtype=float), 10.0, np.arange(n) * 0.5, 1.0 + n)
+        Impacts(r, paper_ball(), np.arange(n, dtype=float), 10.0, np.arange(n) * 0.5, 1.0 + n)
         for r, n in zip([racket, other, racket, other], counts, strict=True)
     ]
     tasks, index = _tasks(calls)
@@ -63,7 +63,7 @@ def test_tasks_cover_every_point_once_in_order():
 
 
 def test_small_studies_are_cut_for_the_workers_too():
-    calls = [Impacts(paper_racket(), tennis_ball(), np.zeros(1000), 10.0)]
+    calls = [Impacts(paper_racket(), paper_ball(), np.zeros(1000), 10.0)]
     tasks, _ = _tasks(calls)
     assert len(tasks) == -(-1000 // MIN_TASK_IMPACTS)
 
@@ -72,14 +72,14 @@ def test_a_racket_pickles_with_the_caches_it_has_computed():
     racket = CATALOG["pure-drive-2021"].racket()
     cold = len(pickle.dumps(racket))
     x, y = np.linspace(0.1, 0.2, 5), np.linspace(-0.02, 0.02, 5)
-    first = impact_columns(impact(racket, tennis_ball(), x, 20.0, offset=y))
+    first = impact_columns(impact(racket, paper_ball(), x, 20.0, offset=y))
     warm = pickle.loads(pickle.dumps(racket))
     assert len(pickle.dumps(racket)) > 5 * cold
     for name in ("system", "face_system"):
         assert name in warm.__dict__
     for name in ("modes", "_flexibility", "roll_modes"):
         assert name in warm.beam.__dict__
-    again = impact_columns(impact(warm, tennis_ball(), x, 20.0, offset=y))
+    again = impact_columns(impact(warm, paper_ball(), x, 20.0, offset=y))
     for name, values in first.items():
         assert np.array_equal(values, again[name], equal_nan=True), name
 
@@ -87,9 +87,9 @@ def test_a_racket_pickles_with_the_caches_it_has_computed():
 def test_a_racket_of_several_tasks_is_warmed_once_and_sent_warm():
     racket = paper_racket()
     x = np.linspace(0.0, 0.32, 3 * MIN_TASK_IMPACTS)
-    serial = sweep(racket, tennis_ball(), x, [10.0, 20.0], f1=[100.0, 130.0], progress=False)
+    serial = sweep(racket, paper_ball(), x, [10.0, 20.0], f1=[100.0, 130.0], progress=False)
     pool = Recording()
-    parallel = sweep(racket, tennis_ball(), x, [10.0, 20.0], f1=[100.0, 130.0], executor=pool)
+    parallel = sweep(racket, paper_ball(), x, [10.0, 20.0], f1=[100.0, 130.0], executor=pool)
     assert parallel.equals(serial)
     warmed = [size for name, size in pool.calls if name == "_warmed"]
     tasks = [size for name, size in pool.calls if name == "_task"]
@@ -119,18 +119,18 @@ def test_a_process_pool_is_bit_identical_and_one_thread_per_worker():
     racket = CATALOG["pure-drive-2021"].racket()
     x = np.linspace(0.08, 0.26, 300)
     kwargs = dict(offset=0.01, tension=[200.0, 260.0], progress=False)
-    serial = sweep(racket, tennis_ball(), x, [10.0, 25.0, 10.0], **kwargs)
+    serial = sweep(racket, paper_ball(), x, [10.0, 25.0, 10.0], **kwargs)
     swing = Swing(30.0)
     rackets = {"paper": paper_racket(), "pure drive": racket}
-    compared = compare(rackets, tennis_ball(), 0.0, 200, swing=swing, equal_effort=True)
-    face = face_map(racket, tennis_ball(), swing=swing, grid=(21, 11))
+    compared = compare(rackets, paper_ball(), 0.0, 200, swing=swing, equal_effort=True)
+    face = face_map(racket, paper_ball(), swing=swing, grid=(21, 11))
     with executor_for(workers=2) as pool:
         assert pool.submit(_threads_in_a_worker).result() == (1, "1")
-        parallel = sweep(racket, tennis_ball(), x, [10.0, 25.0, 10.0], executor=pool, **kwargs)
+        parallel = sweep(racket, paper_ball(), x, [10.0, 25.0, 10.0], executor=pool, **kwargs)
         compared_parallel = compare(
-            rackets, tennis_ball(), 0.0, 200, swing=swing, equal_effort=True, executor=pool
+            rackets, paper_ball(), 0.0, 200, swing=swing, equal_effort=True, executor=pool
         )
-        face_parallel = face_map(racket, tennis_ball(), swing=swing, grid=(21, 11), executor=pool)
+        face_parallel = face_map(racket, paper_ball(), swing=swing, grid=(21, 11), executor=pool)
     assert parallel.equals(serial)
     assert compared_parallel.equals(compared)
     for name, value in vars(face).items():
@@ -147,7 +147,7 @@ def test_a_dask_cluster_is_bit_identical_repeated_points_included():
     # The same grid point twice (speed 10 twice): with the client's default pure=True, equal
     # arguments would share one task; each task's own key keeps them apart.
     grid = dict(string_stiffness=[3e4, 4e4], swing=None, progress=False)
-    serial = sweep(racket, tennis_ball(), x, [10.0, 20.0, 10.0], **grid)
+    serial = sweep(racket, paper_ball(), x, [10.0, 20.0, 10.0], **grid)
     with (
         distributed.LocalCluster(
             host="127.0.0.1", n_workers=2, threads_per_worker=1, processes=True,
@@ -156,10 +156,10 @@ def test_a_dask_cluster_is_bit_identical_repeated_points_included():
         distributed.Client(cluster) as client,
     ):  # fmt: skip
         parallel = sweep(
-            racket, tennis_ball(), x, [10.0, 20.0, 10.0], executor=client.get_executor(), **grid
+            racket, paper_ball(), x, [10.0, 20.0, 10.0], executor=client.get_executor(), **grid
         )
         with executor_for(scheduler=cluster.scheduler_address) as dask:
-            again = sweep(racket, tennis_ball(), x, [10.0, 20.0, 10.0], executor=dask, **grid)
+            again = sweep(racket, paper_ball(), x, [10.0, 20.0, 10.0], executor=dask, **grid)
     assert parallel.equals(serial)
     assert again.equals(serial)
 
@@ -184,7 +184,7 @@ def test_scheduler_addresses(address):
 
 
 def test_run_impacts_in_this_process_keeps_each_call_whole():
-    calls = [Impacts(paper_racket(), tennis_ball(), np.linspace(0.1, 0.2, n), 10.0) for n in (3, 5)]
+    calls = [Impacts(paper_racket(), paper_ball(), np.linspace(0.1, 0.2, n), 10.0) for n in (3, 5)]
     out = run_calls(calls, impact_columns)
     assert [part["e"].size for part in out] == [3, 5]
 

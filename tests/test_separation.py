@@ -12,10 +12,10 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from racket import Hand, impact, paper_racket, tennis_ball
+from racket import Hand, impact, paper_ball, paper_racket
 from racket.system import held_system
 
-BALL = tennis_ball()
+BALL = paper_ball()
 POSITIONS = np.array([0.0, 0.02, 0.16, 0.30, 0.32])
 HELD = replace(paper_racket("hand-held"), hand=Hand())  # the grip held still (issue 9)
 RACKETS = {

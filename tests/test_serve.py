@@ -93,7 +93,7 @@ def test_centre_of_percussion_is_simulated_and_is_the_formula_for_a_free_racket(
     held one (the hand pushes during the contact)."""
     from dataclasses import replace
 
-    from racket import CATALOG, tennis_ball
+    from racket import CATALOG, paper_ball
     from studies.landmarks import hand_pivot, rigid_centre_of_percussion
     from studies.sweetspots import sweet_spots
 
@@ -101,13 +101,13 @@ def test_centre_of_percussion_is_simulated_and_is_the_formula_for_a_free_racket(
     held = replace(free, support="hand-held")
     cop = {}
     for name, racket in (("free", free), ("held", held)):
-        table = sweet_spots(racket, tennis_ball()).set_index("spot")
+        table = sweet_spots(racket, paper_ball()).set_index("spot")
         cop[name] = table.loc["centre of percussion", "from_tip_cm"] / 100
     formula = rigid_centre_of_percussion(free, hand_pivot(free))
     assert cop["free"] == pytest.approx(formula, abs=1e-10)
     assert abs(cop["held"] - formula) > 0.005
     # and the grip given moves it as the formula says, for the free racket
-    table = sweet_spots(free, tennis_ball(), grip_from_butt=0.07).set_index("spot")
+    table = sweet_spots(free, paper_ball(), grip_from_butt=0.07).set_index("spot")
     formula = rigid_centre_of_percussion(free, free.beam.length - 0.07)
     assert table.loc["centre of percussion", "from_tip_cm"] / 100 == pytest.approx(
         formula, abs=1e-10
@@ -134,8 +134,8 @@ def test_centre_of_percussion_formula_refuses_bad_pivots(pivot, match):
 
 @pytest.mark.parametrize("points", [40.5, 4.7, 10])
 def test_sweet_spots_points_must_be_a_whole_number_in_range(points):
-    from racket import tennis_ball
+    from racket import paper_ball
     from studies.sweetspots import sweet_spots
 
     with pytest.raises(ValueError, match=r"points must be"):
-        sweet_spots(paper_racket(), tennis_ball(), points=points)
+        sweet_spots(paper_racket(), paper_ball(), points=points)

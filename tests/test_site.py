@@ -1,8 +1,11 @@
-"""The documentation site (issue 29): what the build made, read from the built site in site/,
-and the build's own tools (docs/hooks/).
+"""The documentation site (issue 29): what the build made, read from the built site, and the
+build's own tools (docs/hooks/).
 
-The site tests need ``mkdocs build`` to have run (CI builds the site before the tests: see
-.ci/run).  Without a site they are skipped, unless ``CI`` is set: there a missing site fails.
+The site tests need ``mkdocs build`` to have run, and the tools' tests the ``docs`` extra
+(griffe, latex2mathml): without them they are skipped, with the reason.  Which site they read
+is :func:`built_site` of docs/hooks/run.py: the one ``RACKET_IMPACT_SITE`` names (CI sets it
+for its second run of these tests, after building the site: there a missing site fails), else
+site/ when run by hand.  The README's own ``pytest`` (``[test]`` only) skips them.
 """
 
 import importlib.util
@@ -13,13 +16,16 @@ from pathlib import Path
 import pytest
 
 ROOT = Path(__file__).resolve().parent.parent
-SITE = ROOT / "site"
 DOCS = ROOT / "docs"
 ROLE = re.compile(r":(?:py:)?(?:class|func|meth|attr|mod|data|exc|obj|const):`")
 
 
 def _hook(name):
-    """A module of the site's build (docs/hooks/), imported from its file."""
+    """A module of the site's build (docs/hooks/), imported from its file (skipped, with the
+    reason, when a tool it needs is not installed: the ``docs`` extra)."""
+    needs = {"api": "griffe", "griffe_roles": "griffe", "mathml": "latex2mathml"}
+    if name in needs:
+        pytest.importorskip(needs[name], reason=f"docs/hooks/{name}.py needs the docs extra")
     spec = importlib.util.spec_from_file_location(
         f"docs_hook_{name}", DOCS / "hooks" / f"{name}.py"
     )
@@ -30,11 +36,12 @@ def _hook(name):
 
 @pytest.fixture(scope="module")
 def site():
-    if not (SITE / "index.html").exists():
-        if os.environ.get("CI"):
-            pytest.fail("site/ was not built: CI builds it before the tests (.ci/run)")
-        pytest.skip("site/ not built: run `MPLBACKEND=Agg mkdocs build` first")
-    return SITE
+    built = _hook("run").built_site()
+    if built is None or not (built / "index.html").exists():
+        if os.environ.get("RACKET_IMPACT_SITE"):
+            pytest.fail(f"RACKET_IMPACT_SITE={built} holds no built site (.ci/run builds it)")
+        pytest.skip("no built site: run `MPLBACKEND=Agg mkdocs build` first (the docs extra)")
+    return built
 
 
 def _html(path: Path) -> str:
@@ -198,9 +205,9 @@ def test_sphinx_roles_become_optional_cross_references():
 def test_a_short_name_resolves_where_the_docstring_is():
     """An imported name becomes the path of what it imports; a member of the class, its
     path; a name found nowhere stays as written."""
+    roles = _hook("griffe_roles")
     import griffe
 
-    roles = _hook("griffe_roles")
     package = griffe.load("ball", search_paths=[str(ROOT)])
     collision = package["collision"]  # which imports SineLaw from ball.laws
     assert roles.resolver(collision)("SineLaw") == "ball.laws.SineLaw"
@@ -247,13 +254,14 @@ def test_a_run_block_that_fails_fails_the_build(tmp_path):
         run.run_page("```python run\n1 / 0\n```\n", "bad.md")
     with pytest.raises(run.RunError, match="racket-impact only"):
         run.run_page("```console run\n$ rm -rf /\n```\n", "bad.md")
-    results, figures = run.run_page(
+    made = run.run_page(
         "```console run exit=2\n$ racket-impact sweep --speed-mph -10\n```\n"
         "```python run\nimport matplotlib.pyplot as plt\nprint('drawn')\nplt.plot([0, 1])\n```\n",
         "good.md",
     )
-    assert "--speed-mph must be in" in results[0] and "drawn" in results[1]
+    assert "--speed-mph must be in" in made.results[0] and "drawn" in made.results[1]
+    assert "--speed-mph must be in" in made.outputs[0] and made.outputs[1] == "drawn\n"
     assert (
-        list(figures) == ["run/good-2-1-figure-1.png"]
-        and figures["run/good-2-1-figure-1.png"][:4] == b"\x89PNG"
+        list(made.figures) == ["run/good-2-1-figure-1.png"]
+        and made.figures["run/good-2-1-figure-1.png"][:4] == b"\x89PNG"
     )

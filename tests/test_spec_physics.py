@@ -4,11 +4,11 @@ frame and a lower tension."""
 import numpy as np
 import pytest
 
-from racket import CATALOG, from_specs, impact, tennis_ball
+from racket import CATALOG, from_specs, impact, paper_ball
 
 # 321 g, 33 cm, 325 kg cm^2, 645 cm^2; the frame's stiffness given as f1 below
 SHEET = {k: v for k, v in CATALOG["pure-drive-2021"].specs.items() if k != "ra"}
-BALL = tennis_ball()
+BALL = paper_ball()
 
 
 def _e(f1=150.0, tension=55.0, where=("tip", "node", "throat"), speed=20.0):

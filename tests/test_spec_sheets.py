@@ -10,7 +10,7 @@ import pandas as pd
 import pytest
 
 from beam import SWINGWEIGHT_AXIS
-from racket import CATALOG, flex_test_stiffness, from_specs, impact, tennis_ball
+from racket import CATALOG, flex_test_stiffness, from_specs, impact, paper_ball
 from racket.specs import PARTS, fit_profile, spec_sheet
 from racket.specs.catalog import ASSUMED_F1
 from racket.specs.ra import f1_from_ra
@@ -230,7 +230,7 @@ def test_catalogue_e_along_the_strings_moves_less_than_two_hundredths():
     mass model is compared: on the uniform string bed that model had (the membrane's rise
     towards the frame, issue 13, is a change of its own, measured in test_string_face)."""
     before = json.loads(BEFORE.read_text())
-    ball = tennis_ball()
+    ball = paper_ball()
     for name, old in before["rackets"].items():
         # at the f1 the catalogue assumed then (its RA gives another since issue 25)
         sheet = {k: v for k, v in CATALOG[name].specs.items() if k != "ra"}

@@ -169,12 +169,12 @@ def test_lead_tape_follows_the_parallel_axis_rule(where_cm_from_butt):
 
 
 def test_lead_at_twelve_raises_power_near_the_tip():
-    from racket import impact, tennis_ball
+    from racket import impact, paper_ball
 
     racket = from_specs(tension_lb=55, **SHEETS["Pure Drive-like"])
     x = np.array([0.02, 0.15, 0.30])
-    plain = impact(racket, tennis_ball(), x, 20.0)
-    taped = impact(racket.with_mass(0.006, 0.0), tennis_ball(), x, 20.0)
+    plain = impact(racket, paper_ball(), x, 20.0)
+    taped = impact(racket.with_mass(0.006, 0.0), paper_ball(), x, 20.0)
     assert taped.e[0] > plain.e[0] + 0.005  # heavier tip: more effective mass there
     assert taped.effective_mass[0] > plain.effective_mass[0]
 

@@ -44,9 +44,9 @@ def test_a_cold_solver_is_told_apart_from_a_cached_one(empty, tmp_path):
         if empty
         # every kernel run (and cached) once: one impact, and a batch
         else (
-            "import numpy as np; from racket import impact, paper_racket, tennis_ball; "
-            "impact(paper_racket(), tennis_ball(), 0.1, 10.0); "
-            "impact(paper_racket(), tennis_ball(), np.linspace(0.0, 0.32, 200), 10.0); "
+            "import numpy as np; from racket import impact, paper_racket, paper_ball; "
+            "impact(paper_racket(), paper_ball(), 0.1, 10.0); "
+            "impact(paper_racket(), paper_ball(), np.linspace(0.0, 0.32, 200), 10.0); "
         )
     )
     cold = _python(

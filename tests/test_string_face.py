@@ -19,8 +19,8 @@ from racket import (
     Swing,
     from_specs,
     impact,
+    paper_ball,
     paper_racket,
-    tennis_ball,
 )
 from studies.cli import main
 from studies.maps import face_map
@@ -51,7 +51,7 @@ def _on_bed(racket, ball, fraction):
 @pytest.mark.parametrize("support", ["free", "hand-held", "clamped-head"])
 def test_zero_offset_equals_the_one_dimensional_result(pure_drive, support):
     racket = replace(pure_drive, support=support)
-    ball = tennis_ball()
+    ball = paper_ball()
     x = np.linspace(racket.strings.extent[0] + 0.01, racket.strings.extent[1] - 0.01, 9)
     axis = impact(racket, ball, x, SPEED)
     face = impact(racket, ball, x, SPEED, offset=0.0)
@@ -66,9 +66,9 @@ def test_zero_offset_equals_the_one_dimensional_result(pure_drive, support):
 def test_offsets_need_a_racket_with_a_roll_inertia():
     racket = paper_racket()
     with pytest.raises(ValueError, match=r"offset must be 0 on this racket"):
-        impact(racket, tennis_ball(), 0.15, 10.0, offset=0.02)
-    assert impact(racket, tennis_ball(), 0.15, 10.0, offset=0.0).e == pytest.approx(
-        impact(racket, tennis_ball(), 0.15, 10.0).e, abs=1e-12
+        impact(racket, paper_ball(), 0.15, 10.0, offset=0.02)
+    assert impact(racket, paper_ball(), 0.15, 10.0, offset=0.0).e == pytest.approx(
+        impact(racket, paper_ball(), 0.15, 10.0).e, abs=1e-12
     )
 
 
@@ -83,14 +83,14 @@ def test_offsets_need_a_racket_with_a_roll_inertia():
 )
 def test_points_off_the_face_are_refused(pure_drive, position, offset, match):
     with pytest.raises(ValueError, match=match):
-        impact(pure_drive, tennis_ball(), position, 10.0, offset=offset)
+        impact(pure_drive, paper_ball(), position, 10.0, offset=offset)
 
 
 # ----- symmetry, the rigid limit, conservation ------------------------------------------
 @pytest.mark.parametrize("support", ["free", "hand-held"])
 def test_mirrored_impacts_give_the_same_results(pure_drive, support):
     racket = replace(pure_drive, support=support)
-    ball = tennis_ball()
+    ball = paper_ball()
     y = _on_bed(racket, ball, np.array([0.3, 0.7, 1.0]))
     x = np.full(y.size, racket.strings.center + 0.03)
     plus = impact(racket, ball, x, SPEED, offset=y)
@@ -130,7 +130,7 @@ def test_rigid_frame_gives_eq20_with_the_roll_term():
 def test_momentum_and_angular_momenta_are_conserved(pure_drive, s, t, speed):
     """The ball's impulse J equals the free racket's momentum M v_cm, its moment about the
     centre of mass I_cm omega and about the long axis I_roll roll_rate, to 1e-9."""
-    racket, ball = pure_drive, tennis_ball()
+    racket, ball = pure_drive, paper_ball()
     half_length = 0.5 * (racket.strings.extent[1] - racket.strings.extent[0]) - ball.radius
     x = racket.strings.center + s * half_length
     half_chord = (0.5 * racket.strings.full_width - ball.radius) * np.sqrt(1 - s**2)
@@ -149,7 +149,7 @@ def test_momentum_and_angular_momenta_are_conserved(pure_drive, s, t, speed):
 def test_energy_budget_closes_with_the_torsion_modes(pure_drive, support):
     """The residual of the budget (torsion modes in the vibration energy and the damping)
     is the time step's error: small, and falling as dt^2."""
-    racket, ball = replace(pure_drive, support=support), tennis_ball()
+    racket, ball = replace(pure_drive, support=support), paper_ball()
     y = _on_bed(racket, ball, np.array([0.5, 1.0]))
     x = np.full(2, racket.strings.center)
     residuals = []
@@ -223,7 +223,7 @@ def test_e_off_the_axis_converges_in_the_torsion_modes(pure_drive):
 
     def e(count):
         beam = replace(pure_drive.beam, n_torsion_modes=count)
-        return impact(replace(pure_drive, beam=beam), tennis_ball(), xs.ravel(), SPEED,
+        return impact(replace(pure_drive, beam=beam), paper_ball(), xs.ravel(), SPEED,
                       offset=ys.ravel()).e  # fmt: skip
 
     converged, levels = e(48), [3, 6, 12]
@@ -231,7 +231,7 @@ def test_e_off_the_axis_converges_in_the_torsion_modes(pure_drive):
     order = -np.polyfit(np.log(levels), np.log(rms), 1)[0]
     assert 2.2 < order < 3.6, rms
     assert pure_drive.beam.n_torsion_modes >= 12
-    assert np.abs(impact(pure_drive, tennis_ball(), xs.ravel(), SPEED, offset=ys.ravel()).e
+    assert np.abs(impact(pure_drive, paper_ball(), xs.ravel(), SPEED, offset=ys.ravel()).e
                   - converged).max() < 1e-5  # fmt: skip
 
 
@@ -265,7 +265,7 @@ def test_off_axis_power_falls_as_twu_measures_and_lead_at_3_and_9_restores_it(tw
     """TWU ("Racquet Control"): e_A falls from about 0.4 at the centre to 0.1-0.2 at 3 and
     9 o'clock near the frame; 26.8 g of lead at 3 and 9 raises the off-axis value (to about
     0.3) and the sweet area."""
-    ball = tennis_ball()
+    ball = paper_ball()
     found = {}
     for name, racket in (
         ("plain", twu_racket),
@@ -284,7 +284,7 @@ def test_off_axis_power_falls_as_twu_measures_and_lead_at_3_and_9_restores_it(tw
 
 
 def test_face_map_is_symmetric_and_its_sweet_area_lies_inside_the_face(pure_drive):
-    ball = tennis_ball()
+    ball = paper_ball()
     result = face_map(pure_drive, ball, SPEED, swing=Swing(20.0))
     assert result.e_A.shape == (15, 9)
     assert result.e_A == pytest.approx(result.e_A[:, ::-1], rel=1e-12)
@@ -309,7 +309,7 @@ def test_face_map_is_symmetric_and_its_sweet_area_lies_inside_the_face(pure_driv
 def test_face_map_plot_and_cli(tmp_path, capsys, pure_drive):
     from studies.plots import plot_face_map
 
-    ax = plot_face_map(face_map(pure_drive, tennis_ball(), SPEED), field="roll_rate")
+    ax = plot_face_map(face_map(pure_drive, paper_ball(), SPEED), field="roll_rate")
     assert ax.get_ylim()[0] > ax.get_ylim()[1]  # tip up
     files = ["--out", str(tmp_path / "m.csv"), "--plot", str(tmp_path / "m.png")]
     status = main(["map", "--grid", "9", "5", *files])
@@ -343,7 +343,7 @@ def test_toml_gives_the_torsion_the_bed_profile_and_a_profile_roll_inertia(tmp_p
         "[racket.strings]\nstiffness = 3e4\nextent = [0.0, 0.3]\n"
     )  # fmt: skip
     racket = load_racket(str(profile))
-    result = impact(racket, tennis_ball(), 0.15, 10.0, offset=0.05)
+    result = impact(racket, paper_ball(), 0.15, 10.0, offset=0.05)
     assert result.roll_rate > 0 and racket.beam.roll_modes.count == 1 + DEFAULT_TORSION_MODES
     bad = tmp_path / "bad.toml"
     bad.write_text("[racket]\nroll_inertia_per_length = [1e-3]\n")
@@ -351,7 +351,7 @@ def test_toml_gives_the_torsion_the_bed_profile_and_a_profile_roll_inertia(tmp_p
 
 
 def test_bad_twisting_frames_and_one_sided_masses_are_refused(pure_drive):
-    ball = tennis_ball()
+    ball = paper_ball()
     with pytest.raises(ValueError, match=r"position must be finite"):
         impact(pure_drive, ball, np.nan, 10.0, offset=0.0)
     with pytest.raises(ValueError, match=r"roll_inertia_per_length must be > 0 on every segment"):
@@ -373,7 +373,7 @@ def test_bad_twisting_frames_and_one_sided_masses_are_refused(pure_drive):
 def test_face_map_landmarks_come_from_its_one_impact_call(pure_drive, grid):
     """Odd or even grids: the string centre, 3 o'clock and the centre of percussion are the
     same points (the centre and side points on the grid or appended to its impact call)."""
-    ball = tennis_ball()
+    ball = paper_ball()
     result = face_map(pure_drive, ball, SPEED, grid=grid)
     side = 0.5 * pure_drive.strings.full_width - ball.radius
     single = impact(pure_drive, ball, pure_drive.strings.center, SPEED, offset=[0.0, side])
@@ -392,12 +392,12 @@ def test_face_map_centre_of_percussion_of_a_held_racket_is_the_simulated_one(pur
     # the grip held still: its hand velocity is nearly linear in the impact point, so that
     # the rows' interpolation meets it to 1e-3 (a hand with mass bends it: 7e-3)
     held = replace(pure_drive, support="hand-held", hand=Hand())
-    result = face_map(held, tennis_ball(), SPEED)
+    result = face_map(held, paper_ball(), SPEED)
     formula = rigid_centre_of_percussion(held, hand_pivot(held))
     assert abs(result.center_of_percussion - formula) > 0.005  # the hand pushes
     # where the hand's rigid-body velocity after the impact is zero (within the rows'
     # linear interpolation)
-    hit = impact(held, tennis_ball(), result.center_of_percussion, SPEED)
+    hit = impact(held, paper_ball(), result.center_of_percussion, SPEED)
     hand = hit.v_cm + (held.beam.center_of_mass - hand_pivot(held)) * hit.omega
     assert abs(hand) < 1e-3 * hit.v_cm
 
@@ -405,4 +405,4 @@ def test_face_map_centre_of_percussion_of_a_held_racket_is_the_simulated_one(pur
 @pytest.mark.parametrize("grid", [(15.5, 9), (15, 8.2)])
 def test_face_map_grids_must_be_whole(pure_drive, grid):
     with pytest.raises(ValueError, match=r"grid\[[01]\] must be a whole number in \[4, 1000\]"):
-        face_map(pure_drive, tennis_ball(), SPEED, grid=grid)
+        face_map(pure_drive, paper_ball(), SPEED, grid=grid)

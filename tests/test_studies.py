@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from beam.beam import DEFAULT_MODES
-from racket import impact, paper_racket, tennis_ball
+from racket import impact, paper_ball, paper_racket
 from studies.paper import paper_table
 from studies.serve import serve_table, serve_what_if
 from studies.sweeps import COLUMNS, sweep
@@ -12,9 +12,9 @@ from studies.sweeps import COLUMNS, sweep
 
 def test_sweep_columns_and_values_match_impact():
     x = np.linspace(0.0, 0.32, 11)
-    table = sweep(paper_racket(), tennis_ball(), x, 10.0, progress=False)
+    table = sweep(paper_racket(), paper_ball(), x, 10.0, progress=False)
     assert list(table.columns) == list(COLUMNS)
-    direct = impact(paper_racket(), tennis_ball(), x, 10.0)
+    direct = impact(paper_racket(), paper_ball(), x, 10.0)
     assert table["e"].to_numpy() == pytest.approx(direct.e)
     assert table["position_from_tip_m"].to_numpy() == pytest.approx(x)
 
@@ -22,7 +22,7 @@ def test_sweep_columns_and_values_match_impact():
 def test_sweep_grid_adds_one_column_per_varying_parameter():
     table = sweep(
         paper_racket(),
-        {"normal": tennis_ball()},
+        {"normal": paper_ball()},
         np.linspace(0.05, 0.3, 4),
         speed=[10.0, 30.0],
         string_stiffness=[3e4, 5e4],
@@ -48,7 +48,7 @@ def test_with_f1_scales_frequencies_and_keeps_shapes():
 
 
 def test_serve_two_ways_and_paper_numbers():
-    table = serve_table(paper_racket(), tennis_ball(), racket_speed=40.0)
+    table = serve_table(paper_racket(), paper_ball(), racket_speed=40.0)
     # The dc collision depends only on the relative motion: Eq. 22 with the simulated e and
     # m2 is the swung racket's answer.
     assert table["serve_simulated_m_s"].to_numpy() == pytest.approx(
@@ -61,7 +61,7 @@ def test_serve_two_ways_and_paper_numbers():
 
 def test_serve_what_if_stiffer_strings_cost_more():
     table = serve_what_if(
-        paper_racket(), tennis_ball(), string_stiffness=[2e4, 4e4, 8e4], ball_stiffness=[3e4, 6e4]
+        paper_racket(), paper_ball(), string_stiffness=[2e4, 4e4, 8e4], ball_stiffness=[3e4, 6e4]
     )
     strings = table[table.varied == "strings"]["reduction_simulated_percent"]
     assert np.all(np.diff(strings.to_numpy()) > 0)  # paper: higher tension, larger reduction
@@ -91,10 +91,10 @@ def test_sweep_on_a_process_pool_matches_the_serial_sweep(monkeypatch):
     # 40 points: the serial sweep runs the kernel on threads before the pool forks.
     x = np.linspace(0.0, 0.32, 40)
     kwargs = dict(f1=[120.0, 150.0], string_stiffness=[3e4, 4e4], progress=False)
-    serial = sweep(racket, tennis_ball(), x, [10.0, 20.0], **kwargs)
+    serial = sweep(racket, paper_ball(), x, [10.0, 20.0], **kwargs)
     # "fork" (Linux's default before Python 3.14): the kernel's threads end with each call,
     # so a forked worker starts clean (numba's own parallel threads did not survive a fork).
     fork = multiprocessing.get_context("fork")
     with ProcessPoolExecutor(max_workers=2, mp_context=fork) as pool:
-        parallel = sweep(racket, tennis_ball(), x, [10.0, 20.0], executor=pool, **kwargs)
+        parallel = sweep(racket, paper_ball(), x, [10.0, 20.0], executor=pool, **kwargs)
     assert parallel.equals(serial)

@@ -6,7 +6,7 @@ import pytest
 
 from ball import Ball, PowerLawHysteresis, serve_speed
 from common.units import MPH
-from racket import CATALOG, Swing, impact, tennis_ball
+from racket import CATALOG, Swing, impact, paper_ball
 from studies.serve import head_speed_for, serve_table
 from studies.sweeps import sweep
 
@@ -18,7 +18,7 @@ def racket():
 
 @pytest.mark.parametrize(
     "ball",
-    [tennis_ball(), Ball(0.057, PowerLawHysteresis.with_cor(3e5, 1.5, 0.75), 0.033)],
+    [paper_ball(), Ball(0.057, PowerLawHysteresis.with_cor(3e5, 1.5, 0.75), 0.033)],
     ids=["linear", "power-law"],
 )
 @pytest.mark.parametrize("speed", [0.0, 10.0])
@@ -45,19 +45,19 @@ def test_a_swing_agrees_with_eq22_and_its_e_A_is_the_racket_at_rest(racket):
     swing = Swing(28.0)
     x = np.array([0.08, racket.strings.center, 0.25])
     v = swing.point_speeds(racket, x)
-    served = impact(racket, tennis_ball(), x, 0.0, **swing.impact_kwargs(racket, x))
+    served = impact(racket, paper_ball(), x, 0.0, **swing.impact_kwargs(racket, x))
     for i in range(x.size):
-        rest = impact(racket, tennis_ball(), x[i], v[i])
-        eq22 = serve_speed(rest.e, tennis_ball().mass, rest.effective_mass, v[i])
+        rest = impact(racket, paper_ball(), x[i], v[i])
+        eq22 = serve_speed(rest.e, paper_ball().mass, rest.effective_mass, v[i])
         assert served.ball_rebound[i] == pytest.approx(eq22, rel=1e-9)
-    rally = impact(racket, tennis_ball(), x, 8.0, **swing.impact_kwargs(racket, x))
-    rest = [impact(racket, tennis_ball(), x[i], 8.0 + v[i]).e_A for i in range(x.size)]
+    rally = impact(racket, paper_ball(), x, 8.0, **swing.impact_kwargs(racket, x))
+    rest = [impact(racket, paper_ball(), x[i], 8.0 + v[i]).e_A for i in range(x.size)]
     assert rally.e_A == pytest.approx(rest, abs=1e-9)
 
 
 def test_serve_is_one_swing_and_the_tip_ward_point_is_faster(racket):
     points = [racket.strings.center, racket.strings.center - 0.05]
-    table = serve_table(racket, tennis_ball(), points, 100 * MPH, zero_cor=False)
+    table = serve_table(racket, paper_ball(), points, 100 * MPH, zero_cor=False)
     centre, tipward = table.to_dict("records")
     assert centre["point_speed_mph"] == pytest.approx(100.0, rel=1e-12)
     ratio = (0.05 + racket.beam.length + 0.05 - racket.strings.center) / (
@@ -72,8 +72,8 @@ def test_serve_is_one_swing_and_the_tip_ward_point_is_faster(racket):
 
 @pytest.mark.parametrize("target_mph", [90.0, 125.0])
 def test_the_head_speed_for_a_target_serve_meets_it(racket, target_mph):
-    head = head_speed_for(racket, tennis_ball(), target_mph * MPH, racket.strings.center - 0.03)
-    table = serve_table(racket, tennis_ball(), racket.strings.center - 0.03, head, zero_cor=False)
+    head = head_speed_for(racket, paper_ball(), target_mph * MPH, racket.strings.center - 0.03)
+    table = serve_table(racket, paper_ball(), racket.strings.center - 0.03, head, zero_cor=False)
     assert abs(table["serve_simulated_mph"].iloc[0] - target_mph) < 0.01
 
 
@@ -95,16 +95,16 @@ def test_a_held_racket_is_not_swung(racket):
 
     held = replace(racket, support="hand-held")
     with pytest.raises(ValueError, match="swing_speed must be 0 for a hand-held racket"):
-        sweep(held, tennis_ball(), [0.1, 0.2], 10.0, swing=Swing(30.0), progress=False)
+        sweep(held, paper_ball(), [0.1, 0.2], 10.0, swing=Swing(30.0), progress=False)
 
 
 def test_the_head_speed_for_a_target_near_the_tip_stays_in_range(racket):
     """Near the tip the point moves faster than the head: the search keeps it in range."""
-    head = head_speed_for(racket, tennis_ball(), 50 * MPH, racket.strings.extent[0])
-    table = serve_table(racket, tennis_ball(), racket.strings.extent[0], head, zero_cor=False)
+    head = head_speed_for(racket, paper_ball(), 50 * MPH, racket.strings.extent[0])
+    table = serve_table(racket, paper_ball(), racket.strings.extent[0], head, zero_cor=False)
     assert abs(table["serve_simulated_mph"].iloc[0] - 50.0) < 0.01
     with pytest.raises(ValueError, match=r"target ball speed must be in \("):
-        head_speed_for(racket, tennis_ball(), 299.0, racket.strings.extent[0])
+        head_speed_for(racket, paper_ball(), 299.0, racket.strings.extent[0])
 
 
 def test_a_swung_sweeps_vibration_fraction_is_the_racket_at_rest(racket):
@@ -113,10 +113,10 @@ def test_a_swung_sweeps_vibration_fraction_is_the_racket_at_rest(racket):
     from studies.tables import impact_table
 
     swing, x = Swing(25.0), np.array([0.05, 0.2])
-    swung = impact_table(impact(racket, tennis_ball(), x, 5.0, **swing.impact_kwargs(racket, x)))
+    swung = impact_table(impact(racket, paper_ball(), x, 5.0, **swing.impact_kwargs(racket, x)))
     v = swing.point_speeds(racket, x)
     for i in range(x.size):
-        rest = impact_table(impact(racket, tennis_ball(), x[i], 5.0 + v[i]))
+        rest = impact_table(impact(racket, paper_ball(), x[i], 5.0 + v[i]))
         assert swung["vibration_energy_fraction"].iloc[i] == pytest.approx(
             rest["vibration_energy_fraction"].iloc[0], rel=1e-9
         )
@@ -143,7 +143,7 @@ def test_the_feel_is_followed_past_the_contact(racket):
 
     soft = replace(racket, strings=replace(racket.strings, stiffness=1e4))
     with pytest.raises(ValueError, match=r"duration must be longer than the contact, 7"):
-        hand_feel(soft, tennis_ball(), racket.strings.center, 20.0, duration=0.005)
+        hand_feel(soft, paper_ball(), racket.strings.center, 20.0, duration=0.005)
 
 
 @pytest.mark.parametrize(
@@ -162,7 +162,7 @@ def test_the_head_speed_target_is_checked_before_any_impact(racket, target, matc
 
     monkeypatch.setattr(studies.serve, "impact", no_impact)
     with pytest.raises(ValueError, match=match):
-        head_speed_for(racket, tennis_ball(), target)
+        head_speed_for(racket, paper_ball(), target)
 
 
 def test_the_head_speed_search_runs_only_swung_impacts(racket, monkeypatch):
@@ -176,5 +176,5 @@ def test_the_head_speed_search_runs_only_swung_impacts(racket, monkeypatch):
         return impact(*args, **kwargs)
 
     monkeypatch.setattr(studies.serve, "impact", counted)
-    head_speed_for(racket, tennis_ball(), 100 * MPH)
+    head_speed_for(racket, paper_ball(), 100 * MPH)
     assert speeds and all(s == 0.0 for s in speeds)

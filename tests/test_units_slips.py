@@ -7,8 +7,16 @@ import re
 
 import pytest
 
-from common.checks import GRAMS_AS_KG, MPH_AS_M_S, OZ_AS_KG, in_range, slip_hints
-from common.units import IN2, INCH, LB, MPH, OUNCE
+from common.checks import (
+    GRAMS_AS_KG,
+    KMH_AS_M_S,
+    KMH_AS_MPH,
+    MPH_AS_M_S,
+    OZ_AS_KG,
+    in_range,
+    slip_hints,
+)
+from common.units import IN2, INCH, KMH, LB, MPH, OUNCE
 from studies.cli import main
 
 SHEET = {
@@ -42,17 +50,18 @@ CASES = [
     (["serve", "--racket-speed", "110"], "warn", "mph", "110 mph", 110 * MPH, "m/s"),
     (["sweep", "--speed", "120", "--points", "3"], "warn", "mph", "120 mph", 120 * MPH, "m/s"),
     (["feel", "--speed", "90"], "warn", "mph", "90 mph", 90 * MPH, "m/s"),
-    (["serve", "--position", "17"], "refuse", "cm", "17", 0.17, "m from the tip"),
-    (["feel", "--position", "17"], "refuse", "cm", "17", 0.17, "m from the tip"),
-    (["sweep", "--from", "5"], "refuse", "cm", "5", 0.05, "m from the tip"),
-    (["sweep", "--racket", "pure-drive-2021", "--offset", "2", "--points", "3"], "refuse",
-     "cm", "2", 0.02, "m from the long axis"),
-    (["feel", "--offset", "3"], "refuse", "cm", "3", 0.03, "m from the long axis"),
+    (["sweep", "--speed", "150", "--points", "3"], "warn", "km/h", "150 km/h", 150 * KMH, "m/s"),
+    (["serve", "--racket-speed-mph", "180"], "warn", "km/h", "180 km/h", 180 * KMH / MPH, "mph"),
+    (["serve", "--target-ball-speed-mph", "250"], "warn", "km/h", "250 km/h", 250 * KMH / MPH,
+     "mph"),
+    (["serve", "--position", "0.17"], "refuse", "m", "0.17 m", 17.0, "cm from the tip"),
+    (["feel", "--position", "0.17"], "refuse", "m", "0.17 m", 17.0, "cm from the tip"),
+    (["sweep", "--from", "0.05"], "refuse", "m", "0.05 m", 5.0, "cm from the tip"),
     (["sweep", "--tension-lb", "245", "--points", "3"], "refuse", "newtons", "245 N",
      245 / LB, "lb"),
     (["compare", "--tension-lb", "25", "--points", "3"], "warn", "kg", "25 kg", 25 * 9.80665 / LB,
      "lb"),
-    (["serve", "--pivot-cm-from-butt", "-0.05"], "warn", "m", "-0.05 m", -5.0, "cm"),
+    (["serve", "--pivot-cm-from-tip", "0.5"], "refuse", "m", "0.5 m", 50.0, "cm"),
     (["feel", "--duration-ms", "0.05"], "refuse", "seconds", "0.05 s", 50.0, "ms"),
     (["sweep", "--string-stiffness", "40", "--points", "3"], "refuse", "kN/m", "40", 40000.0,
      "N/m"),
@@ -70,6 +79,7 @@ CASES = [
     ("sheet", "length_m", "27", "refuse", "inches", "27 in", 27 * INCH, "m"),
     ("sheet", "tension_n", "55", "refuse", "lb", "55 lb", 55 * LB, "N"),
     ("sheet", "tension_lb", "240", "refuse", "newtons", "240 N", 240 / LB, "lb"),
+    ("sheet", "tension_lb", "25", "warn", "kg", "25 kg", 25 * 9.80665 / LB, "lb"),
     ("sheet", "string_stiffness_n_m", "30", "refuse", "kN/m", "30", 30000.0, "N/m"),
     ("toml", "[racket]\nmass = 11.3\n", None, "refuse", "ounces", "11.3 oz", 11.3 * OUNCE, "kg"),
     ("toml", "[ball]\nmass = 2\nlaw = 'linear-spring'\nk = 4e4\n", None, "refuse", "ounces",
@@ -103,7 +113,7 @@ def test_a_unit_slip_names_the_likely_unit_and_the_value_converted(case, tmp_pat
     except SystemExit as done:
         status = done.code
     out, err = capsys.readouterr()
-    asked = "m" if unit.startswith("m from") else unit
+    asked = unit.split(" from")[0]  # "cm from the tip": cm
     hint = f"{likely} typed as {asked}? {typed} would be {_said(converted)} {unit}"
     if how == "refuse":
         assert status == 2 and out == ""
@@ -121,6 +131,7 @@ def test_the_slips_are_the_units_factors():
         "mph typed as m/s? 100 mph would be 44.7 m/s"
     )
     assert MPH_AS_M_S[0] == MPH and OZ_AS_KG[0] == OUNCE
+    assert KMH_AS_M_S[0] == KMH and KMH_AS_MPH[0] == pytest.approx(1.609344**-1)
     # a value two slips could explain names both
     with pytest.raises(ValueError) as err:
         in_range("[ball] mass", 2, 0.001, 1.0, "kg", slips=(GRAMS_AS_KG, OZ_AS_KG))

@@ -8,6 +8,8 @@ test is a strict expected failure whose reason is the measured gap; nothing was 
 move it in (the docs page, ``docs/validation.md``, says what would close each gap).
 """
 
+import re
+
 import pytest
 
 from studies.validation import COLUMNS, KINDS, comparisons, summary, validation_table
@@ -129,3 +131,23 @@ def test_the_savage_rows_name_their_racket_and_grip():
     for name, quantity in savage.items():
         _, racket, grip = name.split("-")
         assert f"racket {racket}, {grip} grip" in quantity, quantity
+
+
+def test_every_row_names_its_racket_and_the_printed_table_its_band(table, capsys, monkeypatch):
+    """Issue 33: no two rows read alike (racket, strings and tension, support or grip in each
+    racket's row), and the printed table shows the band each value must fall in."""
+    import studies.validation as validation
+    from studies.cli import main
+
+    assert table["quantity"].is_unique
+    for name, c in ITEMS.items():
+        if name.startswith(("hamori", "twu", "typical", "grabiner")):
+            assert re.search(r"(Pure Drive|AeroPro Drive|Pro Staff \d+)", c.quantity), c.quantity
+            assert re.search(r"\d+ lb", c.quantity), c.quantity
+            assert re.search(r"grip|hand-held|pinned", c.quantity), c.quantity
+    monkeypatch.setattr(validation, "validation_table", lambda: table)
+    assert main(["validate"]) == 0
+    printed = capsys.readouterr().out
+    assert "band" in printed.splitlines()[0]
+    for low, high in zip(table["low"], table["high"], strict=True):
+        assert f"{low:.4g}-{high:.4g}" in printed

@@ -20,13 +20,27 @@ the open matplotlib figures of a Python block), as generated files of the site. 
 that exits with another status than expected (``exit=2`` after ``run``; 0 by default) or a
 block that raises fails the build, with what it printed.
 
+**Numbers in the prose come from the outputs.** The prose quotes what a block printed with a
+marker the build fills: ``{{ output: TEXT }}`` becomes the number printed right after the first
+``TEXT`` in the page's outputs (spaces and line breaks count as one space), so "e peaks at
+{{ output: largest e = }}" reads "e peaks at 0.8872"; ``{{ code: module.NAME }}`` (or
+``module.NAME:FORMAT``, ``:.3g``) becomes the value of a constant of the code: a default, or a
+published number that the code holds beside its source.  A marker that finds nothing fails the
+build.  On the pages :data:`CHECKED`, a number of the prose (not in code, a marker, a
+link's address or an HTML comment) that also appears in one of the page's outputs and has a
+decimal point or at least three digits (a year, 1900-2099, aside) fails the build
+(:func:`copied_numbers`): it is a hand-typed copy of an output, stale as soon as the output
+changes.  A number the page's blocks typed (a command's flag, a Python argument, a value of an
+example file they read) is an input, not a copy.
+
 The blocks run in ``on_files`` (the figures must be files of the site before the pages are
-read, so that the strict build checks their links); ``on_page_markdown`` puts the results in.
+read, so that the strict build checks their links); ``on_page_markdown`` puts the results and
+the quoted numbers in.
 The output is wrapped in ``<div class="run-output">``, which ``tests/test_site.py`` looks for.
 The build writes ``run-manifest.json`` into the site: for each page it ran, the fingerprint of
 the page and of the code it ran (:func:`fingerprint`), so that ``tests/test_docs.py`` knows
 which pages the site's build has already run as they are now, and runs the others itself
-(:func:`run_page`, which needs no MkDocs).
+(:func:`run_page`, which needs no MkDocs); :func:`built_site` says which site the tests read.
 """
 
 from __future__ import annotations
@@ -41,6 +55,7 @@ import shlex
 import tempfile
 import traceback
 from pathlib import Path
+from typing import NamedTuple
 
 ROOT = Path(__file__).resolve().parents[2]
 BLOCK = re.compile(
@@ -48,15 +63,53 @@ BLOCK = re.compile(
 )
 IMAGES = (".png", ".svg")
 COLUMNS = "100"  # the width of --help, as a terminal of 100 columns shows it
-_RESULTS: dict[str, list[str]] = {}  # page -> the Markdown each of its blocks becomes
-_CACHE: dict[tuple[str, str], tuple[list[str], dict[str, bytes]]] = {}  # for mkdocs serve
+_RESULTS: dict[str, Run] = {}  # page -> what its blocks made
+_CACHE: dict[tuple[str, str], Run] = {}  # for mkdocs serve
 _MANIFEST: dict[str, str] = {}  # page -> fingerprint, of the pages this build ran
 MANIFEST = "run-manifest.json"
 CODE = ("ball", "beam", "common", "racket", "studies", "examples")  # what the blocks run
+CHECKED = ("guide/", "index.md", "python.md", "cli.md")  # pages whose prose may copy no output
+SITE_VARIABLE = "RACKET_IMPACT_SITE"  # the built site the tests read (built_site)
+MARKER = re.compile(r"\{\{\s*(?P<kind>[a-z]+):\s*(?P<what>.*?)\s*\}\}")
+NUMBER = re.compile(r"(?<![\w.])\d+(?:,\d{3})*(?:\.\d+)?(?:[eE][-+]?\d+)?(?![\w]|\.\d)")
+FENCE = re.compile(r"^[ \t]*(?P<fence>`{3,}|~{3,}).*?^[ \t]*(?P=fence)`*~*[ \t]*$", re.M | re.S)
+NOT_PROSE = re.compile(
+    r"<!--.*?-->"  # an HTML comment
+    r"|(?P<ticks>`+).+?(?P=ticks)"  # inline code
+    r"|\]\([^)]*\)"  # a link's address
+    r"|<[^>\n]*>"  # an HTML tag
+    r"|\b[a-z]+://\S+",  # an address in the text
+    re.S,
+)
 
 
 class RunError(Exception):
-    """A block failed: a command exited with another status than expected, or Python raised."""
+    """A block failed: a command exited with another status than expected, or Python raised;
+    or the prose copies an output or quotes one that is not there.
+    """
+
+
+class Run(NamedTuple):
+    """What a page's blocks made."""
+
+    results: list[str]
+    """The Markdown each block becomes."""
+    figures: dict[str, bytes]
+    """The figures, by the name (relative to the page's directory) the Markdown links them by."""
+    outputs: list[str]
+    """What each command and each Python block printed."""
+    inputs: str
+    """What the blocks typed: their commands and code, and the example files they name."""
+
+
+def built_site() -> Path | None:
+    """The built site the tests read: the directory ``RACKET_IMPACT_SITE`` names (CI sets it for
+    its run of the tests that need the site, after building it there); else none under CI (the
+    README's own ``pytest``, run before any build); else site/ (a build by hand).
+    """
+    if os.environ.get(SITE_VARIABLE):
+        return Path(os.environ[SITE_VARIABLE])
+    return None if os.environ.get("CI") else ROOT / "site"
 
 
 def fingerprint(text: str) -> str:
@@ -191,20 +244,116 @@ def load_kernel() -> None:
         load()
 
 
-def run_page(text: str, page: str) -> tuple[list[str], dict[str, bytes]]:
-    """Run every block of a page: the Markdown of each block and the figures, by the name
-    (relative to the page's directory) the Markdown links them by.
+def _value(what: str) -> str:
+    """The value of a constant of the code, ``module.NAME`` or ``module.NAME:FORMAT``
+    (``ball.catalog.ITF_DROP_SPEED:.3g``), as the prose shows it.
     """
+    import importlib
+
+    name, _, spec = what.partition(":")
+    parts = name.split(".")
+    for split in range(len(parts) - 1, 0, -1):
+        try:
+            value = importlib.import_module(".".join(parts[:split]))
+        except ImportError:
+            continue
+        for attribute in parts[split:]:
+            if not hasattr(value, attribute):
+                break
+            value = getattr(value, attribute)
+        else:
+            if isinstance(value, int | float) and not isinstance(value, bool):
+                return format(value, spec or "g")
+            raise RunError(f"{{{{ code: {what} }}}} is a {type(value).__name__}, not a number")
+    raise RunError(f"{{{{ code: {what} }}}}: no such constant in the code")
+
+
+def _quoted(match: re.Match, printed: str) -> str:
+    """The text a marker becomes (``printed``: the page's outputs, spaces collapsed)."""
+    kind, what = match["kind"], match["what"]
+    if kind == "code":
+        return _value(what)
+    if kind != "output":
+        raise RunError(
+            f"unknown marker {match[0]!r}: use {{{{ output: TEXT }}}} or {{{{ code: NAME }}}}"
+        )
+    after = " ".join(what.split())
+    found = re.search(re.escape(after) + r"\s*(-?" + NUMBER.pattern + ")", printed)
+    if not found:
+        raise RunError(f"{match[0]!r}: no output of the page prints a number after {after!r}")
+    return found[1]
+
+
+def quote(text: str, outputs: list[str]) -> str:
+    """``text`` with its markers (``{{ output: TEXT }}``, ``{{ code: NAME }}``) filled."""
+    printed = " ".join(" ".join(outputs).split())
+    return MARKER.sub(lambda match: _quoted(match, printed), text)
+
+
+def prose(text: str) -> str:
+    """The prose of a page: its text but the fenced blocks, the markers, inline code, links'
+    addresses, HTML tags and comments, and addresses.
+    """
+    return NOT_PROSE.sub(" ", MARKER.sub(" ", FENCE.sub(" ", text)))
+
+
+def counted(number: str) -> bool:
+    """Whether a number of the prose may be a copy of an output: it has a decimal point or at
+    least three digits, and is not a year (1900-2099).
+    """
+    digits = number.replace(",", "").split("e")[0].split("E")[0]
+    if re.fullmatch(r"(?:19|20)\d\d", digits):
+        return False
+    return "." in digits or len(digits.lstrip("0")) >= 3
+
+
+def copied_numbers(text: str, outputs: list[str], inputs: str = "") -> list[str]:
+    """The numbers of ``text``'s prose that are copies of ``outputs`` (see :func:`counted`),
+    each with the prose around it; the numbers of ``inputs`` (what the blocks typed) are not.
+    """
+    printed = {n.replace(",", "") for n in NUMBER.findall("\n".join(outputs))}
+    printed -= {n.replace(",", "") for n in NUMBER.findall(inputs)}
+    words = prose(text)
+    return [
+        f"{m[0]}: ... {' '.join(words[max(0, m.start() - 50) : m.end() + 20].split())} ..."
+        for m in NUMBER.finditer(words)
+        if counted(m[0]) and m[0].replace(",", "") in printed
+    ]
+
+
+def check(text: str, page: str, run: Run) -> None:
+    """Fail (:class:`RunError`) on a marker that finds nothing and, on the pages
+    :data:`CHECKED`, on a number of the prose copied from an output.
+    """
+    quote(text, run.outputs)
+    if page.startswith(CHECKED):
+        copies = copied_numbers(text, run.outputs, run.inputs)
+        if copies:
+            raise RunError(
+                f"{page}: the prose copies numbers of the page's output (quote them with "
+                "{{ output: TEXT }}, or leave them out):\n  " + "\n  ".join(copies)
+            )
+
+
+def _typed(body: str) -> str:
+    """What a block typed: its text and that of the example files it names."""
+    files = [ROOT / name for name in re.findall(r"examples/[\w.-]+", body)]
+    return "\n".join([body, *(f.read_text() for f in files if f.is_file())])
+
+
+def run_page(text: str, page: str) -> Run:
+    """Run every block of a page, then :func:`check` its prose."""
     load_kernel()
     stem = Path(page).with_suffix("").as_posix().replace("/", "-")
     figures: dict[str, bytes] = {}
-    results = []
+    results, outputs, inputs = [], [], []
     with tempfile.TemporaryDirectory(prefix="racket-impact-docs-") as scratch:
         directory = Path(scratch)
         (directory / "examples").symlink_to(ROOT / "examples")
         for number, match in enumerate(BLOCK.finditer(text), start=1):
             options = parse_options(match["options"])
             body = match["body"]
+            inputs.append(_typed(body))
             where = f"{page}, run block {number}"
             links = []
             if match["lang"] == "console":
@@ -219,11 +368,13 @@ def run_page(text: str, page: str) -> tuple[list[str], dict[str, bytes]]:
                             f"{where}: `{shown}` exited with {status}, not {expected}:\n{output}"
                         )
                     session.append(f"$ {shown}\n{output}".rstrip())
+                    outputs.append(output)
                     for path in _new_images(directory, before):
                         links.append((path.name, path.read_bytes()))
                 parts = [_fence("console", "\n".join(session))]
             else:
                 output, pngs = run_python(body, directory, where)
+                outputs.append(output)
                 parts = [_fence("python", body)]
                 if output.strip():
                     parts.append(_fence("text", output, title="output"))
@@ -233,7 +384,9 @@ def run_page(text: str, page: str) -> tuple[list[str], dict[str, bytes]]:
                 figures[uri] = content
                 parts.append(f"![{name}]({uri})\n")
             results.append(_wrap(parts))
-    return results, figures
+    run = Run(results, figures, outputs, "\n".join(inputs))
+    check(text, page, run)
+    return run
 
 
 def on_files(files, config):
@@ -252,18 +405,20 @@ def on_files(files, config):
             except RunError as err:
                 raise PluginError(str(err)) from None
         _MANIFEST[file.src_uri] = fingerprint(text)
-        results, figures = _CACHE[key]
-        _RESULTS[file.src_uri] = results
+        _RESULTS[file.src_uri] = _CACHE[key]
         folder = Path(file.src_uri).parent
-        for uri, content in figures.items():
+        for uri, content in _CACHE[key].figures.items():
             files.append(File.generated(config, (folder / uri).as_posix(), content=content))
     return files
 
 
 def on_page_markdown(markdown, page, config, files):
-    """Put each block's results in its place."""
-    results = iter(_RESULTS.get(page.file.src_uri, []))
-    return BLOCK.sub(lambda match: next(results), markdown)
+    """Put the numbers the prose quotes, then each block's results, in their places."""
+    run = _RESULTS.get(page.file.src_uri)
+    if run is None:
+        return markdown
+    results = iter(run.results)
+    return BLOCK.sub(lambda match: next(results), quote(markdown, run.outputs))
 
 
 def on_post_build(config):

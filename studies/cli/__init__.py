@@ -17,9 +17,13 @@ import argparse
 import sys
 from pathlib import Path
 
-from studies.cli import app, balls, paper, rackets, serve, sweep, validate
+from ball import DEFAULT_BALL
+from common.version import __version__
+from studies.cli import app, balls, compare, face, paper, rackets, serve, sweep, validate
 from studies.cli.app import cmd_app
 from studies.cli.balls import cmd_ball, cmd_collide, cmd_drop
+from studies.cli.compare import cmd_compare
+from studies.cli.face import cmd_map, cmd_sweetspots
 from studies.cli.files import _RUN as _RUN  # the run being made (tests read it)
 from studies.cli.files import check_outputs, save_plot, write_table
 from studies.cli.options import _Parser, _Replay
@@ -27,7 +31,7 @@ from studies.cli.paper import cmd_paper, paper_figures
 from studies.cli.rackets import cmd_feel, cmd_modes, cmd_specs
 from studies.cli.runner import _reader_may_go, _start
 from studies.cli.serve import cmd_serve
-from studies.cli.sweep import cmd_compare, cmd_map, cmd_sweep, cmd_sweetspots
+from studies.cli.sweep import cmd_sweep
 from studies.cli.validate import cmd_validate
 from studies.outputs import interrupted
 
@@ -126,15 +130,25 @@ def build_parser(parser_class=_Parser) -> argparse.ArgumentParser:
     """The ``racket-impact`` argument parser, one subcommand per study (``parser_class``:
     :class:`_Replay` for a command recorded in a sidecar).
     """
-    parser = parser_class(prog="racket-impact", description=__doc__.split("\n\n")[0])
+    from racket import DEFAULT_RACKET
+    from studies.sweeps import BALL_SPEED
+
+    parser = parser_class(
+        prog="racket-impact",
+        description="Ball impacts on a flexible tennis racket. Unless told otherwise, every "
+        f"command hits the racket {DEFAULT_RACKET} with the ball {DEFAULT_BALL} at "
+        f"{BALL_SPEED:g} m/s (--racket paper --ball paper: the paper's); every position is in "
+        "cm from the tip.",
+    )
     parser.add_argument(
         "--debug", action="store_true", help="show the traceback of an error (for reports)"
     )
+    parser.add_argument("--version", action="version", version=f"racket-impact {__version__}")
     sub = parser.add_subparsers(dest="command", required=True, parser_class=parser_class)
     for add in (
-        paper.add_paper, sweep.add_sweep, sweep.add_map, serve.add_serve, balls.add_collide,
+        paper.add_paper, sweep.add_sweep, face.add_map, serve.add_serve, balls.add_collide,
         balls.add_drop, balls.add_ball, rackets.add_modes, rackets.add_specs, app.add_app,
-        add_rerun, rackets.add_feel, sweep.add_sweetspots, sweep.add_compare,
+        add_rerun, rackets.add_feel, face.add_sweetspots, compare.add_compare,
         validate.add_validate,
     ):  # fmt: skip
         add(sub)
@@ -152,7 +166,14 @@ def main(argv=None) -> int:
     words = [a for a in argv if a != "--debug"]
     with _reader_may_go():
         try:
-            args = build_parser().parse_args(words)
+            parser = build_parser()
+            args, extra = parser.parse_known_args(words)
+            if extra:  # named with the command (argparse names the program alone)
+                parser.exit(
+                    2,
+                    f"racket-impact {args.command}: error: unrecognized arguments: "
+                    f"{' '.join(extra)} (racket-impact {args.command} --help lists its options)\n",
+                )
             args.debug = len(words) < len(argv)  # before or after the subcommand
             return _start(args, words)
         except KeyboardInterrupt as err:  # before the run (a run reports its own)

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import contextlib
 import os
+import textwrap
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -22,10 +23,10 @@ PLOT_FORMATS = (".png", ".svg", ".pdf")
 
 
 def check_outputs(tables=(), plots=(), directories=()) -> None:
-    """Check every output path before any work: a known extension, an existing, writable
-    directory, a name the directory can hold, nothing there but a regular file, not a
-    symbolic link (for a table, its sidecar too), and no file named twice.  ValueError
-    naming the path otherwise.
+    """Check every output path before any work: a known extension (for Parquet, a library
+    to write it with), an existing, writable directory, a name the directory can hold,
+    nothing there but a regular file, not a symbolic link (for a table, its sidecar too), and
+    no file named twice.  ValueError naming the path otherwise.
     """
     seen = {}
     for paths, kinds, what in ((tables, TABLE_FORMATS, "table"), (plots, PLOT_FORMATS, "plot")):
@@ -36,6 +37,8 @@ def check_outputs(tables=(), plots=(), directories=()) -> None:
                 raise ValueError(
                     f"{flag} must be a {what} file ending in {', '.join(kinds)}, got {path!r}"
                 )
+            if Path(path).suffix.lower() == ".parquet":
+                _check_parquet(flag)
             _check_directory(flag, Path(path).parent, path)
             files = [(flag, Path(path))]
             if what == "table":
@@ -54,6 +57,19 @@ def check_outputs(tables=(), plots=(), directories=()) -> None:
             raise ValueError(f"{flag} must be a directory, got the file {str(path)!r}")
         existing = next((p for p in [target, *target.parents] if p.exists()), Path("."))
         _check_directory(flag, existing, path)
+
+
+def _check_parquet(flag: str) -> None:
+    """A Parquet table needs an engine pandas writes it with (pyarrow, or fastparquet):
+    ValueError with the fix before any work, not after it.
+    """
+    import importlib.util
+
+    if not any(importlib.util.find_spec(engine) for engine in ("pyarrow", "fastparquet")):
+        raise ValueError(
+            f"{flag}: Parquet output needs pyarrow: pip install 'racket-impact[parquet]' "
+            "(or write .csv or .json)"
+        )
 
 
 def _check_file(flag: str, path: Path) -> None:
@@ -102,7 +118,7 @@ def write_table(table: pd.DataFrame, path: str) -> None:
         if suffix == ".csv":
             table.to_csv(temp, index=False)
         elif suffix == ".json":
-            table.to_json(temp, orient="records", indent=2)
+            table.to_json(temp, orient="records", indent=2, double_precision=15)
         else:
             try:
                 table.to_parquet(temp, index=False)
@@ -124,9 +140,20 @@ def _sidecar(path) -> None:
 
         if "description" not in _RUN:
             _RUN["description"] = describe(
-                _RUN["argv"], _RUN["command"], _RUN["options"], _RUN.get("originals")
-            )
+                _RUN["argv"], _RUN["command"], _RUN["options"], _RUN.get("originals"),
+                _RUN.get("conditions"),
+            )  # fmt: skip
         write_sidecar(path, _RUN["description"])
+
+
+def say_conditions(line: str) -> str:
+    """Print a run's conditions (:mod:`studies.conditions`), the header line of its printed
+    tables, record them for its sidecars and return them (the plots' captions).
+    """
+    if _RUN:
+        _RUN["conditions"] = line
+    print(textwrap.fill(line, 100, subsequent_indent="  "))
+    return line
 
 
 def save_plot(axes, path: str) -> None:
@@ -158,12 +185,15 @@ DPI = 120
 
 @contextlib.contextmanager
 def _laid_out(axes):
-    """The figure holding ``axes``, laid out tight; closed when the block ends."""
+    """The figure holding ``axes``, laid out (by its own layout engine, as the plots of
+    :mod:`studies.plots` make theirs, else tight); closed when the block ends.
+    """
     import matplotlib.pyplot as plt
 
     fig = np.atleast_1d(axes)[0].figure
     try:
-        fig.tight_layout()
+        if fig.get_layout_engine() is None:
+            fig.tight_layout()
         yield fig
     finally:
         plt.close(fig)

@@ -5,7 +5,6 @@ ball, speed, swing and tension options, and their values checked in the unit typ
 from __future__ import annotations
 
 import argparse
-import warnings
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -13,21 +12,21 @@ import numpy as np
 
 from ball import DEFAULT_BALL
 from common.checks import (
+    FASTEST_HEAD,
     FASTEST_STROKE,
-    KG_AS_LB,
     M_AS_CM,
-    MPH_AS_M_S,
     N_AS_LB,
     SPEED_RANGE,
     in_range,
+    loose_tension,
     shown,
     slip_hints,
-    suspect,
+    too_fast,
 )
-from common.units import MPH
+from common.units import SPEED_SUFFIXES, SPEED_UNITS
 from racket.specs.sheet import SPEC_RANGES
 from racket.swing import WRIST_BEYOND_BUTT
-from studies.config import BALLS, PAPER_BALL, RACKETS
+from studies.config import BALLS
 
 if TYPE_CHECKING:
     import pandas as pd
@@ -70,13 +69,30 @@ class _Replay(_Parser):
         raise ValueError(f"the sidecar's command: {message}")
 
 
+_HEADS = ("swing_speed", "racket_speed")
+"""The speed options that are a racket head's (checked against
+:data:`common.checks.FASTEST_HEAD`); the others are a ball's (against
+:data:`common.checks.FASTEST_STROKE`)."""
+
+_UNITS = {"": "m/s", "_mph": "mph", "_kmh": "km/h"}
+"""The unit of each speed option by the ending of its name: ``--NAME`` [m/s],
+``--NAME-mph`` [mph], ``--NAME-kmh`` [km/h]."""
+
+
 def _speed(args, name: str, allow_zero: bool = False, signed: bool = False):
-    """The speed option ``--NAME`` [m/s] or ``--NAME-mph`` [mph] in m/s (a list for a
-    many-valued option), each value checked in the unit it was typed in.
+    """The speed option ``--NAME`` [m/s], ``--NAME-mph`` [mph] or ``--NAME-kmh`` [km/h] in
+    m/s (a list for a many-valued option), each value checked in the unit it was typed in;
+    one faster than any recorded stroke asked about, in that unit (a racket head's speed, of
+    :data:`_HEADS`, against :data:`common.checks.FASTEST_HEAD`).
     """
     flag, values, unit, scale = _typed(args, name)
     low, high = (v / scale for v in SPEED_RANGE)
-    checked = []
+    fastest, what = (
+        (FASTEST_HEAD, "a racket head's fastest, estimated")
+        if name in _HEADS
+        else (FASTEST_STROKE, "the serve record")
+    )
+    base, checked = f"--{name.replace('_', '-')}", []
     for value in np.atleast_1d(values):
         if signed:
             checked.append(in_range(flag, value, -high, high, unit) * scale)
@@ -84,25 +100,42 @@ def _speed(args, name: str, allow_zero: bool = False, signed: bool = False):
             checked.append(0.0)
         else:
             checked.append(in_range(flag, value, low, high, unit) * scale)
-        # allowed, but asked about (mph typed as m/s?).  FASTEST_STROKE is the serve's
-        # ball-speed record; as the limit of a racket head's (or swing's) speed it is an
-        # assumption, a generous bound: a racket head is slower than the ball it serves.
-        if unit == "m/s":
-            suspect(flag, abs(value), (0.0, FASTEST_STROKE), "m/s", (MPH_AS_M_S,),
-                    f"faster than any recorded stroke (about {FASTEST_STROKE:g} m/s)",
-                    f" ({flag}-mph {shown(value)})", always=True)  # fmt: skip
+
+        def instead(typed: str, v=value) -> str:  # the option a slip of unit would have meant
+            return f" ({base}-{SPEED_SUFFIXES[typed]} {shown(v)})"
+
+        too_fast(flag, value, unit, fastest, what, instead)  # allowed, but asked about
     return checked if isinstance(values, list) else checked[0]
 
 
 def _typed(args, name: str) -> tuple[str, object, str, float]:
-    """The speed option ``--NAME`` or ``--NAME-mph`` as the user typed it: the flag, the
-    value(s), the unit and its size [m/s].
+    """The speed option ``--NAME``, ``--NAME-mph`` or ``--NAME-kmh`` as the user typed it:
+    the flag, the value(s), the unit and its size [m/s] (``--NAME`` when none was given).
     """
-    mph = getattr(args, f"{name}_mph")
     flag = f"--{name.replace('_', '-')}"
-    if mph is not None:
-        return f"{flag}-mph", mph, "mph", MPH
+    for ending, unit in _UNITS.items():
+        values = getattr(args, f"{name}{ending}", None) if ending else None
+        if values is not None:
+            return f"{flag}{ending.replace('_', '-')}", values, unit, SPEED_UNITS[unit]
     return flag, getattr(args, name), "m/s", 1.0
+
+
+def speed_unit(args, *names: str) -> str:
+    """The unit the user typed the speed options ``names`` in ("m/s", "mph" or "km/h"), for
+    the answer to be in it: the first of them given in mph or km/h, else m/s.
+
+    Parameters
+    ----------
+    args : argparse.Namespace
+        The parsed command line.
+    *names : str
+        The speed options, as their ``dest`` (``"speed"``, ``"swing_speed"``).
+    """
+    for name in names:
+        unit = _typed(args, name)[2]
+        if unit != "m/s":
+            return unit
+    return "m/s"
 
 
 def _count(flag: str, value: int, low: int, high: int) -> int:
@@ -119,83 +152,58 @@ def _print_table(table: pd.DataFrame, floatfmt: str = "{:.4g}") -> None:
     print_table(table, floatfmt)
 
 
-def _tensions(args):
-    """``--tension-lb`` values in N (a list), None if not given; not with the stiffness."""
-    if args.tension_lb is None:
-        return None
-    if args.string_stiffness is not None:
-        raise ValueError("give --string-stiffness or --tension-lb, not both")
-    return [_tension(t) for t in args.tension_lb]
-
-
-STRUNG_AT_LB = (40.0, 65.0)
-"""What rackets are usually strung at [lb]: an assumption, not a measurement (the project's
-measurements give none; :data:`racket.specs.strings.TENSION_RANGE_LB` accepts 20-80 lb).  A
-tension below it that is one in kg is asked about."""
-
-
 def _tension(value_lb: float) -> float:
     """``--tension-lb`` [lb] checked in lb (the spec sheets' range, 20-80 lb; a value in N
-    refused with a hint, one below :data:`STRUNG_AT_LB` that is one in kg asked about) and
-    given in N.
+    refused with a hint, one below :data:`common.checks.STRUNG_AT_LB` that is one in kg asked
+    about, :func:`common.checks.loose_tension`) and given in N.
     """
     from common.units import LB
 
     low, high, unit = SPEC_RANGES["tension_lb"]
     value = in_range("--tension-lb", value_lb, low, high, unit, slips=(N_AS_LB,))
-    low, high = STRUNG_AT_LB
-    why = f"below what rackets are strung at ({low:g}-{high:g} lb)"
-    suspect("--tension-lb", value, STRUNG_AT_LB, unit, (KG_AS_LB,), why)
+    loose_tension("--tension-lb", value)
     return value * LB
 
 
-def _tension_option(p, many: bool = False):
-    p.add_argument(
-        "--tension-lb",
-        type=float,
-        nargs="+" if many else None,
-        action=_Once,
-        metavar="LB",
-        help="string tension(s) [lb]: the string bed's stiffness from the membrane model "
-        "(default: the racket's)",
-    )
-
-
 def _swing(args):
-    """The ``--swing-speed[-mph]`` and ``--pivot-cm-from-butt`` options as a Swing, or None
-    without a swing speed.
+    """The ``--swing-speed[-mph|-kmh]`` and ``--pivot-cm-from-tip`` options as a Swing, or
+    None without a swing speed.
     """
     from racket import Swing
 
-    if args.swing_speed is None and args.swing_speed_mph is None:
-        if getattr(args, "_seen_pivot_cm_from_butt", False):
-            raise ValueError("--pivot-cm-from-butt needs --swing-speed (or --swing-speed-mph)")
+    if all(getattr(args, f"swing_speed{u}", None) is None for u in ("", "_mph", "_kmh")):
+        if args.pivot_cm_from_tip is not None:
+            raise ValueError("--pivot-cm-from-tip needs --swing-speed (or -mph, -kmh)")
         return None
     return Swing(_speed(args, "swing_speed"), _pivot(args))
 
 
 def _check_swing(args, swing, racket, positions, name: str = "swing_speed") -> None:
-    """``swing`` (of the speed option ``--NAME[-mph]`` and ``--pivot-cm-from-butt``) checked
-    for the impact points ``positions`` [m from the tip], the message quoting the options as
-    typed (:meth:`racket.Swing.check_points`); nothing without a swing.
+    """``swing`` (of the speed option ``--NAME[-mph|-kmh]`` and ``--pivot-cm-from-tip``)
+    checked for the impact points ``positions`` [m from the tip], the message quoting the
+    options as typed (:meth:`racket.Swing.check_points`); nothing without a swing.
     """
     if swing is not None:
-        pivot = ("--pivot-cm-from-butt", args.pivot_cm_from_butt, "cm", 0.01)
+        typed = args.pivot_cm_from_tip
+        pivot = ("--pivot-cm-from-tip", 100 * swing.pivot(racket) if typed is None else typed,
+                 "cm", 0.01)  # fmt: skip
         swing.check_points(racket, positions, head=_typed(args, name), pivot=pivot)
 
 
-def _pivot(args) -> float:
-    """``--pivot-cm-from-butt`` [cm] checked in cm (:data:`racket.swing.PIVOT_RANGE`), in m;
-    one within 1 cm of the butt that is a pivot in m is asked about (m typed as cm?).
+def _pivot(args) -> float | None:
+    """``--pivot-cm-from-tip`` [cm] checked in cm (:data:`racket.swing.PIVOT_FROM_TIP_RANGE`),
+    in m; None (not given): the wrist, 5 cm beyond the butt.  A pivot below 2.5 cm that is
+    one in m is refused with the hint (m typed as cm?).
     """
-    from racket.swing import PIVOT_RANGE
+    from racket.swing import PIVOT_FROM_TIP_RANGE
 
-    low, high = (100 * end for end in PIVOT_RANGE)
-    value = in_range("--pivot-cm-from-butt", args.pivot_cm_from_butt, low, high, "cm")
-    slipped = slip_hints(value, low, high, "cm", (M_AS_CM,)) if 0 < abs(value) < 1 else ""
+    if args.pivot_cm_from_tip is None:
+        return None
+    low, high = (100 * end for end in PIVOT_FROM_TIP_RANGE)
+    value = in_range("--pivot-cm-from-tip", args.pivot_cm_from_tip, low, high, "cm")
+    slipped = slip_hints(value, low, high, "cm", (M_AS_CM,)) if 0 < abs(value) < 2.5 else ""
     if slipped:
-        warnings.warn(f"--pivot-cm-from-butt {shown(value)} cm is within 1 cm of the butt: "
-                      f"{slipped}", stacklevel=2)  # fmt: skip
+        raise ValueError(f"--pivot-cm-from-tip {shown(value)} cm is at the tip: {slipped}")
     return value / 100
 
 
@@ -223,63 +231,41 @@ def _labels(names: list[str]) -> list[tuple[str, str]]:
 
 
 # ----- parser -----------------------------------------------------------------------------
-def _racket_arg(p, default="paper"):
-    p.add_argument(
-        "--racket",
-        default=default,
-        metavar="PRESET_OR_TOML",
-        help=f"racket preset ({', '.join(RACKETS)}) or TOML file with a [racket] "
-        f"table (default: {default})",
-    )
-
-
-def _ball_arg(p, flag="--ball", default=None, what="ball", **extra):
-    shown_default = default or (
-        f"{DEFAULT_BALL}, a real ball; with the paper's racket the paper's ball, {PAPER_BALL}"
-    )
+def _ball_arg(p, flag="--ball", default=DEFAULT_BALL, what="ball", **extra):
     p.add_argument(
         flag,
         default=default,
         metavar="PRESET_OR_TOML",
-        help=f"{what}: preset ({', '.join(BALLS)}) or TOML file with a [ball] "
-        f"table (default: {shown_default})",
+        help=f"{what}: preset ({', '.join(BALLS)}; 'paper' is the paper's linear ball) or TOML "
+        f"file with a [ball] table (default: {default})",
         **extra,
     )
 
 
 def _speed_option(p, name: str, default, what: str, many: bool = False):
-    """``--NAME`` in m/s or ``--NAME-mph`` in mph, not both."""
+    """``--NAME`` in m/s, ``--NAME-mph`` in mph or ``--NAME-kmh`` in km/h, one of them."""
     group = p.add_mutually_exclusive_group()
-    nargs = "+" if many else None
-    group.add_argument(
-        f"--{name}",
-        action=_Once,
-        type=float,
-        nargs=nargs,
-        default=default,
-        metavar="M_S",
-        help=f"{what} [m/s]"
-        + ("" if default is None else f" (default {default if not many else default[0]:g})"),
-    )
-    group.add_argument(
-        f"--{name}-mph",
-        action=_Once,
-        type=float,
-        nargs=nargs,
-        metavar="MPH",
-        help=f"{what} [mph]",
-    )
+    said = "" if default is None else f" (default {default if not many else default[0]:g})"
+    for ending, unit in _UNITS.items():
+        group.add_argument(
+            f"--{name}{ending.replace('_', '-')}",
+            action=_Once,
+            type=float,
+            nargs="+" if many else None,
+            default=default if not ending else None,
+            metavar={"m/s": "M_S", "mph": "MPH", "km/h": "KMH"}[unit],
+            help=f"{what} [{unit}]" + (said if not ending else ""),
+        )
 
 
 def _pivot_option(p):
     p.add_argument(
-        "--pivot-cm-from-butt",
+        "--pivot-cm-from-tip",
         type=float,
         action=_Once,
-        default=-100 * WRIST_BEYOND_BUTT,
         metavar="CM",
-        help="swing pivot [cm from the butt, negative beyond it] (default "
-        f"{-100 * WRIST_BEYOND_BUTT:g}, the wrist)",
+        help="swing pivot [cm from the tip, like every position] (default: the wrist, "
+        f"{100 * WRIST_BEYOND_BUTT:g} cm beyond the butt)",
     )
 
 

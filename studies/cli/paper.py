@@ -135,12 +135,12 @@ def paper_figures() -> dict:
 
     matplotlib.use("Agg")
     from ball import Ball, LinearSpring, SineLaw
-    from racket import impact, paper_racket, tennis_ball
+    from racket import impact, paper_ball, paper_racket
     from studies import plots
     from studies.serve import serve_what_if
 
     unhappy = Ball(0.0103, SineLaw(2e4))
-    racket, ball = paper_racket(), tennis_ball()
+    racket, ball = paper_racket(), paper_ball()
     return {
         "fig2_unhappy_on_wall.png": lambda: plots.plot_collision(
             collide(unhappy, WALL, 4.0), title="Fig. 2: unhappy ball on a rigid wall"

@@ -9,22 +9,20 @@ import sys
 import textwrap
 
 from beam.beam import MAX_MODES
-from common.checks import CM_AS_M, S_AS_MS, in_range
-from common.units import GRAVITY
-from racket import GRIPS
+from common.checks import M_AS_CM, S_AS_MS, in_range
 from racket.specs.ra import ra_note
-from studies.cli.files import check_outputs, save_plot, write_table
-from studies.cli.options import _ball_arg, _count, _print_table, _racket_arg, _speed, _speed_option
+from studies.cli.files import check_outputs, save_plot, say_conditions, write_table
+from studies.cli.options import _ball_arg, _count, _print_table, _speed, _speed_option
+from studies.cli.racket_options import add_racket_options, racket_conditions, racket_from
 from studies.cli.show import WIDTH, spots_view
-from studies.config import RACKETS, default_ball, load_ball, load_racket, racket_specs
-from studies.landmarks import HAND_FROM_BUTT
+from studies.config import load_ball, racket_specs
 from studies.sweeps import BALL_SPEED
 
 
 def add_modes(sub) -> None:
     """The ``modes`` subcommand, on the subparsers ``sub``."""
     p = sub.add_parser("modes", help="frequencies, nodes, mass properties, swingweight")
-    _racket_arg(p)
+    add_racket_options(p)
     p.add_argument("--count", type=int, default=6, help="bending modes listed (default 6)")
     p.add_argument("--out", metavar="FILE", help="mode table: .csv, .json or .parquet")
     p.add_argument("--plot", metavar="FILE", help="mode shapes (.png, .svg, .pdf)")
@@ -35,27 +33,29 @@ def cmd_modes(args) -> int:
     """``racket-impact modes``."""
     import pandas as pd
 
-    from studies.landmarks import rigid_centre_of_percussion
+    from studies.landmarks import hand_pivot, rigid_centre_of_percussion
 
     check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
     count = _count("--count", args.count, 1, MAX_MODES)
-    racket = load_racket(args.racket)
+    racket = racket_from(args)
     beam, modes = racket.beam, racket.beam.modes
-    hand = beam.length - HAND_FROM_BUTT
+    hand = hand_pivot(racket)
     centre = racket.strings.center
+    say_conditions(racket_conditions(args, racket))
     print(f"length            {beam.length:.4f} m")
     print(f"mass              {beam.mass:.4f} kg")
-    print(f"balance           {100 * beam.balance:.2f} cm from the butt")
-    print(f"swingweight       {beam.swingweight_kgcm2:.1f} kg cm^2 (axis 10 cm from the butt)")
+    print(f"centre of mass    {100 * beam.center_of_mass:.2f} cm from the tip (balance "
+          f"{100 * beam.balance:.2f} cm: spec sheets give it from the butt)")  # fmt: skip
+    print(f"swingweight       {beam.swingweight_kgcm2:.1f} kg cm^2 (axis 10 cm from the butt, "
+          "as spec sheets define it)")  # fmt: skip
     print(f"recoil weight     {1e4 * beam.inertia_cm:.1f} kg cm^2 (about the centre of mass)")
     cop = rigid_centre_of_percussion(racket, hand)
     print(
-        f"centre of percussion  {100 * (beam.length - cop):.1f} cm from the butt "
-        f"({100 * cop:.1f} cm from the tip; hand {100 * HAND_FROM_BUTT:.0f} cm from the butt)"
+        f"centre of percussion  {100 * cop:.1f} cm from the tip (hand at {100 * hand:.1f} cm "
+        "from the tip)"
     )
     print(
-        f"effective mass at the string centre ({100 * (beam.length - centre):.1f} cm from "
-        f"the butt, {100 * centre:.1f} cm from the tip)  "
+        f"effective mass at the string centre ({100 * centre:.1f} cm from the tip)  "
         f"{beam.effective_mass(centre):.4f} kg"
     )
     rows = []
@@ -65,7 +65,6 @@ def cmd_modes(args) -> int:
             {
                 "mode": k,
                 "frequency_Hz": modes.frequencies[k - 1],
-                "nodes_cm_from_butt": ", ".join(f"{100 * (beam.length - n):.1f}" for n in nodes),
                 "nodes_cm_from_tip": ", ".join(f"{100 * n:.1f}" for n in nodes),
             }
         )
@@ -86,12 +85,8 @@ def add_specs(sub) -> None:
     p = sub.add_parser(
         "specs", help="the model fitted to a spec sheet: fit, masses, modes, effective mass"
     )
-    p.add_argument(
-        "racket",
-        metavar="PRESET_OR_TOML",
-        help=f"racket preset ({', '.join(RACKETS)}) or TOML file with a [racket] table "
-        "(a [racket.specs] spec sheet, or any racket)",
-    )
+    add_racket_options(p)
+    _ball_arg(p, what="ball of the sweet spots")
     p.add_argument("--count", type=int, default=4, help="bending modes listed (default 4)")
     p.add_argument("--out", metavar="FILE", help="effective-mass table: .csv, .json, .parquet")
     p.add_argument("--plot", metavar="FILE", help="mode shapes (.png, .svg, .pdf)")
@@ -104,10 +99,10 @@ def cmd_specs(args) -> int:
 
     check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
     count = _count("--count", args.count, 1, MAX_MODES)
-    racket = load_racket(args.racket)
+    racket = racket_from(args)
     specs, sources = racket_specs(args.racket)
-    ball_name = default_ball(args.racket)
-    report = spec_report(racket, specs, count=count, ball=load_ball(ball_name))
+    report = spec_report(racket, specs, count=count, ball=load_ball(args.ball))
+    say_conditions(racket_conditions(args, racket))
     if specs is not None and specs.get("ra") is not None:
         print(f"{ra_note(specs['ra'])}\nspec sheet and fitted model:")
     elif specs is not None:
@@ -119,7 +114,7 @@ def cmd_specs(args) -> int:
         for warning in report.warnings:
             print(f"warning: {warning}", file=sys.stderr)
         print()
-    print("the racket (with any lead tape, strings and support of the file):")
+    print("the racket (with any lead tape, strings and support of the file or the options):")
     _print_table(report.properties, "{:.4g}")
     print(
         "\nmodes: free-free, and held by the hand\n(stiffness "
@@ -132,7 +127,7 @@ def cmd_specs(args) -> int:
         )
     )
     _print_table(report.modes, "{:.4g}")
-    print(f"\nsweet spots (ball {ball_name} at {BALL_SPEED:g} m/s on the racket at rest):")
+    print(f"\nsweet spots (ball {args.ball} at {BALL_SPEED:g} m/s on the racket at rest):")
     _print_table(spots_view(report.sweet_spots), "{:.4g}")
     print("\neffective mass along the strings (Eq. 20)")
     _print_table(report.effective_mass, "{:.4g}")
@@ -158,17 +153,13 @@ def cmd_specs(args) -> int:
 def add_feel(sub) -> None:
     """The ``feel`` subcommand, on the subparsers ``sub``."""
     p = sub.add_parser("feel", help="the handle's motion at the hand after an impact")
-    _racket_arg(p, default="pure-drive-2021")
+    add_racket_options(p, support_default="hand-held")
     _ball_arg(p)
     _speed_option(p, "speed", BALL_SPEED, "ball speed towards the strings")
-    p.add_argument("--position", type=float, metavar="M", help="impact point [m from the tip] "
-                   "(default: the string centre)")  # fmt: skip
-    p.add_argument("--offset", type=float, metavar="M", help="impact point's distance from "
-                   "the long axis [m, + towards 3 o'clock]")  # fmt: skip
-    p.add_argument("--support", choices=["free", "hand-held"], default="hand-held",
-                   help="support (default hand-held)")  # fmt: skip
-    p.add_argument("--grip", choices=list(GRIPS), help="how the hand holds it (default: the "
-                   "racket's hand, the medium grip unless its file says otherwise)")  # fmt: skip
+    p.add_argument("--position", type=float, metavar="CM", help="impact point [cm from the "
+                   "tip] (default: the string centre)")  # fmt: skip
+    p.add_argument("--offset", type=float, metavar="CM", help="impact point's distance from "
+                   "the long axis [cm, + towards 3 o'clock]")  # fmt: skip
     p.add_argument("--duration-ms", type=float, default=50.0, metavar="MS",
                    help="how long to follow the racket (default 50 ms)")  # fmt: skip
     p.add_argument("--out", metavar="FILE", help="histories: .csv, .json or .parquet")
@@ -179,38 +170,36 @@ def add_feel(sub) -> None:
 def cmd_feel(args) -> int:
     """``racket-impact feel``."""
     from racket.feel import hand_feel
+    from studies.feel import feel_numbers
 
     check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
-    from dataclasses import replace
-
-    racket = replace(load_racket(args.racket), support=args.support)  # always given (default)
-    if args.grip:
-        racket = replace(racket, hand=GRIPS[args.grip])
-    position = racket.strings.center if args.position is None else args.position
-    in_range("--position", position, *racket.strings.extent, "m from the tip", slips=(CM_AS_M,))
-    if args.offset is not None and racket.beam.roll_inertia is not None:
-        half = 0.5 * racket.strings.full_width
-        in_range("--offset", args.offset, -half, half, "m from the long axis", slips=(CM_AS_M,))
+    racket = racket_from(args)
+    position, offset = racket.strings.center, None
+    if args.position is not None:
+        low, high = (100 * end for end in racket.strings.extent)
+        position = in_range("--position", args.position, low, high, "cm from the tip",
+                            slips=(M_AS_CM,)) / 100  # fmt: skip
+    if args.offset is not None:
+        half = 50 * racket.strings.full_width
+        if racket.beam.roll_inertia is not None:
+            in_range("--offset", args.offset, -half, half, "cm from the long axis",
+                     slips=(M_AS_CM,))  # fmt: skip
+        offset = args.offset / 100
     duration = in_range("--duration-ms", args.duration_ms, 5.0, 1000.0, "ms", slips=(S_AS_MS,))
-    duration /= 1e3
-    feel = hand_feel(
-        racket, load_ball(args.ball), position, _speed(args, "speed"), offset=args.offset,
-        duration=duration,
-    )  # fmt: skip
-    length = racket.beam.length
-    print(
-        f"impact {100 * (length - position):.1f} cm from the butt ({100 * position:.1f} cm from "
-        f"the tip){'' if args.offset is None else f', {100 * args.offset:+.1f} cm off the axis'}"
-        f"; handle read {100 * feel.grip_from_butt:.1f} cm from the butt ({racket.support})"
-    )
-    print(f"peak handle velocity      {feel.peak_velocity:.3f} m/s")
-    print(f"peak handle acceleration  {feel.peak_acceleration:.0f} m/s^2 "
-          f"({feel.peak_acceleration / GRAVITY:.0f} g)")  # fmt: skip
-    dominant, of_mode = feel.strongest()
-    bins = f"{feel.frequencies[1]:.0f} Hz"
-    print(f"strongest vibration       {dominant:.1f} Hz " + (
-        f"(the {racket.support} racket's mode; the spectrum's bins: {bins})"
-        if of_mode else f"(the spectrum's peak, to +/- {bins}: its bins' width)"))  # fmt: skip
+    speed = _speed(args, "speed")
+    feel = hand_feel(racket, load_ball(args.ball), position, speed, offset=offset,
+                     duration=duration / 1e3)  # fmt: skip
+    numbers = feel_numbers(feel, racket)
+    conditions = say_conditions(racket_conditions(args, racket, speed=speed))
+    where = " (the string centre)" if args.position is None else ""
+    off = "" if offset is None else f", {100 * offset:+.1f} cm off the axis"
+    print(f"impact {100 * position:.1f} cm from the tip{where}{off}; the handle read at "
+          f"{100 * feel.grip:.1f} cm (mid-hand)")  # fmt: skip
+    print(f"shock                     {numbers['feel_shock_g']:.1f} g (the handle's rigid-body "
+          "jolt while the ball is on the strings)")  # fmt: skip
+    print(f"vibration                 {numbers['feel_vibration_g']:.1f} g (the handle's "
+          "vibration after the ball has left, largest)")  # fmt: skip
+    print(f"strongest vibration       {numbers['feel_hz']:.1f} Hz ({numbers['feel_mode']})")
     print(
         f"vibration reaching the hand  {1e3 * feel.hand_vibration_energy:.2f} mJ over "
         f"{1e3 * feel.t[-1]:.0f} ms (all the hand absorbs: {1e3 * feel.hand_energy:.1f} mJ)"
@@ -223,5 +212,5 @@ def cmd_feel(args) -> int:
     if args.plot:
         from studies.plots import plot_hand_feel
 
-        save_plot(plot_hand_feel(feel), args.plot)
+        save_plot(plot_hand_feel(feel, conditions=conditions), args.plot)
     return 0

@@ -14,7 +14,6 @@ from racket.dispatch import one_blas_thread
 from studies import outputs
 from studies.cli.files import _RUN
 from studies.cli.notice import compile_watch
-from studies.config import default_ball
 from studies.outputs import interrupted
 
 
@@ -77,11 +76,6 @@ def _start(args, words: list[str], originals: dict | None = None) -> int:
     """Run the parsed ``args`` as the command line ``words``, which its tables' sidecars
     record (``originals``: a rerun's copies of TOML inputs -> the paths first given).
     """
-    if getattr(args, "ball", "") is None:  # the real ball, the paper's with the paper's racket
-        rackets = getattr(args, "racket", None)
-        args.ball = default_ball(
-            *(rackets if isinstance(rackets, list) else [rackets] * bool(rackets))
-        )
     options = {k: v for k, v in vars(args).items() if k != "func" and not k.startswith("_")}
     outer = dict(_RUN)  # a rerun's own run, restored afterwards
     _RUN.clear()

@@ -2,9 +2,9 @@
 
 from __future__ import annotations
 
-from common.checks import CM_AS_M, in_range, shown
-from common.units import MPH
-from studies.cli.files import check_outputs, save_plot, write_table
+from common.checks import M_AS_CM, in_range, shown
+from common.units import SPEED_SUFFIXES, SPEED_UNITS
+from studies.cli.files import check_outputs, save_plot, say_conditions, write_table
 from studies.cli.options import (
     _ball_arg,
     _check_swing,
@@ -12,30 +12,37 @@ from studies.cli.options import (
     _pivot,
     _pivot_option,
     _print_table,
-    _racket_arg,
     _speed,
     _speed_option,
     _typed,
+    speed_unit,
 )
-from studies.config import load_ball, load_racket
+from studies.cli.racket_options import add_racket_options, racket_conditions, racket_from
+from studies.conditions import speed_text
+from studies.config import load_ball
+
+DEFAULT_HEAD_SPEED = 40.0
+"""The racket-head speed of ``serve`` when none is given [m/s]: the paper's serve (Sec. VIII,
+40 m/s at the string centre)."""
 
 
 def add_serve(sub) -> None:
     """The ``serve`` subcommand, on the subparsers ``sub``."""
     p = sub.add_parser("serve", help="serve speed for one swing (Sec. VIII), and what-ifs")
-    _racket_arg(p)
+    add_racket_options(p, support=False)  # a swung racket is free in this model
     _ball_arg(p)
     p.add_argument(
         "--position",
         type=float,
         nargs="+",
         action=_Once,
-        metavar="M",
-        help="impact point(s) [m from the tip] (default: centre of the strings)",
+        metavar="CM",
+        help="impact point(s) [cm from the tip] (default: centre of the strings)",
     )
     _speed_option(
-        p, "racket-speed", [40.0], "racket-head (string centre) speed(s) of the swing", many=True
-    )
+        p, "racket-speed", [DEFAULT_HEAD_SPEED], "racket-head (string centre) speed(s) of the "
+        "swing", many=True,
+    )  # fmt: skip
     _speed_option(p, "target-ball-speed", None, "serve speed to reach: solve for the head speed")
     _pivot_option(p)
     p.add_argument(
@@ -57,38 +64,37 @@ def cmd_serve(args) -> int:
     check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
     if args.plot and not args.what_if:
         raise ValueError("--plot needs --what-if for serve")
-    racket, ball = load_racket(args.racket), load_ball(args.ball)
-    positions = [racket.strings.center] if args.position is None else args.position
-    for x in positions:
-        in_range("--position", x, *racket.strings.extent, "m from the tip", slips=(CM_AS_M,))
+    racket, ball = racket_from(args), load_ball(args.ball)
+    low, high = (100 * end for end in racket.strings.extent)
+    positions = [racket.strings.center] if args.position is None else [
+        in_range("--position", x, low, high, "cm from the tip", slips=(M_AS_CM,)) / 100
+        for x in args.position
+    ]  # fmt: skip
     pivot = _pivot(args)
-    mph = args.racket_speed_mph is not None or args.target_ball_speed_mph is not None
-    target_given = args.target_ball_speed is not None or args.target_ball_speed_mph is not None
-    if target_given and (getattr(args, "_seen_racket_speed", False) or args.racket_speed_mph):
+    unit = speed_unit(args, "racket_speed", "target_ball_speed")
+    size = SPEED_UNITS[unit]
+    target_given = _given(args, "target_ball_speed")
+    if target_given and (getattr(args, "_seen_racket_speed", False) or _given_in_units(args)):
         raise ValueError(
-            "give --racket-speed[-mph] or --target-ball-speed[-mph], not both (the target "
-            "solves for the racket speed)"
+            "give --racket-speed[-mph|-kmh] or --target-ball-speed[-mph|-kmh], not both (the "
+            "target solves for the racket speed)"
         )
     # the pivot short of the impact points (any head speed in range will do for that)
     _check_swing(args, Swing(1.0, pivot), racket, positions, "racket_speed")
+    at = f"{100 * positions[0]:.1f} cm from the tip"
     if target_given:
         target = _speed(args, "target_ball_speed")
-        flag, typed, unit, size = _typed(args, "target_ball_speed")
+        flag, typed, _, _ = _typed(args, "target_ball_speed")
         heads, reach = serve_reach(racket, ball, positions[0], pivot)
         if not reach[0] < target < reach[1]:
             raise ValueError(
                 f"{flag}: the target ball speed must be in ({reach[0] / size:.4g}, "
-                f"{reach[1] / size:.4g}) {unit} at {100 * (racket.beam.length - positions[0]):.1f}"
-                f" cm from the butt (head speeds of {heads[0] / size:.4g}-{heads[1] / size:.4g} "
-                f"{unit}), got {shown(typed)}"
+                f"{reach[1] / size:.4g}) {unit} at {at} (head speeds of {heads[0] / size:.4g}-"
+                f"{heads[1] / size:.4g} {unit}), got {shown(typed)}"
             )
-        head = head_speed_for(racket, ball, target, positions[0], pivot)
-        heads = [head]
-        print(
-            f"racket-head speed for a {_shown_speed(target, mph)} serve at "
-            f"{100 * (racket.beam.length - positions[0]):.1f} cm from the butt: "
-            f"{_shown_speed(head, mph, digits=3)}"
-        )
+        heads = [head_speed_for(racket, ball, target, positions[0], pivot)]
+        print(f"racket-head speed for a {speed_text(target, unit)} serve at {at}: "
+              f"{speed_text(heads[0], unit)}")  # fmt: skip
     else:
         heads = _speed(args, "racket_speed")
         if args.what_if and len(heads) > 1:
@@ -100,38 +106,58 @@ def cmd_serve(args) -> int:
     table = pd.concat(
         [serve_table(racket, ball, positions, h, pivot, zero_cor=args.what_if) for h in heads]
     )
-    unit = "mph" if mph else "m_s"
-    said = [_shown_speed(h, mph) for h in heads]
-    said = ", ".join([s.split()[0] for s in said[:-1]] + said[-1:])  # the unit once
-    print(
-        f"{'one swing' if len(heads) == 1 else 'swings'}: racket-head (string centre) speed "
-        f"{said}, pivot {abs(100 * pivot):g} cm {'beyond' if pivot <= 0 else 'inside'} the butt"
-    )
-    columns = [f"head_speed_{unit}"] if len(heads) > 1 else []
-    columns += ["position_from_butt_cm", f"point_speed_{unit}", "e"]
-    columns += [f"serve_eq22_{unit}", f"serve_simulated_{unit}"]
+    table = _named(_in_unit(table, unit), args.ball)
+    swing = Swing(heads[0], pivot)
+    said = f"swung at {speed_text(heads, unit)} head speed {swing.pivot_words()}"
+    conditions = say_conditions(racket_conditions(args, racket, speed=None) + f" at rest, {said}")
+    suffix = SPEED_SUFFIXES[unit]
+    columns = [f"head_speed_{suffix}"] if len(heads) > 1 else []
+    columns += ["ball", "position_from_tip_cm", f"point_speed_{suffix}", "e"]
+    columns += [f"serve_eq22_{suffix}", f"serve_simulated_{suffix}"]
     if args.what_if:
         columns.append("reduction_simulated_percent")
     _print_table(table[columns])
     if args.what_if:
-        head = heads[0]
-        what_if = serve_what_if(racket, ball, positions[0], head, pivot_from_butt=pivot)
+        what_if = serve_what_if(racket, ball, positions[0], heads[0], pivot_from_tip=pivot)
+        what_if = _in_unit(what_if, unit)
         print()
         view = what_if.rename(columns={"value": "stiffness_N_m"})
         _print_table(
-            view[["varied", "stiffness_N_m", "e", f"serve_simulated_{unit}",
+            view[["varied", "stiffness_N_m", "e", f"serve_simulated_{suffix}",
                    "reduction_simulated_percent"]]
         )  # fmt: skip
         table = what_if
         if args.plot:
             from studies.plots import plot_serve_what_if
 
-            save_plot(plot_serve_what_if(what_if), args.plot)
+            save_plot(plot_serve_what_if(what_if, conditions=conditions), args.plot)
     if args.out:
-        write_table(table.reset_index(), args.out)
+        write_table(table.reset_index(drop="ball" in table.columns), args.out)
     return 0
 
 
-def _shown_speed(value: float, mph: bool, digits: int = 1) -> str:
-    """A speed [m/s] as the user typed speeds: mph, or m/s."""
-    return f"{value / MPH:.{digits}f} mph" if mph else f"{value:.{digits + 1}f} m/s"
+def _given(args, name: str) -> bool:
+    """Whether the speed option ``--NAME`` was given in any unit."""
+    return any(getattr(args, f"{name}{u}", None) is not None for u in ("", "_mph", "_kmh"))
+
+
+def _given_in_units(args) -> bool:
+    """Whether ``--racket-speed-mph`` or ``--racket-speed-kmh`` was given."""
+    return any(getattr(args, f"racket_speed{u}", None) is not None for u in ("_mph", "_kmh"))
+
+
+def _in_unit(table, unit: str):
+    """``table`` with its speed columns [m/s] also in ``unit`` (mph or km/h, as typed)."""
+    if unit == "m/s":
+        return table
+    suffix, size = SPEED_SUFFIXES[unit], SPEED_UNITS[unit]
+    return table.assign(**{
+        c.replace("_m_s", f"_{suffix}"): table[c] / size for c in table.columns
+        if c.endswith("_m_s") and c.replace("_m_s", f"_{suffix}") not in table
+    })  # fmt: skip
+
+
+def _named(table, ball_name: str):
+    """The serve table with its ball named: the ball as given, and its zero-COR twin."""
+    names = {"normal": ball_name, "zero-COR": f"zero-COR twin of {ball_name}"}
+    return table.rename(index=names).rename_axis("ball").reset_index()

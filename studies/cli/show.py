@@ -14,7 +14,7 @@ WIDTH = 100
 """Widest line a printed table makes [characters] (a terminal's or an e-mail's)."""
 
 LABELS = {
-    "position_from_butt_cm": "from the butt [cm]",
+    "position_from_tip_cm": "from the tip [cm]",
     "position_from_tip_m": "from the tip [m]",
     "e": "e [-]",
     "e_A": "e_A [-]",
@@ -23,6 +23,7 @@ LABELS = {
     "vibration_energy_fraction": "vibration / ball's energy [-]",
     "swing_speed_m_s": "impact point's speed [m/s]",
     "swing_speed_mph": "impact point's speed [mph]",
+    "swing_speed_kmh": "impact point's speed [km/h]",
     "recontacts": "re-contacts [-]",
     "relative_difference": "relative difference [-]",
     "spec_sheet": "spec sheet",
@@ -33,8 +34,10 @@ LABELS = {
     "reduction_eq22_percent": "reduction (Eq. 22) [%]",
     "serve_eq22_m_s": "serve (Eq. 22) [m/s]",
     "serve_eq22_mph": "serve (Eq. 22) [mph]",
+    "serve_eq22_kmh": "serve (Eq. 22) [km/h]",
     "serve_simulated_m_s": "serve (simulated) [m/s]",
     "serve_simulated_mph": "serve (simulated) [mph]",
+    "serve_simulated_kmh": "serve (simulated) [km/h]",
 }
 """Labels of the columns whose names do not read well by :func:`label`'s rule."""
 
@@ -44,7 +47,8 @@ DIMENSIONLESS = frozenset({"e", "e_A", "e0", "e_van_zandt", "mode", "recontacts"
 
 _UNITS = (
     ("_kgcm2", "kg cm^2"), ("_cm2", "cm^2"), ("_in2", "in^2"), ("_m_s2", "m/s^2"),
-    ("_m_s", "m/s"), ("_rad_s", "rad/s"), ("_mph", "mph"), ("_N_m", "N/m"), ("_n_m", "N/m"),
+    ("_m_s", "m/s"), ("_rad_s", "rad/s"), ("_mph", "mph"), ("_kmh", "km/h"), ("_N_m", "N/m"),
+    ("_n_m", "N/m"),
     ("_mm", "mm"), ("_cm", "cm"), ("_ms", "ms"), ("_m", "m"), ("_kg", "kg"), ("_g", "g"),
     ("_N", "N"), ("_Hz", "Hz"), ("_hz", "Hz"), ("_J", "J"), ("_s", "s"), ("_lb", "lb"),
     ("_percent", "%"), ("_fraction", "-"), ("_pts_hl", "pts head-light"),
@@ -107,41 +111,41 @@ def spots_view(spots):
     spots : DataFrame
         The sweet-spot table.
     """
-    view = spots[["said", "from_butt_cm", "from_tip_cm", "meaning"]]
+    view = spots[["said", "from_tip_cm", "meaning"]]
     return view.rename(columns={"said": "spot"})
 
 
-def compare_view(summary, mph: bool, swung: bool):
+def compare_view(summary, unit: str, swung: bool):
     """The summary of ``compare`` (:func:`studies.maps.compare_summary`) as printed: one
     column per racket, one row per quantity, its unit in a ``unit`` column (speeds in mph
-    if ``mph``, else m/s; positions from the butt, as spec sheets give them).
+    in ``unit``; positions from the tip, as everywhere).
 
     Parameters
     ----------
     summary : DataFrame
         One row per racket.
-    mph : bool
-        The user typed speeds in mph.
+    unit : str
+        The unit the user typed speeds in: "m/s", "mph" or "km/h".
     swung : bool
         The rackets were swung (exit speeds), or at rest (the ball's rebound).
     """
     import pandas as pd
 
-    from common.units import MPH
+    from common.units import MPH, SPEED_UNITS
 
-    speed = 1.0 if mph else MPH  # the summary's speeds are in mph
+    speed = MPH / SPEED_UNITS[unit]  # the summary's speeds are in mph
     exit_ = "largest_exit" if swung else "largest_rebound_at_rest"
     rows = [
         ("largest e", "largest_e", "", 1.0),
-        ("  where, from the butt", "largest_e_from_butt_cm", "cm", 1.0),
+        ("  where, from the tip", "largest_e_from_tip_cm", "cm", 1.0),
         ("e at the string centre", "e_at_string_centre", "", 1.0),
         ("e at the tip end of the strings", "e_at_tip_end", "", 1.0),
-        *([("head speed", "head_speed_mph", "mph" if mph else "m/s", speed)] if swung else []),
+        *([("head speed", "head_speed_mph", unit, speed)] if swung else []),
         ("fastest exit" if swung else "best rebound, racket at rest", f"{exit_}_mph",
-         "mph" if mph else "m/s", speed),
-        ("  where, from the butt", f"{exit_}_from_butt_cm", "cm", 1.0),
-        ("node of the first mode, from the butt", "node_from_butt_cm", "cm", 1.0),
-        ("centre of percussion, from the butt", "centre_of_percussion_from_butt_cm", "cm", 1.0),
+         unit, speed),
+        ("  where, from the tip", f"{exit_}_from_tip_cm", "cm", 1.0),
+        ("node of the first mode, from the tip", "node_from_tip_cm", "cm", 1.0),
+        ("centre of percussion, from the tip", "centre_of_percussion_from_tip_cm", "cm", 1.0),
         ("e_A at the string centre", "e_A_centre", "", 1.0),
         ("e_A at 3 o'clock, ball at the frame", "e_A_3_oclock", "", 1.0),
         ("sweet area", "sweet_area_cm2", "cm^2", 1.0),

@@ -9,68 +9,63 @@ from pathlib import Path
 
 import numpy as np
 
-from common.checks import CM_AS_M, KN_AS_N, in_range, shown
-from racket import SUPPORTS
+from common.checks import M_AS_CM, in_range, shown
+from common.units import SPEED_SUFFIXES
 from racket.specs.ra import f1_from_ra, ra_note
 from racket.specs.sheet import SPEC_RANGES
-from studies.cli.files import check_outputs, save_plot, write_table
+from studies.cli.files import check_outputs, save_plot, say_conditions, write_table
 from studies.cli.options import (
     _ball_arg,
     _check_swing,
     _count,
-    _labels,
     _print_table,
-    _racket_arg,
     _scale,
     _scale_options,
     _speed,
     _speed_option,
     _swing,
     _swing_options,
-    _tension,
-    _tension_option,
-    _tensions,
     _typed,
+    speed_unit,
 )
-from studies.cli.show import WIDTH, compare_view, spots_view
-from studies.config import RACKETS, load_ball, load_racket
-from studies.landmarks import HAND_FROM_BUTT
+from studies.cli.racket_options import (
+    add_racket_options,
+    racket_conditions,
+    racket_from,
+    stiffnesses,
+    tensions,
+)
+from studies.cli.show import WIDTH, label
+from studies.config import load_ball
 from studies.sweeps import BALL_SPEED
 
 
 def add_sweep(sub) -> None:
     """The ``sweep`` subcommand, on the subparsers ``sub``."""
     p = sub.add_parser("sweep", help="impacts along the strings, over any parameter grid")
-    _racket_arg(p)
+    add_racket_options(p, many=True)
     _ball_arg(p)
     _speed_option(p, "speed", [BALL_SPEED], "ball speed(s) towards the strings", many=True)
     p.add_argument(
         "--from",
         dest="from_",
         type=float,
-        metavar="M",
-        help="first impact point [m from the tip] (default: start of the strings)",
+        metavar="CM",
+        help="first impact point [cm from the tip] (default: start of the strings)",
     )
     p.add_argument(
         "--to",
         type=float,
-        metavar="M",
-        help="last impact point [m from the tip] (default: end of the strings)",
+        metavar="CM",
+        help="last impact point [cm from the tip] (default: end of the strings)",
     )
     p.add_argument("--points", type=int, default=101, help="impact points (default 101)")
     p.add_argument(
         "--offset",
         type=float,
-        metavar="M",
-        help="impact points' distance from the long axis [m, + towards 3 o'clock]; given "
+        metavar="CM",
+        help="impact points' distance from the long axis [cm, + towards 3 o'clock]; given "
         "(even 0), the roll and torsion modes take part (a spec-sheet racket)",
-    )
-    p.add_argument(
-        "--string-stiffness",
-        type=float,
-        nargs="+",
-        metavar="N_M",
-        help="string-bed stiffness(es) [N/m] (default: the racket's)",
     )
     stiffness = p.add_mutually_exclusive_group()
     stiffness.add_argument(
@@ -87,14 +82,7 @@ def add_sweep(sub) -> None:
         metavar="RA",
         help="or RA rating(s), f1 from the TWU regression (racket.specs.ra; +/- 6 Hz)",
     )
-    p.add_argument(
-        "--support",
-        nargs="+",
-        choices=list(SUPPORTS),
-        help="support(s) (default: the racket's)",
-    )
     _swing_options(p)
-    _tension_option(p, many=True)
     p.add_argument("--out", metavar="FILE", help="table file: .csv, .json or .parquet")
     p.add_argument("--csv", metavar="FILE", help="table as CSV")
     p.add_argument("--json", metavar="FILE", help="table as JSON records")
@@ -103,10 +91,14 @@ def add_sweep(sub) -> None:
     p.set_defaults(func=cmd_sweep)
 
 
+SHOWN_ROWS = 25
+"""About how many rows of a sweep are printed (--out writes them all)."""
+
+
 def cmd_sweep(args) -> int:
     """``racket-impact sweep``."""
     from racket.solver import F1_MIN
-    from studies.sweeps import COLUMNS, F1_MAX, STRING_STIFFNESS_RANGE, check_impacts, sweep
+    from studies.sweeps import COLUMNS, F1_MAX, check_impacts, sweep
 
     check_outputs(
         tables=[("--out", args.out), ("--csv", args.csv), ("--json", args.json)],
@@ -117,20 +109,19 @@ def cmd_sweep(args) -> int:
             raise ValueError(f"{flag} must be a file ending in {kind}, got {path!r}")
     scale = _scale(args)
     points = _count("--points", args.points, 2, 100_000)
-    speeds = _speed(args, "speed", allow_zero=args.swing_speed or args.swing_speed_mph)
-    for k_s in args.string_stiffness or ():
-        in_range("--string-stiffness", k_s, *STRING_STIFFNESS_RANGE, "N/m", slips=(KN_AS_N,))
+    swing = _swing(args)
+    speeds = _speed(args, "speed", allow_zero=swing is not None)
     for f1 in args.f1 or ():
         in_range("--f1", f1, F1_MIN, F1_MAX, "Hz")
     for ra in args.ra or ():
         in_range("--ra", ra, *SPEC_RANGES["ra"][:2])
-    grid = {f"--{name.replace('_', '-')}": getattr(args, name) or () for name in
-            ("speed" if args.speed_mph is None else "speed_mph", "string_stiffness",
-             "tension_lb", "f1", "ra", "support")}  # fmt: skip
+    unit = speed_unit(args, "speed", "swing_speed")
+    speed_flag = _typed(args, "speed")[0]
+    grid = {speed_flag: speeds} | {f"--{name.replace('_', '-')}": getattr(args, name) or () for
+            name in ("string_stiffness", "tension_lb", "f1", "ra", "support")}  # fmt: skip
     sizes = [f"--points {points}"] + [f"{len(v)} {f} values" for f, v in grid.items() if len(v) > 1]
     check_impacts(points * int(np.prod([max(len(v), 1) for v in grid.values()])), " x ".join(sizes))
-    swing = _swing(args)
-    racket, ball = load_racket(args.racket), load_ball(args.ball)
+    racket, ball = racket_from(args, grid=True), load_ball(args.ball)
     ends = _ends(args, racket)
     _check_swing(args, swing, racket, ends)
     for ra in args.ra or ():
@@ -141,91 +132,118 @@ def cmd_sweep(args) -> int:
             ball,
             np.linspace(*ends, points),
             speeds,
-            string_stiffness=args.string_stiffness,
-            tension=_tensions(args),
+            string_stiffness=stiffnesses(args),
+            tension=tensions(args),
             f1=args.f1 or ([f1_from_ra(ra) for ra in args.ra] if args.ra else None),
             support=args.support,
-            offset=args.offset,
+            offset=None if args.offset is None else args.offset / 100,
             swing=swing,
             executor=executor,
         )
-    mph = args.speed_mph is not None or args.swing_speed_mph is not None
-    grid = list(table.columns[len(COLUMNS) :])  # the parameters that vary
-    table = _in_units(table, mph, args.tension_lb is not None)
-    swung = bool(table["swing_speed_m_s"].any())
-    speed = "mph" if mph else "m_s"
-    shown = ["position_from_butt_cm", "e", "e_A"]  # the rest: --out
+    varying = list(table.columns[len(COLUMNS) :])  # the parameters that vary
+    table = _in_units(table, unit, args.tension_lb is not None)
+    conditions = say_conditions(racket_conditions(args, racket, speed=speeds, swing=swing))
+    suffix = SPEED_SUFFIXES[unit]
+    shown = ["position_from_tip_cm", "e", "e_A"]  # the rest: --out
     shown += ["recontacts"] if table["recontacts"].any() else []
-    shown += [f"ball_rebound_{speed}", "vibration_energy_fraction"]
-    shown += [f"swing_speed_{speed}"] if swung else []  # the rebound is the exit speed
-    units = {"speed_m_s": f"speed_{speed}", "tension_N": "tension_lb" if args.tension_lb else None}
-    shown += [units.get(c, c) or c for c in grid]
-    _print_table(table[list(dict.fromkeys(shown))].iloc[:: max(1, len(table) // 25)])
+    shown += [f"ball_rebound_{suffix}", "vibration_energy_fraction"]
+    shown += [f"swing_speed_{suffix}"] if swing is not None else []  # the rebound: exit speed
+    units = {"speed_m_s": f"speed_{suffix}", "tension_N": "tension_lb" if args.tension_lb else None}
+    shown_grid = [units.get(c, c) or c for c in varying]
+    _print_table(_every_group_alike(table, varying)[list(dict.fromkeys(shown + shown_grid))])
     _say_recontacts(table)
     best = table.loc[table["e"].idxmax()]
+    at = ", ".join(f"{label(c)} {_value(best[c])}" for c in shown_grid)
     print(
-        f"\nlargest e = {best['e']:.4f} at {best['position_from_butt_cm']:.1f} cm from the butt "
-        f"({100 * best['position_from_tip_m']:.1f} cm from the tip) "
-        f"({len(table)} impacts)"
+        f"\nlargest e = {best['e']:.4f} at {best['position_from_tip_cm']:.1f} cm from the tip"
+        f"{f' ({at})' if at else ''} ({len(table)} impacts)"
     )
     for path in filter(None, (args.out, args.csv, args.json)):
         write_table(table, path)
     if args.plot:
         from studies.plots import plot_cor_along_racket
 
-        save_plot(plot_cor_along_racket(table, racket), args.plot)
+        save_plot(plot_cor_along_racket(table, racket, conditions=conditions), args.plot)
     return 0
+
+
+def _value(value) -> str:
+    """A grid value as printed beside the largest e."""
+    return f"{value:.4g}" if isinstance(value, float | np.floating) else str(value)
+
+
+def _every_group_alike(table, varying: list[str]):
+    """The rows of a sweep to print: at most about :data:`SHOWN_ROWS`, the same impact
+    points for every combination of the ``varying`` parameters; a line says so when rows
+    are left out.
+    """
+    positions = np.unique(table["position_from_tip_m"].to_numpy())
+    groups = max(1, len(table) // len(positions))
+    keep = max(2, SHOWN_ROWS // groups)
+    if len(positions) <= keep:
+        return table
+    chosen = positions[np.unique(np.linspace(0, len(positions) - 1, keep).round().astype(int))]
+    shown = table[np.isin(table["position_from_tip_m"].to_numpy(), chosen)]
+    each = " and ".join(label(c).split(" [")[0] for c in varying)
+    print(
+        f"({len(shown)} of {len(table)} rows shown: the same {len(chosen)} of {len(positions)} "
+        f"impact points{f' for each {each}' if each else ''}; --out writes all)"
+    )
+    return shown
 
 
 def _ends(args, racket) -> list[float]:
     """The first and last impact points [m from the tip] of ``sweep``: ``--from``/``--to``
-    (on the strings; a value in cm caught), by default the ends of the strings, or with
-    ``--offset`` the ends of the strings that far off the axis (the bed is an ellipse: said
-    in one line).
+    [cm from the tip] (on the strings; a value in m caught), by default the ends of the
+    strings, or with ``--offset`` [cm] the ends of the strings that far off the axis (the bed
+    is an ellipse: said in one line).
     """
-    extent = racket.strings.extent
-    half = 0.5 * racket.strings.full_width
+    extent = [100 * end for end in racket.strings.extent]  # cm from the tip
+    half = 50 * racket.strings.full_width
     offset = None  # (an offset on a racket without roll inertia: refused by the sweep)
     if args.offset is not None and racket.beam.roll_inertia is not None:
         offset = in_range(
-            "--offset", args.offset, -half, half, "m from the long axis", slips=(CM_AS_M,)
+            "--offset", args.offset, -half, half, "cm from the long axis", slips=(M_AS_CM,)
         )
     span = list(extent)
     if offset:
-        shrink = np.sqrt(max(1.0 - (args.offset / half) ** 2, 0.0))
-        middle, reach = racket.strings.center, 0.5 * (extent[1] - extent[0]) * shrink
+        shrink = np.sqrt(max(1.0 - (offset / half) ** 2, 0.0))
+        middle, reach = 100 * racket.strings.center, 0.5 * (extent[1] - extent[0]) * shrink
         span = [middle - reach, middle + reach]
     ends = list(span)
     for k, (flag, value) in enumerate((("--from", args.from_), ("--to", args.to))):
         if value is not None:
             ends[k] = in_range(
-                flag, value, *extent, "m from the tip (the strings)", slips=(CM_AS_M,)
+                flag, value, *extent, "cm from the tip (the strings)", slips=(M_AS_CM,)
             )
             if not span[0] <= ends[k] <= span[1]:
                 raise ValueError(
-                    f"{flag} {shown(value)} is off the strings at --offset {shown(args.offset)}: "
-                    f"there they span {span[0]:.4g}-{span[1]:.4g} m from the tip (the bed is an "
-                    "ellipse); narrow --from/--to to that"
+                    f"{flag} {shown(value)} is off the strings at --offset {shown(offset)}: "
+                    f"there they span {span[0]:.4g}-{span[1]:.4g} cm from the tip (the bed is "
+                    "an ellipse); narrow --from/--to to that"
                 )
     if offset and (args.from_ is None or args.to is None):
         print(
-            f"at --offset {shown(args.offset)} m the strings span {span[0]:.4g}-{span[1]:.4g} m "
+            f"at --offset {shown(offset)} cm the strings span {span[0]:.4g}-{span[1]:.4g} cm "
             "from the tip\n(the bed is an ellipse): the sweep is clipped to them"
         )
-    return ends
+    return [end / 100 for end in ends]
 
 
-def _in_units(table, mph: bool, lb: bool):
-    """``table`` with its speeds also in mph (``mph``: the user typed mph) and its tensions
-    also in lb (``lb``): columns ``*_mph`` and ``tension_lb`` beside the SI ones.
+def _in_units(table, unit: str, lb: bool):
+    """``table`` with its speeds also in ``unit`` (as the user typed them: mph or km/h) and
+    its tensions also in lb (``lb``): columns ``*_mph``/``*_kmh`` and ``tension_lb`` beside
+    the SI ones.
     """
-    from common.units import LB, MPH
+    from common.units import LB, SPEED_SUFFIXES, SPEED_UNITS
 
     extra = {}
-    if mph:
+    if unit != "m/s":
         for name in ("speed_m_s", "ball_rebound_m_s", "swing_speed_m_s", "v_cm_m_s"):
             if name in table:
-                extra[name.replace("_m_s", "_mph")] = table[name] / MPH
+                extra[name.replace("_m_s", f"_{SPEED_SUFFIXES[unit]}")] = (
+                    table[name] / SPEED_UNITS[unit]
+                )
     if lb and "tension_N" in table:
         extra["tension_lb"] = table["tension_N"] / LB
     return table.assign(**extra)
@@ -245,215 +263,3 @@ def _say_recontacts(table) -> None:
                 WIDTH,
             )
         )
-
-
-def add_map(sub) -> None:
-    """The ``map`` subcommand, on the subparsers ``sub``."""
-    p = sub.add_parser("map", help="e, e_A, exit speed, vibration and twist over the face")
-    _racket_arg(p, default="pure-drive-2021")
-    _ball_arg(p)
-    _speed_option(p, "speed", BALL_SPEED, "ball speed towards the strings")
-    _swing_options(p)
-    p.add_argument(
-        "--grid",
-        type=int,
-        nargs=2,
-        default=[15, 9],
-        metavar=("ALONG", "ACROSS"),
-        help="grid points along and across the racket (default 15 9)",
-    )
-    p.add_argument("--support", choices=list(SUPPORTS), help="support (default: the racket's)")
-    _tension_option(p)
-    p.add_argument(
-        "--field", default="e_A", help="what the plot shows: e, e_A, exit_speed, "
-        "exit_speed_swung, vibration_energy or roll_rate (default e_A)",
-    )  # fmt: skip
-    p.add_argument("--out", metavar="FILE", help="table file: .csv, .json or .parquet")
-    p.add_argument("--plot", metavar="FILE", help="the map (.png, .svg, .pdf)")
-    _scale_options(p)
-    p.set_defaults(func=cmd_map)
-
-
-def cmd_map(args) -> int:
-    """``racket-impact map``."""
-    from studies.maps import FIELDS, check_map_points, face_map, face_points
-
-    check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
-    scale = _scale(args)
-    if args.field not in FIELDS:
-        raise ValueError(f"--field must be one of {list(FIELDS)}, got {args.field!r}")
-    grid = tuple(_count("--grid", n, 4, 1000) for n in args.grid)
-    check_map_points(*grid, f"--grid {grid[0]} {grid[1]}")
-    speed = _speed(args, "speed")
-    swing = _swing(args)
-    if args.field == "exit_speed_swung" and swing is None:
-        raise ValueError("--field exit_speed_swung needs --swing-speed (or --swing-speed-mph)")
-    racket = load_racket(args.racket)
-    if args.support:
-        from dataclasses import replace
-
-        racket = replace(racket, support=args.support)
-    if args.tension_lb is not None:
-        from racket.specs.strings import with_tension
-
-        racket = with_tension(racket, _tension(args.tension_lb))
-    ball = load_ball(args.ball)
-    _check_swing(args, swing, racket, face_points(racket, grid, ball.radius)[0])
-    with scale as executor:
-        result = face_map(racket, ball, speed, swing=swing, grid=grid, executor=executor)
-    mph = args.speed_mph is not None or args.swing_speed_mph is not None
-    for line in result.summary(mph):
-        said = textwrap.fill(line.replace(" o'clock", "_o'clock"), WIDTH, subsequent_indent="  ")
-        print(said.replace("_o'clock", " o'clock"))  # "3 o'clock" kept on one line
-    if args.out:
-        write_table(result.to_frame(), args.out)
-    if args.plot:
-        from studies.plots import plot_face_map
-
-        save_plot(plot_face_map(result, args.field), args.plot)
-    return 0
-
-
-def add_sweetspots(sub) -> None:
-    """The ``sweetspots`` subcommand, on the subparsers ``sub``."""
-    p = sub.add_parser("sweetspots", help="nodes, centre of percussion, power spots, sweet area")
-    p.add_argument(
-        "racket",
-        metavar="PRESET_OR_TOML",
-        help=f"racket preset ({', '.join(RACKETS)}) or TOML file with a [racket] table",
-    )
-    _ball_arg(p)
-    _speed_option(p, "speed", BALL_SPEED, "ball speed towards the strings")
-    _swing_options(p)
-    p.add_argument(
-        "--grip-cm-from-butt",
-        type=float,
-        default=100 * HAND_FROM_BUTT,
-        metavar="CM",
-        help="where the hand pivots, for the centre of percussion (default "
-        f"{100 * HAND_FROM_BUTT:g})",
-    )
-    p.add_argument("--out", metavar="FILE", help="table file: .csv, .json or .parquet")
-    p.set_defaults(func=cmd_sweetspots)
-
-
-def cmd_sweetspots(args) -> int:
-    """``racket-impact sweetspots``."""
-    from studies.sweetspots import sweet_spots
-
-    check_outputs(tables=[("--out", args.out)])
-    swing = _swing(args)
-    speed = _speed(args, "speed", allow_zero=swing is not None)
-    grip = in_range("--grip-cm-from-butt", args.grip_cm_from_butt, 0.0, 30.0, "cm") / 100
-    racket, ball = load_racket(args.racket), load_ball(args.ball)
-    _check_swing(args, swing, racket, racket.strings.extent)  # the points span the strings
-    table = sweet_spots(racket, ball, speed, swing, grip)
-    _flag, typed, unit, _ = _typed(args, "speed")
-    print(f"sweet spots of {args.racket} on its strings (ball {args.ball} at {shown(typed)} {unit}"
-          f"{', the racket at rest' if swing is None else ''}):")  # fmt: skip
-    if swing is not None and _typed(args, "swing_speed")[2] == "mph":  # mph in, mph out
-        from common.units import MPH
-
-        fastest = table["spot"] == "largest exit speed"
-        table.loc[fastest, "said"] = [f"fastest exit, {v / MPH:.1f} mph" for v in
-                                      table.loc[fastest, "value"]]  # fmt: skip
-        table.loc[fastest, "meaning"] = f"swung at {swing.head_speed / MPH:.4g} mph head speed"
-    _print_table(spots_view(table), "{:.4g}")
-    if args.out:
-        write_table(table, args.out)
-    return 0
-
-
-def add_compare(sub) -> None:
-    """The ``compare`` subcommand, on the subparsers ``sub``."""
-    p = sub.add_parser("compare", help="e along the strings of two or more rackets")
-    p.add_argument(
-        "--racket",
-        action="append",
-        metavar="PRESET_OR_TOML",
-        help="a racket, as PRESET_OR_TOML or LABEL=PRESET_OR_TOML (repeat; default: paper "
-        "and pure-drive-2021)",
-    )
-    _ball_arg(p)
-    _speed_option(p, "speed", BALL_SPEED, "ball speed towards the strings")
-    p.add_argument("--points", type=int, default=101, help="impact points per racket")
-    p.add_argument("--support", choices=list(SUPPORTS), help="support for every racket")
-    _swing_options(p)
-    p.add_argument(
-        "--equal-effort",
-        action="store_true",
-        help="the swing is the first racket's; every other racket is swung at the same "
-        "effort, slower the larger its swingweight: head speed x (I_first / I)^0.27 (Cross "
-        "and Bower 2006)",
-    )
-    _tension_option(p, many=True)
-    p.add_argument("--out", metavar="FILE", help="the summary printed: .csv, .json or .parquet")
-    p.add_argument(
-        "--long",
-        action="store_true",
-        help="--out writes the long table instead: every impact of every racket",
-    )
-    p.add_argument("--plot", metavar="FILE", help="comparison plot (.png, .svg, .pdf)")
-    _scale_options(p)
-    p.set_defaults(func=cmd_compare)
-
-
-def cmd_compare(args) -> int:
-    """``racket-impact compare``."""
-    from studies.maps import compare_summary
-    from studies.sweeps import check_impacts, compare
-
-    check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
-    scale = _scale(args)
-    points = _count("--points", args.points, 2, 100_000)
-    swing = _swing(args)
-    speed = _speed(args, "speed", allow_zero=swing is not None)
-    names = args.racket or ["paper", "pure-drive-2021"]
-    if len(names) < 2:
-        raise ValueError(f"compare needs two or more --racket, got {len(names)}")
-    labelled = _labels(names)
-    check_impacts(points * len(names), f"--points {points} x {len(names)} --racket")
-    rackets = {label: load_racket(spec) for label, spec in labelled}
-    for racket in rackets.values():  # the points span each racket's strings
-        _check_swing(args, swing, racket, racket.strings.extent)
-    if args.support:
-        from dataclasses import replace
-
-        rackets = {k: replace(r, support=args.support) for k, r in rackets.items()}
-    ball = load_ball(args.ball)
-    if args.long and not args.out:
-        raise ValueError("--long needs --out (the file of the long table)")
-    if args.tension_lb is not None:  # every racket at every tension
-        from racket.specs.strings import with_tension
-
-        tensions = [(lb, _tension(lb)) for lb in args.tension_lb]
-        rackets = {
-            label if len(tensions) == 1 else f"{label} {shown(lb)} lb": with_tension(racket, n)
-            for label, racket in rackets.items()
-            for lb, n in tensions
-        }
-    if args.equal_effort and swing is None:
-        raise ValueError("--equal-effort needs a swing: --swing-speed or --swing-speed-mph")
-    with scale as executor:
-        table = compare(
-            rackets, ball, speed, points, swing=swing,
-            equal_effort=args.equal_effort, executor=executor,
-        )  # fmt: skip
-    summary = compare_summary(rackets, table, ball, speed)
-    _flag, typed, unit, _ = _typed(args, "speed")
-    said = f"ball {args.ball} at {shown(typed)} {unit}, the rackets at rest"
-    if swing is not None:
-        _flag, head, head_unit, _ = _typed(args, "swing_speed")
-        said = f"ball {args.ball} at {shown(typed)} {unit}, the rackets swung at {shown(head)} "
-        said += f"{head_unit} head speed" + (" (equal effort)" if args.equal_effort else "")
-    print(said)
-    mph = args.speed_mph is not None or args.swing_speed_mph is not None
-    _print_table(compare_view(summary, mph, swung=swing is not None))
-    if args.out:
-        write_table(table if args.long else summary, args.out)
-    if args.plot:
-        from studies.plots import plot_cor_comparison
-
-        groups = {k: g for k, g in table.groupby("racket", sort=False)}
-        save_plot(plot_cor_comparison(groups), args.plot)
-    return 0

@@ -20,16 +20,15 @@ def add_validate(sub) -> None:
 
 def cmd_validate(args) -> int:
     """``racket-impact validate``."""
-    import pandas as pd
-
     from studies import validation
 
     check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
     table = validation.validation_table()
-    with pd.option_context("display.max_colwidth", 80):
-        shown = table.reset_index(drop=True)[["quantity", "measured", "model", "agrees", "kind"]]
-        who = [re.split(r",| \(", source)[0] for source in table["source"]]  # the rest: --out
-        _print_table(shown.assign(source=who))
+    band = [f"{low:.4g}-{high:.4g}" for low, high in zip(table["low"], table["high"], strict=True)]
+    shown = table.reset_index(drop=True)[["quantity", "measured", "model", "agrees", "kind"]]
+    shown.insert(1, "band", band)  # the values accepted, beside the measured one
+    who = [re.split(r",| \(", source)[0] for source in table["source"]]  # the rest: --out
+    _print_table(shown.assign(source=who))
     print()
     said = f"{validation.summary(table)} (each one's name, band, conditions and source: --out FILE)"
     print(textwrap.fill(said, WIDTH))

@@ -8,9 +8,18 @@ import numpy as np
 
 from ball import Ball, LinearSpring, SineLaw, collide, unhappy_cor
 from studies.plots.axes import _axes
+from studies.plots.layout import finish, legend_outside
+from studies.plots.units import speed_scale
 
 
-def plot_collision(collision, ax=None, title: str | None = None, names=("ball a", "ball b")):
+def plot_collision(
+    collision,
+    ax=None,
+    title: str | None = None,
+    names=("ball a", "ball b"),
+    unit: str = "m/s",
+    conditions: str | None = None,
+):
     """A two-ball collision against time, as in the paper's Figs. 2-4: force; compressions
     X, Y and X_T = X + Y; velocities of both bodies.
 
@@ -24,7 +33,14 @@ def plot_collision(collision, ax=None, title: str | None = None, names=("ball a"
         Title of the top panel; None: the COR.
     names : (str, str)
         What the two bodies are, e.g. ("unhappy", "happy") or ("tennis", "wall").
+    unit : str
+        The velocities' unit, one of :data:`common.units.SPEED_UNITS` (the one the user
+        typed).
+    conditions : str, optional
+        The run's conditions, drawn as the figure's heading; None: none drawn.
     """
+    size = speed_scale(unit)
+    made = ax is None
     axes = _axes(ax, 3)
     h = collision.history
     t = 1e3 * h.t
@@ -35,17 +51,17 @@ def plot_collision(collision, ax=None, title: str | None = None, names=("ball a"
     axes[1].plot(t, 1e3 * h.compression_b, color="C2", label=f"Y ({b})")
     axes[1].plot(t, 1e3 * h.total_compression, color="k", ls="--", label="X_T = X + Y")
     axes[1].set_ylabel("compression [mm]")
-    axes[2].plot(t, h.velocity_a, color="C1", label=a)
-    axes[2].plot(t, h.velocity_b, color="C2", label=b)
-    axes[2].set_ylabel("velocity [m/s]")
+    axes[2].plot(t, h.velocity_a / size, color="C1", label=a)
+    axes[2].plot(t, h.velocity_b / size, color="C2", label=b)
+    axes[2].set_ylabel(f"velocity [{unit}]")
     axes[2].set_xlabel("time [ms]")
     for panel in axes:
-        panel.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize="small")
+        legend_outside(panel)
     axes[0].set_title(title or f"e = {collision.e:.3f}")
-    return axes
+    return finish(axes, conditions, made)
 
 
-def plot_drop(result, ax=None):
+def plot_drop(result, ax=None, conditions: str | None = None):
     """A dropped ball's contact (:func:`studies.drop.drop`): the force [N] and the ball's
     compression [mm] against time [ms].
 
@@ -55,7 +71,10 @@ def plot_drop(result, ax=None):
         The drop.
     ax : sequence of 2 Axes, optional
         The Axes of the two panels; None: a new figure's.
+    conditions : str, optional
+        The run's conditions, drawn as the figure's heading; None: none drawn.
     """
+    made = ax is None
     axes = _axes(ax, 2)
     t = 1e3 * result.t
     axes[0].plot(t, result.force, color="C0")
@@ -67,11 +86,16 @@ def plot_drop(result, ax=None):
         f"dropped from {result.height:g} m, bounces to {result.bounce_height:.3g} m "
         f"(rebound ratio {result.rebound_ratio:.3f})"
     )
-    return axes
+    return finish(axes, conditions, made)
 
 
 def plot_cor_vs_stiffness(
-    ax=None, k0: float = 2e4, ratios=None, mass: float = 0.0103, speed: float = 4.0
+    ax=None,
+    k0: float = 2e4,
+    ratios=None,
+    mass: float = 0.0103,
+    speed: float = 4.0,
+    conditions: str | None = None,
 ):
     """E of an unhappy ball (k0) on happy balls against k2/k0: the integration (markers)
     and Eq. 16 (line).
@@ -88,7 +112,10 @@ def plot_cor_vs_stiffness(
         Mass of each ball [kg].
     speed : float, optional
         Speed of the unhappy ball at first touch, the happy ball at rest [m/s].
+    conditions : str, optional
+        The run's conditions, drawn as the figure's heading; None: none drawn.
     """
+    made = ax is None
     ax = _axes(ax, 1)
     ratios = np.geomspace(0.05, 10, 16) if ratios is None else np.asarray(ratios)
     unhappy = Ball(mass, SineLaw(k0))
@@ -105,11 +132,18 @@ def plot_cor_vs_stiffness(
     ax.set_xscale("log")
     ax.set_xlabel("k2 / k0 [-]")
     ax.set_ylabel("e [-]")
-    ax.legend(fontsize="small")
-    return ax
+    legend_outside(ax)
+    return finish(ax, conditions, made)
 
 
-def plot_rigid_bounce(table, ax=None, radius: float | None = None, bands=None):
+def plot_rigid_bounce(
+    table,
+    ax=None,
+    radius: float | None = None,
+    bands=None,
+    unit: str = "m/s",
+    conditions: str | None = None,
+):
     """A ball's rigid-surface bounce against impact speed (:func:`studies.bounce.
     rigid_bounce_table`): COR, contact time [ms], peak force [kN] and peak compression [mm],
     with what is sourced at the 254 cm drop (the ITF rebound band of the ball's type, a
@@ -128,6 +162,11 @@ def plot_rigid_bounce(table, ax=None, radius: float | None = None, bands=None):
     bands : ItfBands, optional
         The ITF bands of the ball's type (:mod:`ball.catalog`), for a tennis ball; None
         (any other ball): no tennis measurement is drawn.
+    unit : str
+        The impact speed's unit, one of :data:`common.units.SPEED_UNITS` (the one the user
+        typed).
+    conditions : str, optional
+        The run's conditions, drawn as the figure's heading; None: none drawn.
     """
     from ball.catalog import (
         CALIBRATION_SPEED,
@@ -139,12 +178,14 @@ def plot_rigid_bounce(table, ax=None, radius: float | None = None, bands=None):
         TYPE_2_BANDS,
     )
 
+    size = speed_scale(unit)
+    made = ax is None
     ax = _axes(ax, 4)
-    v = table["speed_m_s"]
+    v = table["speed_m_s"] / size
 
     def sourced(axis, value, band, scale, label):
         low, high, mid = scale * band[0], scale * band[1], scale * value
-        axis.errorbar([ITF_DROP_SPEED], [mid], yerr=[[mid - low], [high - mid]], fmt="s",
+        axis.errorbar([ITF_DROP_SPEED / size], [mid], yerr=[[mid - low], [high - mid]], fmt="s",
                       color="k", capsize=4, label=label)  # fmt: skip
 
     tennis = bands is not None
@@ -154,13 +195,13 @@ def plot_rigid_bounce(table, ax=None, radius: float | None = None, bands=None):
         sourced(ax[0], 0.5 * (cor[0] + cor[1]), cor, 1.0, "ITF rebound band (254 cm drop)")
         if bands == TYPE_2_BANDS:
             ax[0].errorbar(
-                [CALIBRATION_SPEED],
+                [CALIBRATION_SPEED / size],
                 [COR_AT_30],
                 fmt="D",
                 color="tab:red",
                 yerr=[[COR_AT_30 - COR_AT_30_RANGE[0]], [COR_AT_30_RANGE[1] - COR_AT_30]],
                 capsize=4,
-                label="type 2 at 30 m/s: assumed, with its range",
+                label=f"type 2 at {CALIBRATION_SPEED / size:.3g} {unit}: assumed, with its range",
             )
     ax[0].set_ylabel("COR on a rigid surface [-]")
     ax[1].plot(v, 1e3 * table["contact_time_s"], "o-", label="simulated")
@@ -180,7 +221,7 @@ def plot_rigid_bounce(table, ax=None, radius: float | None = None, bands=None):
     if radius is not None:
         ax[3].axhline(1e3 * radius, ls="--", color="gray", label="ball radius")
     ax[3].set_ylabel("peak compression [mm]")
-    ax[3].set_xlabel("impact speed [m/s]")
+    ax[3].set_xlabel(f"impact speed [{unit}]")
     for panel in ax:
-        panel.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize="small")
-    return ax
+        legend_outside(panel)
+    return finish(ax, conditions, made)

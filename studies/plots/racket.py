@@ -1,5 +1,6 @@
-"""Plots along the racket: e and e_A against the impact point (with the racket drawn
-beside them), several rackets compared, one impact's histories, and the mode shapes.
+"""Plots along the racket: e and e_A against the impact point (with the racket drawn to
+scale above them), several rackets compared, one impact's histories, and the mode shapes.
+Positions are measured from the tip, in cm.
 """
 
 from __future__ import annotations
@@ -7,30 +8,53 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.patches import Ellipse, Rectangle
 
+from common.units import SPEED_SUFFIXES, SPEED_UNITS
 from racket import Racket
 from studies.landmarks import hand_pivot, percussion_centre, rigid_centre_of_percussion
 from studies.plots.axes import _axes
+from studies.plots.layout import FROM_TIP, finish, legend_outside
+from studies.plots.units import speed_scale
 from studies.sweeps import PARAMETERS
 
-_SAID = {  # a sweep parameter's column -> (words, the column in the unit typed, its unit)
-    "speed_m_s": ("ball at", ("speed_mph", "mph"), "m/s"),
-    "string_stiffness_N_m": ("strings", None, "N/m"),
-    "tension_N": ("strung at", ("tension_lb", "lb"), "N"),
-    "f1_Hz": ("f1", None, "Hz"),
+_TYPED_SPEEDS = tuple((f"speed_{SPEED_SUFFIXES[u]}", u) for u in SPEED_UNITS if u != "m/s")
+_SAID = {  # a sweep parameter's column -> (words, the columns in units typed, its unit)
+    "speed_m_s": ("ball at", _TYPED_SPEEDS, "m/s"),
+    "string_stiffness_N_m": ("strings", (), "N/m"),
+    "tension_N": ("strung at", (("tension_lb", "lb"),), "N"),
+    "f1_Hz": ("f1", (), "Hz"),
 }
+
+_NODE = dict(color="k", ls="--")
+_COP = dict(color="0.45", ls=":")
+"""The landmarks' lines: black and grey, which no curve's colour (:func:`_colours`) is."""
+
+
+def _colours(count: int) -> list:
+    """``count`` colours for curves, distinct from each other and from the landmarks'
+    black and grey: tableau's, without its grey, then viridis' for more than nine.
+    """
+    tableau = ["tab:blue", "tab:orange", "tab:green", "tab:red", "tab:purple", "tab:brown",
+               "tab:pink", "tab:olive", "tab:cyan"]  # fmt: skip
+    if count <= len(tableau):
+        return tableau[:count]
+    from matplotlib import colormaps
+
+    return [colormaps["viridis"](v) for v in np.linspace(0.0, 0.9, count)]
 
 
 def _said(key: str, g) -> str:
     """One grid point's value of the parameter column ``key`` in words, with its unit (in
-    mph or lb when the table has those columns, as the command line adds when they were
-    typed).
+    mph, km/h or lb when the table has those columns, as the command line adds when they
+    were typed).
     """
     value = g[key].iloc[0]
     if key not in _SAID:
         return str(value)
     words, typed, unit = _SAID[key]
-    if typed is not None and typed[0] in g:
-        value, unit = g[typed[0]].iloc[0], typed[1]
+    for column, typed_unit in typed:
+        if column in g:
+            value, unit = g[column].iloc[0], typed_unit
+            break
     return f"{words} {value:.4g} {unit}"
 
 
@@ -69,11 +93,6 @@ def _sorted(label, x, e, e_a, flagged, again=None):
 
 RECONTACT = "re-contact: the ball caught again by the vibrating strings (e sums both)"
 """The legend of the impacts marked as re-contacts."""
-
-
-def _legend_outside(ax) -> None:
-    """The legend to the right of the Axes, off the data."""
-    ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize="small", borderaxespad=0)
 
 
 def draw_racket(racket: Racket, ax, y0: float, height: float):
@@ -160,15 +179,19 @@ def _simulated_cop(result, racket: Racket, pivot: float):
     return None if np.isnan(cop) else cop
 
 
-def plot_cor_along_racket(result, racket: Racket, ax=None, pivot: float | None = None):
-    """E and e_A along the racket, with the racket drawn to scale below the curves.
+def plot_cor_along_racket(
+    result, racket: Racket, ax=None, pivot: float | None = None, conditions: str | None = None
+):
+    """E and e_A along the racket, with the racket drawn to scale in its own strip above the
+    curves (sharing their x axis, in cm from the tip).
 
     Marks the mode-1 node, the centre of percussion for a pivot at the hand (default
     :func:`studies.landmarks.hand_pivot`; from the impacts, :func:`studies.landmarks.
     percussion_centre`, for one curve of a racket at rest, else the rigid-body formula),
     the points of largest e and largest e_A, and
     (with a cross) the unhappy-ball impacts that have no self-consistent Xo.  A sweep table
-    over a grid draws one pair of curves per grid point, labelled with its parameters.
+    over a grid draws one pair of curves per grid point, labelled with its parameters (a
+    speed in the unit typed when the table has its ``speed_mph`` or ``speed_kmh`` column).
 
     Parameters
     ----------
@@ -181,19 +204,23 @@ def plot_cor_along_racket(result, racket: Racket, ax=None, pivot: float | None =
     pivot : float, optional
         Pivot of the centre of percussion [m from the tip]; None: the hand
         (:func:`studies.landmarks.hand_pivot`).
+    conditions : str, optional
+        The run's conditions, drawn as the figure's heading; None: none drawn.
     """
+    made = ax is None
     ax = _axes(ax, 1)
     curves = list(_curves(result))
     single = len(curves) == 1
-    lows, tops, marked, caught = [0.0], [1.0], False, False
-    for k, (label, x, e, e_a, flagged, again) in enumerate(curves):
+    colours = ["tab:blue"] if single else _colours(len(curves))
+    marked, caught = False, False
+    for colour, (label, x, e, e_a, flagged, again) in zip(colours, curves, strict=True):
         cm = 100 * x
         if single:
-            e_style = dict(color="C0", label="e (Eq. 21, rigid-body motion)")
-            a_style = dict(color="C1", lw=2, label="e_A = V1/v1 (apparent)")
+            e_style = dict(color="tab:blue", label="e (Eq. 21, rigid-body motion)")
+            a_style = dict(color="tab:orange", lw=2, label="e_A = V1/v1 (apparent)")
         else:
-            e_style = dict(color=f"C{k}", label=f"e ({label})")
-            a_style = dict(color=f"C{k}", lw=1.5, ls="--", label=f"e_A ({label})")
+            e_style = dict(color=colour, label=f"e ({label})")
+            a_style = dict(color=colour, lw=1.5, ls="--", label=f"e_A ({label})")
         ax.plot(cm, e, lw=2, **e_style)
         ax.plot(cm, e_a, **a_style)
         if np.any(flagged):
@@ -204,35 +231,37 @@ def plot_cor_along_racket(result, racket: Racket, ax=None, pivot: float | None =
             label = "_" if caught else RECONTACT
             ax.plot(cm[again], e[again], "o", mfc="none", color="k", ms=8, label=label)
             caught = True
-        lows.append(np.nanmin(e_a))
-        tops.append(np.nanmax(e))
     if single:
         _, x, e, e_a, _, _ = curves[0]
         cm = 100 * x
         i, j = int(np.argmax(e)), int(np.argmax(e_a))
         for k, y, mark, name in ((i, e, "o", "e"), (j, e_a, "s", "e_A")):
-            color = "C0" if name == "e" else "C1"
-            label = f"largest {name} {y[k]:.3f} at {cm[k]:.1f} cm"
+            color = "tab:blue" if name == "e" else "tab:orange"
+            label = f"largest {name} {y[k]:.3f} at {cm[k]:.1f} cm from the tip"
             ax.plot(cm[k], y[k], mark, color=color, ms=8, label=label)
     node = racket.beam.modes.nodes(1)[0]
-    ax.axvline(100 * node, color="C2", ls="--", label=f"mode-1 node {100 * node:.1f} cm")
+    ax.axvline(100 * node, **_NODE, label=f"mode-1 node {100 * node:.1f} cm from the tip")
     pivot = hand_pivot(racket) if pivot is None else pivot
     cop = _simulated_cop(result, racket, pivot) if single else None
     how = "" if cop is not None else " (rigid body)"
     cop = rigid_centre_of_percussion(racket, pivot) if cop is None else cop
-    ax.axvline(100 * cop, color="C3", ls=":", label=f"centre of percussion{how} {100 * cop:.1f} cm")
-    low, top = min(lows), max(tops)
-    band = 0.35 * (top - low)
-    draw_racket(racket, ax, low - 1.15 * band, band)
+    ax.axvline(
+        100 * cop, **_COP, label=f"centre of percussion{how} {100 * cop:.1f} cm from the tip"
+    )
     ax.set_xlim(-2, 100 * racket.beam.length + 2)
-    ax.set_ylim(low - 1.25 * band, top + 0.05)
-    ax.set_xlabel("impact point [cm from the tip]")
+    ax.set_xlabel(f"impact point, {FROM_TIP}")
     ax.set_ylabel("coefficient of restitution [-]")
-    _legend_outside(ax)
-    return ax
+    strip = ax.inset_axes([0.0, 1.03, 1.0, 0.22], sharex=ax)
+    draw_racket(racket, strip, 0.0, 1.0)
+    strip.set_ylim(-0.05, 1.05)
+    strip.set_axis_off()
+    legend_outside(ax)
+    return finish(ax, conditions, made)
 
 
-def plot_cor_comparison(results, ax=None, show_apparent: bool = True):
+def plot_cor_comparison(
+    results, ax=None, show_apparent: bool = True, conditions: str | None = None
+):
     """E along the strings for several rackets on one Axes.
 
     Parameters
@@ -244,9 +273,12 @@ def plot_cor_comparison(results, ax=None, show_apparent: bool = True):
         The Axes to draw on; None: a new figure's.
     show_apparent : bool
         Also draw e_A (dashed, same colour).
+    conditions : str, optional
+        The run's conditions, drawn as the figure's heading; None: none drawn.
     """
+    made = ax is None
     ax = _axes(ax, 1)
-    for k, (label, result) in enumerate(results.items()):
+    for colour, (label, result) in zip(_colours(len(results)), results.items(), strict=True):
         curves = list(_curves(result))
         if len(curves) != 1:
             raise ValueError(
@@ -254,28 +286,27 @@ def plot_cor_comparison(results, ax=None, show_apparent: bool = True):
                 f"({', '.join(c[0] for c in curves[:3])}, ...)"
             )
         _, x, e, e_a, _, again = curves[0]
-        color = f"C{k}"
         best = int(np.argmax(e))
         ax.plot(
             100 * x,
             e,
-            color=color,
+            color=colour,
             lw=2,
-            label=f"{label}: e, largest {e[best]:.3f} at {100 * x[best]:.1f} cm",
+            label=f"{label}: e, largest {e[best]:.3f} at {100 * x[best]:.1f} cm from the tip",
         )
         if show_apparent:
-            ax.plot(100 * x, e_a, color=color, ls="--", lw=1.2, label="_e_A")
+            ax.plot(100 * x, e_a, color=colour, ls="--", lw=1.2, label="_e_A")
         if np.any(again):
             label = RECONTACT if not any(RECONTACT == t.get_label() for t in ax.lines) else "_"
             ax.plot(100 * x[again], e[again], "o", mfc="none", color="k", ms=8, label=label)
-    ax.set_xlabel("impact point [cm from the tip]")
+    ax.set_xlabel(f"impact point, {FROM_TIP}")
     ax.set_ylabel("coefficient of restitution [-]")
     ax.set_title("e (solid) and e_A (dashed) along the strings" if show_apparent else "e")
-    _legend_outside(ax)
-    return ax
+    legend_outside(ax)
+    return finish(ax, conditions, made)
 
 
-def plot_impact(result, ax=None):
+def plot_impact(result, ax=None, unit: str = "m/s", conditions: str | None = None):
     """Force, compressions and velocities of one impact against time (three panels); the
     impact point's velocity is split into its dc (rigid-body) and ac (vibration) parts.
 
@@ -285,9 +316,16 @@ def plot_impact(result, ax=None):
         An :func:`racket.impact` at one position with ``histories=True`` (SI).
     ax : sequence of 3 Axes, optional
         The Axes of the three panels; None: a new figure's.
+    unit : str
+        The velocities' unit, one of :data:`common.units.SPEED_UNITS` (the one the user
+        typed).
+    conditions : str, optional
+        The run's conditions, drawn as the figure's heading; None: none drawn.
     """
     if result.t is None:
         raise ValueError("plot_impact needs the histories: impact(..., histories=True)")
+    size = speed_scale(unit)
+    made = ax is None
     axes = _axes(ax, 3)
     t = 1e3 * result.t
     axes[0].plot(t, result.force, color="C0", label="contact force")
@@ -295,34 +333,28 @@ def plot_impact(result, ax=None):
     axes[1].plot(t, 1e3 * result.ball_compression, color="C1", label="ball compression")
     axes[1].plot(t, 1e3 * result.string_deflection, color="C2", label="string deflection")
     axes[1].set_ylabel("compression [mm]")
-    axes[2].plot(t, result.ball_velocity, color="C1", label="ball")
-    axes[2].plot(t, result.point_velocity, color="k", label="impact point, total")
-    axes[2].plot(
-        t,
-        result.point_velocity_dc_history,
-        color="C0",
-        ls="--",
-        label="impact point, dc (rigid body)",
-    )
-    axes[2].plot(
-        t,
-        result.point_velocity_ac_history,
-        color="C3",
-        ls=":",
-        label="impact point, ac (vibration)",
-    )
-    axes[2].set_ylabel("velocity [m/s]")
+    velocities = (
+        (result.ball_velocity, dict(color="C1", label="ball")),
+        (result.point_velocity, dict(color="k", label="impact point, total")),
+        (result.point_velocity_dc_history, dict(color="C0", ls="--",
+                                                label="impact point, dc (rigid body)")),
+        (result.point_velocity_ac_history, dict(color="C3", ls=":",
+                                                label="impact point, ac (vibration)")),
+    )  # fmt: skip
+    for values, style in velocities:
+        axes[2].plot(t, np.asarray(values) / size, **style)
+    axes[2].set_ylabel(f"velocity [{unit}]")
     axes[2].set_xlabel("time [ms]")
     for a in axes:
-        a.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize="small")
+        legend_outside(a)
     axes[0].set_title(
         f"impact at {100 * float(result.position):.1f} cm from the tip, "
         f"e = {float(result.e):.3f}, e_A = {float(result.e_A):.3f}"
     )
-    return axes
+    return finish(axes, conditions, made)
 
 
-def plot_modes(racket: Racket, ax=None, count: int = 4):
+def plot_modes(racket: Racket, ax=None, count: int = 4, conditions: str | None = None):
     """The first ``count`` bending-mode shapes along the racket, frequencies in the legend
     and nodes marked.
 
@@ -334,26 +366,29 @@ def plot_modes(racket: Racket, ax=None, count: int = 4):
         The Axes to draw on; None: a new figure's.
     count : int, optional
         Bending modes to draw (at most as many as the beam has).
+    conditions : str, optional
+        The run's conditions, drawn as the figure's heading; None: none drawn.
     """
+    made = ax is None
     ax = _axes(ax, 1)
     modes = racket.beam.modes
     count = min(count, modes.count - 2)
     x = np.linspace(0.0, racket.beam.length, 400)
     shapes = modes.shape(x)[2 : 2 + count]
-    for k, shape in enumerate(shapes, start=1):
+    for k, (shape, colour) in enumerate(zip(shapes, _colours(count), strict=True), start=1):
         scale = np.abs(shape).max()
         ax.plot(
             100 * x,
             shape / scale,
-            color=f"C{k - 1}",
+            color=colour,
             label=f"mode {k}: {modes.frequencies[k - 1]:.0f} Hz",
         )
         nodes = modes.nodes(k)
-        ax.plot(100 * nodes, np.zeros_like(nodes), "o", color=f"C{k - 1}", ms=5)
+        ax.plot(100 * nodes, np.zeros_like(nodes), "o", color=colour, ms=5)
     ax.axhline(0, color="0.6", lw=0.8)
     start, end = (100 * v for v in racket.strings.extent)
     ax.axvspan(start, end, color="0.9", label="strings")
-    ax.set_xlabel("position [cm from the tip]")
+    ax.set_xlabel(f"position along the racket, {FROM_TIP}")
     ax.set_ylabel("mode shape (normalised) [-]")
-    _legend_outside(ax)
-    return ax
+    legend_outside(ax)
+    return finish(ax, conditions, made)

@@ -5,9 +5,10 @@ stiffness (Sec. VIII).
 from __future__ import annotations
 
 from studies.plots.axes import _axes
+from studies.plots.layout import finish, legend_outside
 
 
-def plot_serve_what_if(table, ax=None):
+def plot_serve_what_if(table, ax=None, conditions: str | None = None):
     """Serve-speed reduction of a zero-COR ball against string and ball stiffness (the
     table of :func:`studies.serve.serve_what_if`).
 
@@ -17,7 +18,10 @@ def plot_serve_what_if(table, ax=None):
         The table of :func:`studies.serve.serve_what_if` (stiffness values [N/m]).
     ax : Axes, optional
         The Axes to draw on; None: a new figure's.
+    conditions : str, optional
+        The run's conditions, drawn as the figure's heading; None: none drawn.
     """
+    made = ax is None
     ax = _axes(ax, 1)
     for (varied, group), marker in zip(table.groupby("varied", sort=False), "os", strict=False):
         label = "string-bed stiffness" if varied == "strings" else "ball stiffness"
@@ -25,5 +29,5 @@ def plot_serve_what_if(table, ax=None):
     ax.set_xscale("log")
     ax.set_xlabel("stiffness [N/m]")
     ax.set_ylabel("serve-speed reduction, zero-COR ball [%]")
-    ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize="small")
-    return ax
+    legend_outside(ax)
+    return finish(ax, conditions, made)

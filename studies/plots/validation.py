@@ -4,8 +4,11 @@ from __future__ import annotations
 
 import numpy as np
 
+from studies.plots.axes import _axes
+from studies.plots.layout import finish, legend_outside
 
-def plot_validation(table, ax=None):
+
+def plot_validation(table, ax=None, conditions: str | None = None):
     """The model against published measurements (:func:`studies.validation.
     validation_table`), one row per comparison, normalised: each measured band is mapped to
     [-1, 1] (its middle at 0), the published value (black bar) and the model (filled:
@@ -18,11 +21,11 @@ def plot_validation(table, ax=None):
         The table of :func:`studies.validation.validation_table` (indexed by name).
     ax : Axes, optional
         Where to draw; None: a new figure's.
+    conditions : str, optional
+        The run's conditions, drawn as the figure's heading; None: none drawn.
     """
-    if ax is None:
-        import matplotlib.pyplot as plt
-
-        _, ax = plt.subplots(figsize=(7.0, 1.6 + 0.22 * len(table)))
+    made = ax is None
+    ax = _axes(ax, 1, figsize=(7.0, 1.6 + 0.22 * len(table)))
     limit = 4.0
     mid = 0.5 * (table["low"] + table["high"]).to_numpy(float)
     half = 0.5 * (table["high"] - table["low"]).to_numpy(float)
@@ -52,5 +55,5 @@ def plot_validation(table, ax=None):
     ax.set_xlim(-limit - 0.3, limit + 0.3)
     ax.set_ylim(-0.7, len(table) - 0.3)
     ax.set_xlabel("(value - middle of the measured band) / half its width [-]")
-    ax.legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.02, 1.0))
-    return ax
+    legend_outside(ax, fontsize="x-small")
+    return finish(ax, conditions, made)

@@ -2,7 +2,7 @@
 
 Every comparison runs the model under the measurement's own conditions (ball type and speed,
 support, hand, racket, tension) and asks whether its value lies in the measured band.  The
-numbers are those of ``../shared/data/measurements.md`` (sources and conditions there), each
+numbers are those of ``data/measurements.md`` (sources and conditions there), each
 with its source beside it; where a source states no uncertainty, the band used is **an
 assumption** and says so (``band``).
 

@@ -23,6 +23,10 @@ BALL = "itf-type-2"
 """The ball of every racket comparison: the ITF type 2 (medium) ball, the pressurised ball
 of ordinary play (assumption: the sources name no ball type)."""
 
+STRUNG = "{0.name} at {0.specs[tension_lb]:g} lb".format(CATALOG["pure-drive-2021"])
+"""The racket of the comparisons whose source names none, as each row says it: its name and
+string tension, "Babolat Pure Drive (2021) at 55 lb" (:data:`racket.CATALOG`)."""
+
 DROP_1M_SPEED = math.sqrt(2.0 * GRAVITY * 1.0)
 """Speed [m/s] of a ball dropped from 1 m (4.43 m/s; air drag neglected): Cross's drop onto
 clamped strings, and the low-speed drop assumed for the seed paper's clamped-string e and
@@ -46,6 +50,11 @@ measured (its lateral offsets run from -80 to +60 mm; ``measurements.md`` sectio
 GRABINER_SPEED = math.sqrt(2.0 * GRAVITY * 5.75)
 """Ball speed [m/s] of Grabiner, Groppel and Campbell's drops, from 5.75 m: 10.62 m/s
 (``measurements.md`` section 3)."""
+
+TWU_SHEET = CATALOG["pure-drive-2021"].specs | dict(mass_kg=0.291, swingweight_kgcm2=315.0)
+"""TWU part 1's racket as a spec sheet: the Pure Drive (2021) sheet at TWU's 291 g and a
+swingweight of 315 kg cm^2 (assumption: TWU gives the mass and a 100 in^2 class head, not
+the swingweight)."""
 
 TWU_LEAD = 0.0134
 """Lead tape per side [kg] in TWU part 1: 26.8 g in all, at 3 and at 9 o'clock."""
@@ -171,14 +180,11 @@ def _hamori_ms(racket: str, tension_lb: float, stroke: str) -> float:
 
 @cache
 def _twu_part_1() -> dict:
-    """e_A of TWU's hand-held 291 g racket at the centre and at 3 o'clock
-    (:data:`TWU_OFFSET` off the axis), with and without the lead.  The racket: the Pure
-    Drive (2021) sheet at 291 g and swingweight 315 kg cm^2 (assumption: TWU gives the mass
-    and a 100 in^2 class head, not the swingweight), the medium grip; the tip resting on the
-    floor is left out.
+    """e_A of TWU's hand-held 291 g racket (:data:`TWU_SHEET`, the medium grip) at the
+    centre and at 3 o'clock (:data:`TWU_OFFSET` off the axis), with and without the lead;
+    the tip resting on the floor is left out.
     """
-    specs = CATALOG["pure-drive-2021"].specs | dict(mass_kg=0.291, swingweight_kgcm2=315.0)
-    plain = from_specs(support="hand-held", **specs)
+    plain = from_specs(support="hand-held", **TWU_SHEET)
     out = {}
     for name, racket in (("plain", plain), ("lead", plain.with_lead_tape(TWU_LEAD, "3 and 9"))):
         r = impact(racket, _ball(), racket.strings.center, TWU_SPEED, offset=[0.0, TWU_OFFSET])

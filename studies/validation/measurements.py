@@ -18,6 +18,8 @@ from studies.validation.conditions import (
     HAMORI_RACKETS,
     SEED_BED,
     STROKE_SPEEDS,
+    STRUNG,
+    TWU_SHEET,
     _clamped,
     _grabiner_ratio,
     _hamori_ms,
@@ -45,6 +47,7 @@ _TWU_2 = "TWU 'Racquet Control' part 2 (own text)"
 _RACQUETTECH = "racquettech.com, 'ball speeds' (own text)"
 _SAVAGE = "Savage, PhD thesis, RMIT 2006, appendix (own text)"
 _ABOUT_E = "assumption: 'about' read as +/-0.05"
+_TWU_RACKET = f"{1e3 * TWU_SHEET['mass_kg']:g} g {STRUNG}, medium grip"
 
 
 def _itf(name: str, label: str) -> Comparison:
@@ -72,7 +75,7 @@ def _hamori(racket: str, strings: str, tension_lb: float, stroke: str, ms: float
     speed = STROKE_SPEEDS[stroke]
     return Comparison(
         f"hamori-{racket.split()[-1].lower()}-{strings}-{tension_lb:g}-{stroke}",
-        f"dwell time, {stroke} [ms]",
+        f"dwell time, {racket}, {strings} {tension_lb:g} lb, hand-held, {stroke} [ms]",
         f"{racket} ({model_name}, TWU sheet), {strings} {tension_lb:g} lb, hand-held, "
         f"{speed:g} m/s closing (assumed), string centre",
         ms, ms - 1e3 * HAMORI_BAND, ms + 1e3 * HAMORI_BAND, HAMORI, "validation",
@@ -134,27 +137,30 @@ def comparisons() -> list[Comparison]:
         ),
         *(_ra(ra) for ra in (60, 66, 72)),
         Comparison(
-            "seed-clamped-e", "e on head-clamped strings [-]",
+            "seed-clamped-e", f"e on head-clamped strings, a {SEED_BED / 1e3:g} kN/m bed [-]",
             f"ITF type 2, {DROP_1M_SPEED:.2f} m/s (low speed, assumed), uniform bed "
             f"{SEED_BED:.0e} N/m, string centre", *_about(0.88, 0.02), _SEED, "validation",
             "assumption: 'about 0.88' read as +/-0.02", lambda: float(_clamped(SEED_BED).e),
         ),
         Comparison(
-            "cross-1m-drop-e", "e on head-clamped strings, 1 m drop [-]",
+            "cross-1m-drop-e",
+            f"e on head-clamped strings, a {CROSS_BED / 1e3:g} kN/m bed, 1 m drop [-]",
             f"ITF type 2, {DROP_1M_SPEED:.2f} m/s, uniform bed {CROSS_BED:.0e} N/m, "
             "string centre", math.sqrt(0.70), math.sqrt(0.65), math.sqrt(0.75), _CROSS_PAGE,
             "validation", "assumption: bounce 'about 0.70 m' read as 0.65-0.75 m "
             "(e = sqrt(h), derived)", lambda: float(_clamped(CROSS_BED).e),
         ),
         Comparison(
-            "strings-contact-time", "contact time on strings [ms]",
+            "strings-contact-time",
+            f"contact time on head-clamped strings, a {SEED_BED / 1e3:g} kN/m bed [ms]",
             f"ITF type 2, {DROP_1M_SPEED:.2f} m/s (low speed, assumed), head-clamped, "
             f"uniform bed {SEED_BED:.0e} N/m", *_about(5.0, 0.5), _SEED + ", citing Cross 1999",
             "validation", "assumption: 'about 5 ms' read as +/-0.5 ms",
             lambda: 1e3 * float(_clamped(SEED_BED).contact_time),
         ),
         Comparison(
-            "grabiner-gripped-vs-free", "rebound speed, gripped / free [-]",
+            "grabiner-gripped-vs-free",
+            f"rebound speed, {STRUNG}, medium grip / free [-]",
             "Pure Drive (2021), medium grip vs free, ITF type 2 at 10.62 m/s, string centre",
             1.0, 0.98, 1.02, "Grabiner, Groppel & Campbell, Med. Sci. Sports Exerc. 15 (1983) "
             "542 (abstract)", "validation", "assumption: 'no significant difference' read as "
@@ -178,25 +184,27 @@ def comparisons() -> list[Comparison]:
             )
         ),
         Comparison(
-            "twu-held-centre", "e_A at mid-face [-]",
+            "twu-held-centre", f"e_A at mid-face, {_TWU_RACKET} [-]",
             "hand-held 291 g racket (Pure Drive sheet, SW 315), medium grip, ITF type 2, "
             "16.5 m/s", *_about(0.4, 0.05), _TWU_1, "validation", _ABOUT_E,
             lambda: float(_twu_part_1()["plain"][0]),
         ),
         Comparison(
-            "twu-held-3-oclock", "e_A near the frame at 3 / 9 o'clock [-]",
+            "twu-held-3-oclock", f"e_A near the frame at 3 / 9 o'clock, {_TWU_RACKET} [-]",
             "as mid-face, 8 cm off the axis (TWU's largest offset)", 0.15, 0.1, 0.2, _TWU_1,
             "validation",
             "the source's range 0.1-0.2", lambda: float(_twu_part_1()["plain"][1]),
         ),
         Comparison(
-            "twu-held-3-oclock-lead", "e_A near the frame at 3 / 9 o'clock, 26.8 g lead [-]",
+            "twu-held-3-oclock-lead",
+            f"e_A near the frame at 3 / 9 o'clock, {_TWU_RACKET}, 26.8 g lead [-]",
             "as above, 13.4 g at 3 and at 9 o'clock", *_about(0.3, 0.05), _TWU_1,
             "validation", _ABOUT_E, lambda: float(_twu_part_1()["lead"][1]),
         ),
         *(
             Comparison(
-                f"twu-pivot-{where}", f"e_A at the {where}, pivoting about the handle end [-]",
+                f"twu-pivot-{where}",
+                f"e_A at the {where}, {STRUNG}, pinned at the butt [-]",
                 f"Pure Drive (2021) pinned at the butt, free to roll (approximation: a stiff "
                 f"2 cm grip), ITF type 2, 17.9 m/s, {where}", value, low, high, _TWU_2,
                 "validation",
@@ -211,7 +219,8 @@ def comparisons() -> list[Comparison]:
         ),
         *(
             Comparison(
-                f"typical-{where}", f"e_A at the {where}, a typical racket [-]",
+                f"typical-{where}",
+                f"e_A at the {where}, {STRUNG}, medium grip [-]",
                 f"Pure Drive (2021), hand-held, medium grip, ITF type 2, 16.5 m/s (assumed), "
                 f"{where}", *_about(value, 0.05), _RACQUETTECH, "validation", _ABOUT_E,
                 lambda i=i: float(_typical()[i]),

@@ -1,0 +1,141 @@
+"""``racket-impact compare``: e along the strings of two or more rackets."""
+
+from __future__ import annotations
+
+from common.checks import shown
+from racket import DEFAULT_RACKET
+from studies.cli.files import check_outputs, save_plot, say_conditions, write_table
+from studies.cli.options import (
+    _ball_arg,
+    _check_swing,
+    _count,
+    _labels,
+    _print_table,
+    _scale,
+    _scale_options,
+    _speed,
+    _speed_option,
+    _swing,
+    _swing_options,
+    speed_unit,
+)
+from studies.cli.racket_options import add_racket_options, racket_conditions, racket_from
+from studies.cli.show import compare_view
+from studies.config import load_ball
+from studies.sweeps import BALL_SPEED
+
+SECOND_RACKET = "pro-staff-97l-cv"
+"""The racket ``compare`` sets beside the default one when none is named."""
+
+
+def add_compare(sub) -> None:
+    """The ``compare`` subcommand, on the subparsers ``sub``."""
+    p = sub.add_parser("compare", help="e along the strings of two or more rackets")
+    add_racket_options(p, many=True, racket=False)
+    p.add_argument(
+        "--racket",
+        action="append",
+        metavar="PRESET_OR_TOML",
+        help="a racket, as PRESET_OR_TOML or LABEL=PRESET_OR_TOML (repeat; default: "
+        f"{DEFAULT_RACKET} and {SECOND_RACKET})",
+    )
+    _ball_arg(p)
+    _speed_option(p, "speed", BALL_SPEED, "ball speed towards the strings")
+    p.add_argument("--points", type=int, default=101, help="impact points per racket")
+    _swing_options(p)
+    p.add_argument(
+        "--equal-effort",
+        action="store_true",
+        help="the swing is the first racket's; every other racket is swung at the same "
+        "effort, slower the larger its swingweight: head speed x (I_first / I)^0.27 (Cross "
+        "and Bower 2006)",
+    )
+    p.add_argument("--out", metavar="FILE", help="the summary printed: .csv, .json or .parquet")
+    p.add_argument(
+        "--long",
+        action="store_true",
+        help="--out writes the long table instead: every impact of every racket",
+    )
+    p.add_argument("--plot", metavar="FILE", help="comparison plot (.png, .svg, .pdf)")
+    _scale_options(p)
+    p.set_defaults(func=cmd_compare)
+
+
+def cmd_compare(args) -> int:
+    """``racket-impact compare``."""
+    from dataclasses import replace
+
+    from studies.maps import compare_summary
+    from studies.sweeps import check_impacts, compare
+
+    check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
+    scale = _scale(args)
+    points = _count("--points", args.points, 2, 100_000)
+    swing = _swing(args)
+    speed = _speed(args, "speed", allow_zero=swing is not None)
+    names = args.racket or [DEFAULT_RACKET, SECOND_RACKET]
+    if len(names) < 2:
+        raise ValueError(f"compare needs two or more --racket, got {len(names)}")
+    if args.long and not args.out:
+        raise ValueError("--long needs --out (the file of the long table)")
+    if args.equal_effort and swing is None:
+        raise ValueError("--equal-effort needs a swing: --swing-speed (or -mph, -kmh)")
+    labelled = _labels(names)
+    supports = args.support or [None]
+    strings = args.tension_lb or args.string_stiffness or [None]
+    variants = len(supports) * len(strings)
+    check_impacts(points * len(names) * variants, f"--points {points} x {len(names)} --racket")
+    rackets = {}
+    for label, spec in labelled:  # every racket at every support and tension
+        base = racket_from(args, spec, grid=True)
+        for support in supports:
+            for value in strings:
+                racket = base if support is None else replace(base, support=support)
+                racket = _strung(args, racket, value)
+                extra = [support] if len(supports) > 1 else []
+                extra += [_said(args, value)] if len(strings) > 1 else []
+                rackets[" ".join([label, *extra])] = racket
+    for racket in rackets.values():  # the points span each racket's strings
+        _check_swing(args, swing, racket, racket.strings.extent)
+    ball = load_ball(args.ball)
+    with scale as executor:
+        table = compare(
+            rackets, ball, speed, points, swing=swing,
+            equal_effort=args.equal_effort, executor=executor,
+        )  # fmt: skip
+    summary = compare_summary(rackets, table, ball, speed)
+    first = next(iter(rackets.values()))
+    said = racket_conditions(
+        args, first, " vs ".join(rackets), speed=speed, swing=swing, each_own=True
+    )
+    conditions = say_conditions(said + (" (equal effort)" if args.equal_effort else ""))
+    unit = speed_unit(args, "speed", "swing_speed")
+    _print_table(compare_view(summary, unit, swung=swing is not None))
+    if args.out:
+        write_table(table if args.long else summary, args.out)
+    if args.plot:
+        from studies.plots import plot_cor_comparison
+
+        groups = {k: g for k, g in table.groupby("racket", sort=False)}
+        save_plot(plot_cor_comparison(groups, conditions=conditions), args.plot)
+    return 0
+
+
+def _strung(args, racket, value):
+    """``racket`` at the tension [lb] or string stiffness [N/m] ``value`` (None: as it is)."""
+    from dataclasses import replace
+
+    from studies.cli.options import _tension
+
+    if value is None:
+        return racket
+    if args.tension_lb is not None:
+        from racket.specs.strings import with_tension
+
+        return with_tension(racket, _tension(value))
+    return replace(racket, strings=replace(racket.strings, stiffness=value))
+
+
+def _said(args, value) -> str:
+    """A tension or a stiffness as a label's suffix."""
+    return f"{shown(value)} lb" if args.tension_lb is not None else f"{shown(value)} N/m"

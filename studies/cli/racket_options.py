@@ -1,0 +1,173 @@
+"""The options that describe the racket, the same on every command that takes one:
+``--racket``, ``--support``, ``--grip``, ``--tension-lb``, ``--string-stiffness`` and
+``--lead GRAMS@CLOCK``; the racket made from them, and the conditions line of a run.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import replace
+
+from common.checks import KN_AS_N, in_range, shown
+from racket import DEFAULT_RACKET, GRIPS, SUPPORTS
+from studies.cli.options import _Once, _tension, speed_unit
+from studies.conditions import conditions_line, racket_details
+from studies.config import RACKETS, load_racket
+from studies.sweeps import STRING_STIFFNESS_RANGE
+
+_LEAD = re.compile(r"^\s*(\d+(?:\.\d*)?|\.\d+)\s*(?:g)?\s*@\s*(.+?)\s*$")
+
+LEAD_GRAMS = (0.1, 200.0)
+"""Lead tape per side [g]: what a stringer adds (a strip is about 0.5 g/cm; an
+assumption, generous on purpose; the TOML's ``lead_tape`` takes up to 200 g too)."""
+
+
+def add_racket_options(
+    p, many: bool = False, support: bool = True, support_default=None, racket: bool = True
+):
+    """The racket's options on the subparser ``p``: ``--racket`` (with ``racket``: compare
+    takes several, its own way), ``--support`` and ``--grip`` (with ``support``),
+    ``--tension-lb``, ``--string-stiffness`` and ``--lead``; ``many``: several tensions,
+    stiffnesses and supports (a grid).
+    """
+    if racket:
+        _racket_option(p)
+    nargs = "+" if many else None
+    if support:
+        said = support_default or "the racket's, free for a preset"
+        p.add_argument(
+            "--support", choices=list(SUPPORTS), nargs=nargs, action=_Once,
+            default=support_default, help=f"support{'(s)' if many else ''} (default: {said})",
+        )  # fmt: skip
+        p.add_argument(
+            "--grip", choices=list(GRIPS), action=_Once,
+            help="how the hand holds a hand-held racket (default: the racket's hand, the "
+            "medium grip unless its file says otherwise)",
+        )  # fmt: skip
+    p.add_argument(
+        "--tension-lb", type=float, nargs=nargs, action=_Once, metavar="LB",
+        help=f"string tension{'(s)' if many else ''} [lb]: the string bed's stiffness from the "
+        "membrane model (default: the racket's)",
+    )  # fmt: skip
+    p.add_argument(
+        "--string-stiffness", type=float, nargs=nargs, action=_Once, metavar="N_M",
+        help=f"string-bed stiffness{'(es)' if many else ''} [N/m] (default: the racket's)",
+    )  # fmt: skip
+    p.add_argument(
+        "--lead", nargs="+", action=_Once, metavar="GRAMS@CLOCK",
+        help="lead tape: grams per side at a clock position of the head, e.g. 3@12 (the "
+        "tip), 2@3/9 (both sides), 4@6 (the throat)",
+    )  # fmt: skip
+
+
+def _racket_option(p) -> None:
+    p.add_argument(
+        "--racket",
+        default=DEFAULT_RACKET,
+        metavar="PRESET_OR_TOML",
+        help=f"racket: preset ({', '.join(RACKETS)}; 'paper' is the paper's uniform racket) "
+        f"or TOML file with a [racket] table (default: {DEFAULT_RACKET})",
+    )
+
+
+def tensions(args) -> list[float] | None:
+    """``--tension-lb`` values in N (a list), None if not given; not with the stiffness."""
+    if args.tension_lb is None:
+        return None
+    if args.string_stiffness is not None:
+        raise ValueError("give --string-stiffness or --tension-lb, not both")
+    return [_tension(t) for t in _many(args.tension_lb)]
+
+
+def stiffnesses(args) -> list[float] | None:
+    """``--string-stiffness`` values [N/m] checked (a list), None if not given."""
+    if args.string_stiffness is None:
+        return None
+    return [
+        in_range("--string-stiffness", k, *STRING_STIFFNESS_RANGE, "N/m", slips=(KN_AS_N,))
+        for k in _many(args.string_stiffness)
+    ]
+
+
+def _many(value) -> list:
+    return list(value) if isinstance(value, list | tuple) else [value]
+
+
+def lead_tape(racket, words):
+    """``racket`` with the ``--lead GRAMS@CLOCK`` pieces ``words`` (None: none)."""
+    for word in words or ():
+        match = _LEAD.match(word)
+        if not match:
+            raise ValueError(
+                f"--lead {word!r} must be GRAMS@CLOCK, e.g. 3@12, 2@3/9 or 4@6 (grams per side)"
+            )
+        grams = in_range("--lead", float(match.group(1)), *LEAD_GRAMS, "g per side")
+        at = match.group(2).replace("/", " and ")
+        try:
+            racket = racket.with_lead_tape(grams / 1e3, at)
+        except ValueError as err:
+            raise ValueError(f"--lead {word!r}: {err}") from None
+    return racket
+
+
+def racket_from(args, spec: str | None = None, grid: bool = False):
+    """The racket of a command: ``--racket`` (or ``spec``) with its ``--lead``, and, unless
+    ``grid`` (a sweep varies them itself), its ``--support``, ``--tension-lb`` and
+    ``--string-stiffness``; ``--grip`` for a hand-held racket (refused on another).
+    """
+    racket = lead_tape(load_racket(spec or args.racket), args.lead)
+    supports = _many(getattr(args, "support", None) or [racket.support])
+    if not grid:
+        racket = replace(racket, support=supports[0])
+        newtons, stiffness = tensions(args), stiffnesses(args)
+        if newtons:
+            from racket.specs.strings import with_tension
+
+            racket = with_tension(racket, newtons[0])
+        elif stiffness:
+            racket = replace(racket, strings=replace(racket.strings, stiffness=stiffness[0]))
+    else:
+        tensions(args), stiffnesses(args)  # checked before any work
+    if getattr(args, "grip", None):
+        if "hand-held" not in supports:
+            raise ValueError(
+                f"--grip {args.grip} holds a hand-held racket; this one is {supports[0]}: "
+                "add --support hand-held"
+            )
+        racket = replace(racket, hand=GRIPS[args.grip])
+    return racket
+
+
+def racket_conditions(
+    args, racket, name: str | None = None, speed=None, swing=None, each_own: bool = False
+) -> str:
+    """The conditions line of a run (:func:`studies.conditions.conditions_line`): the racket
+    as named (``name``, default ``--racket``), its support, grip and strings (as typed), the
+    ball (``--ball``) at ``speed`` [m/s] in the unit the user typed, the ``swing`` (a
+    :class:`racket.Swing`, said with its head speed); ``each_own``: several rackets, each
+    with its own strings and hand unless the options set them.
+    """
+    details = racket_details(racket)
+    if each_own:
+        details["strings"] = "each its own strings"
+        details["grip"] = "each its own grip" if details["grip"] else None
+    if getattr(args, "tension_lb", None) is not None:
+        details["strings"] = f"strings at {', '.join(shown(t) for t in _many(args.tension_lb))} lb"
+    if getattr(args, "string_stiffness", None) is not None:
+        typed = ", ".join(shown(k) for k in _many(args.string_stiffness))
+        details["strings"] = f"strings {typed} N/m"
+    supports = getattr(args, "support", None)
+    if isinstance(supports, list) and len(supports) > 1:
+        details["support"] = " / ".join(supports)
+    if args.lead:
+        details["strings"] += f", lead {' '.join(args.lead)}"
+    speeds = ("speed", "swing_speed", "racket_speed", "target_ball_speed")
+    unit = speed_unit(args, *(name for name in speeds if hasattr(args, name)))
+    moved = None
+    if swing is not None:
+        from studies.conditions import speed_text
+
+        moved = f"swung at {speed_text(swing.head_speed, unit)} head speed {swing.pivot_words()}"
+    return conditions_line(
+        name or args.racket, getattr(args, "ball", None), speed, unit, moved, **details
+    )

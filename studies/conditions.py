@@ -1,0 +1,86 @@
+"""The conditions an output was computed for, said in one line: racket (support, grip,
+strings), ball, speeds.  Every printed table's header line, every plot's caption, every
+sidecar and every card of the page says them (:func:`conditions_line`,
+:func:`racket_details`).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from common.checks import shown
+from common.units import SPEED_UNITS
+
+
+def speed_text(value, unit: str = "m/s") -> str:
+    """``value`` [m/s] (one speed or several) said in ``unit`` ("m/s", "mph" or "km/h"), to
+    4 significant digits at most (no trailing zeros): "16.5 m/s", "89.48 mph", "10, 20 m/s".
+    """
+    values = [value] if np.ndim(value) == 0 else list(value)
+    said = ", ".join(shown(float(f"{v / SPEED_UNITS[unit]:.4g}")) for v in values)
+    return f"{said} {unit}"
+
+
+def racket_details(racket, tension_lb: float | None = None) -> dict:
+    """How ``racket`` (a :class:`racket.Racket`) is held and strung, for
+    :func:`conditions_line`: its ``support``, the ``grip`` of a hand-held racket (a preset's
+    name of :data:`racket.GRIPS`, or "own grip") and its ``strings`` ("55 lb" when the
+    tension was given, else the bed's stiffness in kN/m).
+    """
+    from racket import GRIPS
+
+    grip = None
+    if racket.support == "hand-held":
+        names = [name for name, hand in GRIPS.items() if hand == racket.hand]
+        grip = f"{names[0]} grip" if names else "own grip"
+    if tension_lb is not None:
+        strings = f"strings at {shown(tension_lb)} lb"
+    else:
+        strings = f"strings {racket.strings.stiffness / 1e3:.3g} kN/m"
+    return {"support": racket.support, "grip": grip, "strings": strings}
+
+
+def conditions_line(
+    racket_name: str | None,
+    ball_name: str | None,
+    speed=None,
+    unit: str = "m/s",
+    swing: str | None = None,
+    support: str | None = None,
+    grip: str | None = None,
+    strings: str | None = None,
+) -> str:
+    """One line naming what an output was computed for.
+
+    Parameters
+    ----------
+    racket_name, ball_name : str or None
+        The racket and the ball as the user named them (a preset or a file); None: not part
+        of this output.
+    speed : float or sequence of float, optional
+        The ball's speed(s) towards the strings [m/s], said in ``unit``.
+    unit : str
+        The unit the user typed speeds in: "m/s", "mph" or "km/h".
+    swing : str, optional
+        How the racket moves, in words ("swung at 30 m/s head speed about the wrist");
+        default the racket at rest (said only with a speed).
+    support, grip, strings : str, optional
+        :func:`racket_details`.
+
+    Examples
+    --------
+    >>> conditions_line("pure-drive-2021", "itf-type-2", 16.5, support="free")
+    'racket pure-drive-2021 (free), ball itf-type-2 at 16.5 m/s, the racket at rest'
+    """
+    parts = []
+    if racket_name is not None:
+        details = [d for d in (support, grip, strings) if d]
+        parts.append(f"racket {racket_name}" + (f" ({', '.join(details)})" if details else ""))
+    if ball_name is not None:
+        at = "" if speed is None else f" at {speed_text(speed, unit)}"
+        parts.append(f"ball {ball_name}{at}")
+    if swing:
+        parts.append(swing)
+    elif speed is not None and racket_name is not None:
+        parts.append("the racket at rest")
+    return ", ".join(parts)
