@@ -323,7 +323,7 @@ def too_fast(name: str, value, unit: str, fastest: float, what: str, instead=Non
     """Warn (``UserWarning``, :func:`suspect`) when the speed ``value`` [``unit``], of either
     sign, is faster than ``fastest`` [m/s], naming the slips of unit that would explain it
     (:data:`SPEED_SLIPS`): "--speed-mph 180 mph is faster than any recorded stroke (the
-    serve record, about 163.7 mph)".
+    serve record, about 164 mph)".
 
     Parameters
     ----------

@@ -12,8 +12,8 @@ player feels (R. Cross, "The sweet spots of a tennis racquet", Sports Engineerin
 * the shock, the jolt of the impact: the racket's motion as a rigid body in the hand (a free
   racket's rigid-body modes; a held one's slow blocks, the racket and the hand's mass
   translating and rocking together), its largest acceleration at the grip while the ball is
-  on the strings.  A ball at the centre of percussion sets the racket turning about the hand
-  and leaves no shock (none at all on a free racket);
+  on the strings.  A ball at the centre of percussion sets the racket turning about the hand:
+  no shock on a free racket, the least on a held one (its hand pushes during the contact);
 * the vibration: the other blocks, the frame's bending (and, held, the hand springing on the
   handle), its largest acceleration at the grip after the ball has left, and its spectrum.
 

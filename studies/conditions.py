@@ -13,8 +13,15 @@ from common.units import SPEED_UNITS
 
 
 def speed_text(value, unit: str = "m/s") -> str:
-    """``value`` [m/s] (one speed or several) said in ``unit`` ("m/s", "mph" or "km/h"), to
-    4 significant digits at most (no trailing zeros): "16.5 m/s", "89.48 mph", "10, 20 m/s".
+    """Speeds said in the unit the user typed, to 4 significant digits at most (no trailing
+    zeros): "16.5 m/s", "89.48 mph", "10, 20 m/s".
+
+    Parameters
+    ----------
+    value : float or sequence of float
+        One speed or several [m/s].
+    unit : str
+        "m/s", "mph" or "km/h".
     """
     values = [value] if np.ndim(value) == 0 else list(value)
     said = ", ".join(shown(float(f"{v / SPEED_UNITS[unit]:.4g}")) for v in values)
@@ -22,10 +29,17 @@ def speed_text(value, unit: str = "m/s") -> str:
 
 
 def racket_details(racket, tension_lb: float | None = None) -> dict:
-    """How ``racket`` (a :class:`racket.Racket`) is held and strung, for
-    :func:`conditions_line`: its ``support``, the ``grip`` of a hand-held racket (a preset's
-    name of :data:`racket.GRIPS`, or "own grip") and its ``strings`` ("55 lb" when the
-    tension was given, else the bed's stiffness in kN/m).
+    """How a racket is held and strung, for :func:`conditions_line`: its ``support``, the
+    ``grip`` of a hand-held racket (a preset's name of :data:`racket.GRIPS`, or "own grip")
+    and its ``strings`` ("strings at 55 lb" when the tension was given, else the bed's
+    stiffness in kN/m).
+
+    Parameters
+    ----------
+    racket : Racket
+        The racket.
+    tension_lb : float, optional
+        The tension it was strung at, as typed [lb].
     """
     from racket import GRIPS
 

@@ -4,7 +4,8 @@ Schema (every key optional unless marked; SI units unless the key names its unit
 keys are errors)::
 
     [racket]
-    preset = "paper"            # start from a preset (see RACKETS), then override
+    preset = "paper"            # start from a preset (see RACKETS; default pure-drive-2021,
+                                # or the paper's for a frame of its own), then override
     length = 0.68               # m      } a uniform frame ...
     mass = 0.34                 # kg     }
     f1 = 120.0                  # Hz     }
@@ -57,7 +58,8 @@ keys are errors)::
     radius = 0.0335             # m (default: the tennis ball's, racket.TENNIS_BALL_RADIUS)
 
 The keys in :data:`TOML_RANGES` are checked in their ranges, with a hint at a likely slip
-of unit (``mass = 340`` for a racket: grams typed as kg?).
+of unit (``mass = 340`` for a racket: grams typed as kg?); a ``tension_lb`` that is one in
+kg is asked about, as ``--tension-lb`` is (:func:`common.checks.loose_tension`).
 """
 
 from __future__ import annotations
@@ -81,6 +83,7 @@ from common import checks as slip  # the slips of unit: slip.CM_AS_M, ...
 from common.checks import in_range, loose_tension, positive, shown
 from racket import (
     CATALOG,
+    DEFAULT_RACKET,
     GRIPS,
     TENNIS_BALL_MASS,
     TENNIS_BALL_RADIUS,
@@ -303,7 +306,11 @@ def racket_from_table(table: dict) -> Racket:
             loose_tension("[racket.specs] tension_lb", table["specs"]["tension_lb"])
         base = from_specs(**table["specs"])
     else:
-        base = _preset(table.get("preset", "paper"), RACKETS, "racket")
+        # no preset: the one default racket, unless the table describes its own frame
+        # (length/mass/f1 or a profile), whose string bed and support are then the paper's
+        # racket's, the model those keys describe
+        described = "paper" if uniform or profile else DEFAULT_RACKET
+        base = _preset(table.get("preset", described), RACKETS, "racket")
     beam = base.beam
     if uniform and profile:
         raise ValueError(

@@ -46,8 +46,8 @@ HEAD_SPEED_MAX_MPH = 110.0
 """The page's fastest racket-head speed [mph] (49.2 m/s): the head speed at which the
 catalogue's rackets serve the fastest recorded serve (:data:`common.checks.FASTEST_STROKE`,
 263.4 km/h, Sam Groth, Busan 2012; Reuters, "Groth fires down fastest recorded serve at
-263kph", 12 May 2012) off the string centre about the wrist with the ITF balls, 110.8-113.2
-mph (:func:`studies.serve.head_speed_for`, measured on this model), rounded down: no
+263kph", 12 May 2012) off the string centre about the wrist with the tennis balls, about
+111-114 mph (:func:`studies.serve.head_speed_for`, measured on this model), rounded down: no
 position of the page's slider serves faster than anyone has (tests/test_page_truth.py).  It
 is below the fastest head speed assumed for any stroke (:data:`common.checks.FASTEST_HEAD`,
 115 mph; a professional's 120 mph serve is hit by the racket's tip at nearly 120 mph, the

@@ -9,9 +9,13 @@ as the page speaks, with m/s on a secondary axis; positions in cm from the tip.
 
 from __future__ import annotations
 
+import textwrap
+
 import numpy as np
 
 from common.units import MPH
+
+_HEADING_CHARS = 70  # a line of the heading: about 4 in at the small font, in any card
 
 
 def _axes(ax, figsize=(6.4, 4.0)):
@@ -26,12 +30,14 @@ def _axes(ax, figsize=(6.4, 4.0)):
 
 
 def _heading(ax, conditions: str | None) -> None:
-    """``conditions`` as the figure's heading, wrapped when drawn: the page sizes the figure
-    to its card after the plot is made (Shiny), and its tight layout keeps the heading clear
-    of the Axes and the legend above them.
+    """``conditions`` as the figure's heading, in lines of at most :data:`_HEADING_CHARS`
+    (the layout makes room for the lines it is given) and wrapped again when drawn, should
+    the figure be narrower: the page sizes the figure to its card after the plot is made
+    (Shiny), and its tight layout keeps the heading clear of the Axes and the legend above.
     """
     if conditions:
-        ax.figure.suptitle(conditions, wrap=True, fontsize="small")
+        said = textwrap.fill(conditions, _HEADING_CHARS, break_long_words=False)
+        ax.figure.suptitle(said, wrap=True, fontsize="small")
 
 
 def _legend_above(ax, **style) -> None:
@@ -121,8 +127,8 @@ def plot_along_racket(
 
 def plot_face_map_page(face_map, title: str, ax=None, conditions: str | None = None):
     """:func:`studies.plots.plot_face_map` (e_A over the face, speeds in mph), its legend
-    titled ``title`` and moved above the Axes (in place of the Axes' title), clear of the
-    axis labels and of the face, and a shorter x label, clear of the colour bar.
+    titled ``title`` above the Axes (in place of the Axes' title), clear of the axis labels,
+    the face and the colour bar, and a shorter x label, clear of the colour bar.
 
     Parameters
     ----------
@@ -137,6 +143,7 @@ def plot_face_map_page(face_map, title: str, ax=None, conditions: str | None = N
     ax = plot_face_map(face_map, ax=_axes(ax, figsize=(4.6, 7.0)), unit="mph")
     ax.set_title("")
     ax.set_xlabel("off the axis [cm] (+: 3 o'clock)")  # short: clear of the colour bar
-    _legend_above(ax, loc="lower center", ncols=1, frameon=True, title=title)
+    _legend_above(ax, loc="lower left", ncols=1, frameon=True, title=title)
+    ax.get_legend().set(alignment="left")
     _heading(ax, conditions)
     return ax

@@ -122,7 +122,8 @@ def test_the_page_plots_one_quantity_each_with_legends_outside():
         legend = ax.get_legend().get_window_extent(renderer)
         assert not _overlap(legend, ax.get_window_extent(renderer)), "legend on the data"
         assert all(other.get_ylabel() for other in ax.figure.axes)  # each with its quantity
-    face = plot_face_map_page(r.a.face, "A")
+    face = plot_face_map_page(r.a.face, "A", conditions=r.conditions["face_a"])
+    face.figure.set_size_inches(5.4, 6.25)  # the page's card (600 px high), as Shiny sizes it
     face.figure.tight_layout()  # as the page lays it out
     face.figure.canvas.draw()
     renderer = face.figure.canvas.get_renderer()
@@ -133,6 +134,8 @@ def test_the_page_plots_one_quantity_each_with_legends_outside():
     (bar,) = [other for other in face.figure.axes if other is not face]  # the colour bar
     assert not _overlap(face.xaxis.label.get_window_extent(renderer), bar.get_window_extent())
     assert not _overlap(box, bar.get_window_extent())
+    heading = face.figure._suptitle.get_window_extent(renderer)
+    assert heading.y1 <= face.figure.bbox.y1 and heading.y0 >= box.y1 - 8  # above the legend
 
 
 def _free_port() -> int:

@@ -188,16 +188,25 @@ def test_every_preset_round_trips_through_toml(name, tmp_path):
     assert load_ball(str(by_numbers)) == ball
 
 
-def test_the_default_ball_is_the_real_one_except_for_the_papers_racket(tmp_path, monkeypatch):
+def test_the_default_ball_is_the_real_one_for_every_racket_the_papers_too(tmp_path, monkeypatch):
+    """One default (issue 33): the paper's racket is hit by the ITF type 2 ball unless the
+    paper's ball is asked for (--ball paper)."""
     import json
 
     from studies.cli import main
 
     monkeypatch.chdir(tmp_path)
-    for racket, expected in (("pure-drive-2021", "itf-type-2"), ("paper", "tennis")):
-        assert main(["sweep", "--racket", racket, "--points", "3", "--out", f"{racket}.csv"]) == 0
-        record = json.loads((tmp_path / f"{racket}.csv.meta.json").read_text())
+    for racket, ball, expected in (
+        ("pure-drive-2021", [], "itf-type-2"),
+        ("paper", [], "itf-type-2"),
+        ("paper", ["--ball", "paper"], "paper"),
+    ):
+        out = f"{racket}{len(ball)}.csv"
+        assert main(["sweep", "--racket", racket, *ball, "--points", "3", "--out", out]) == 0
+        record = json.loads((tmp_path / f"{out}.meta.json").read_text())
         assert record["options"]["ball"] == expected
+        assert record["inputs"]["ball"][0]["preset"] == expected
+        assert f"ball {expected} at 16.5 m/s" in record["conditions"]
 
 
 def test_a_sweep_over_speeds_gives_a_curve_per_speed_with_the_default_ball(tmp_path):

@@ -47,9 +47,12 @@ def test_compare_equal_effort_prints_both_head_and_exit_speeds(tmp_path, capsys)
             "11", "--swing-speed-mph", "70", "--speed-mph", "40", "--equal-effort"]  # fmt: skip
     assert main(argv) == 0
     out = capsys.readouterr().out
-    cells = [re.split(r"\s{2,}", line.strip()) for line in out.splitlines()[2:]]
+    lines = out.splitlines()
+    top = next(i for i, line in enumerate(lines) if line.startswith("quantity"))  # under the
+    assert "(equal effort)" in " ".join(lines[:top])  # conditions, which say the effort
+    cells = [re.split(r"\s{2,}", line.strip()) for line in lines[top + 1 :]]
     rows = {row[0]: row[1:] for row in cells}
-    assert "lead" in out.splitlines()[1]  # the rackets side by side
+    assert "lead" in lines[top]  # the rackets side by side
     head, fastest = rows["head speed [mph]"], rows["fastest exit [mph]"]
     assert head[0] == "70" and float(head[1]) < 70  # the heavier racket swung slower
     assert all(float(v) > 70 for v in fastest)

@@ -20,6 +20,7 @@ from studies.sweeps import MAX_IMPACTS, compare, sweep
 
 HERTZ = str(Path(__file__).parents[1] / "examples" / "hertz_ball.toml")
 LONG_STRINGS = "[racket]\npreset = 'paper'\n[racket.strings]\nextent = [0.0, 0.5]\n"
+PAPERS = ["--racket", "paper", "--ball", "paper"]  # the paper's racket and ball
 
 
 @pytest.fixture(scope="module")
@@ -52,7 +53,7 @@ def test_a_toml_ball_has_the_tennis_balls_radius_unless_it_gives_one(tmp_path):
     "argv",
     [
         ["map", "--grid", "5", "5"],
-        ["sweetspots", "pure-drive-2021"],
+        ["sweetspots", "--racket", "pure-drive-2021"],
         ["compare", "--points", "5"],
     ],
     ids=lambda a: a[0],
@@ -126,20 +127,24 @@ def test_library_refusals_are_one_line_naming_the_argument(racket, call, message
          "--string-stiffness must be in [1000, 1e+07] N/m, got 40 (kN/m typed as N/m? 40 would "
          "be 40000 N/m)"),
         (["sweep", "--points", "3", "--f1", "5"], "--f1 must be in [20, 2000] Hz, got 5"),
-        (["serve", "--target-ball-speed-mph", "0.01"],
-         "--target-ball-speed-mph: the target ball speed must be in (0.3226, 967.8) mph"),
-        (["sweep", "--points", "3", "--swing-speed-mph", "600"],
+        (["serve", *PAPERS, "--target-ball-speed-mph", "0.01"],
+         "--target-ball-speed-mph: the target ball speed must be in (0.3226, 967.8) mph at "
+         "16.0 cm from the tip"),
+        (["sweep", *PAPERS, "--points", "3", "--swing-speed-mph", "600"],
          "--swing-speed-mph must be in [0.00311, 524] mph for these impact points"),
-        (["sweep", "--points", "3", "--swing-speed", "290"],
+        (["sweep", *PAPERS, "--points", "3", "--swing-speed", "290"],
          "--swing-speed must be in [0.00139, 234.2] m/s for these impact points"),
         (["sweep", "--racket", "long.toml", "--points", "5", "--swing-speed", "30",
-          "--pivot-cm-from-butt", "25"],
-         "--pivot-cm-from-butt must be < 18 cm, short of the impact points and the string "
-         "centre, got 25"),
-        (["serve", "--racket", "long.toml", "--position", "0.45", "--target-ball-speed", "30",
-          "--pivot-cm-from-butt", "25"], "--pivot-cm-from-butt must be < 23 cm"),
-        (["sweetspots", "long.toml", "--swing-speed", "30", "--pivot-cm-from-butt", "25"],
-         "--pivot-cm-from-butt must be < 18 cm"),
+          "--pivot-cm-from-tip", "43"],
+         "--pivot-cm-from-tip must be in (50, 168] cm: short of the impact points and the "
+         "string centre, at most 100 cm beyond the butt (an arm), got 43"),
+        (["serve", "--racket", "long.toml", "--position", "45", "--target-ball-speed", "30",
+          "--pivot-cm-from-tip", "43"], "--pivot-cm-from-tip must be in (45, 168] cm"),
+        (["sweetspots", "--racket", "long.toml", "--swing-speed", "30", "--pivot-cm-from-tip",
+          "43"], "--pivot-cm-from-tip must be in (50, 168] cm"),
+        (["sweetspots", "--racket", "long.toml", "--swing-speed", "30", "--pivot-cm-from-tip",
+          "180"], "--pivot-cm-from-tip must be in (50, 168] cm: short of the impact points and "
+         "the string centre, at most 100 cm beyond the butt (an arm), got 180"),
     ],
 )  # fmt: skip
 def test_cli_quotes_what_the_user_typed(argv, expected, tmp_path, monkeypatch, capsys):
@@ -168,8 +173,8 @@ def test_a_pivot_among_the_impact_points_is_named_in_the_library():
     racket = paper_racket()
     long = type(racket)(racket.beam, racket.strings.__class__(4e4, (0.0, 0.5)), "free")
     x = np.linspace(0.0, 0.5, 5)
-    with pytest.raises(ValueError, match=r"pivot_from_butt must be < 0.18 m from the butt"):
-        Swing(30.0, 0.25).impact_kwargs(long, x)
+    with pytest.raises(ValueError, match=r"pivot_from_tip must be in \(0.5, 1.68\] m from the tip"):
+        Swing(30.0, 0.43).impact_kwargs(long, x)
 
 
 # ----- 6. Absurd sizes, refused with the count and the limit -------------------------------

@@ -173,7 +173,7 @@ def test_the_page_plots_name_their_conditions_inside_the_figure(page):
         fig.canvas.draw()
         renderer = fig.canvas.get_renderer()
         heading = fig._suptitle
-        assert heading.get_text() in said.values()
+        assert heading.get_text().replace("\n", " ") in said.values()
         box = heading.get_window_extent(renderer)
         assert 0 <= box.x0 and box.x1 <= fig.bbox.x1 and 0 <= box.y0 and box.y1 <= fig.bbox.y1
         assert box.y0 >= ax.get_window_extent(renderer).y1  # above the data

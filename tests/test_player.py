@@ -1,5 +1,5 @@
 """A player's questions: the sweet spots in one convention, the feel at the hand, and
-positions counted from the butt everywhere (issue 14)."""
+positions counted from the tip everywhere (issues 14 and 33)."""
 
 import json
 from dataclasses import replace
@@ -23,7 +23,7 @@ def racket():
     return CATALOG["pure-drive-2021"].racket()
 
 
-def test_sweet_spots_agree_with_the_beam_and_count_from_the_butt(racket):
+def test_sweet_spots_agree_with_the_beam_and_count_from_the_tip(racket):
     table = sweet_spots(racket, paper_ball(), 10.0, swing=Swing(20.0)).set_index("spot")
     beam, length = racket.beam, racket.beam.length
     nodes = table[table.index.str.startswith("node of mode 1")]
@@ -31,9 +31,11 @@ def test_sweet_spots_agree_with_the_beam_and_count_from_the_butt(racket):
     on = [n for n in beam.modes.nodes(1) if start + 0.0335 <= n <= end - 0.0335]
     assert len(on) == 1 and len(beam.modes.nodes(1)) == 2  # the other is on the handle
     assert nodes["from_tip_cm"].to_numpy() / 100 == pytest.approx(on, abs=1e-9)
-    assert nodes["from_butt_cm"].to_numpy() / 100 == pytest.approx(
-        [length - n for n in on], abs=1e-9
-    )
+    assert not [c for c in table.columns if "butt" in c]  # one convention: from the tip
+    # the hand the centre of percussion is for, from the tip too
+    hand = table.loc["centre of percussion"]
+    assert hand["unit"] == "cm from the tip (the hand)"
+    assert hand["value"] / 100 == pytest.approx(length - HAND_FROM_BUTT, abs=1e-9)
     # the centre of percussion: an impulse there leaves the hand's pivot at rest, checked
     # on the rigid body (Eq. 20's motion): v_cm + (x_cm - pivot) omega = 0
     cop = table.loc["centre of percussion", "from_tip_cm"] / 100
@@ -69,29 +71,35 @@ def test_feel_at_the_hand_is_the_impact_carried_on(racket):
     assert np.abs(off.twist_rate).max() > 1.0
 
 
-def test_cli_positions_count_from_the_butt_with_the_tip_beside(tmp_path, capsys):
-    """One convention: every table a command writes that names a distance from the tip has
-    the distance from the butt beside it."""
+def test_cli_positions_count_from_the_tip_with_the_cm_beside_the_m(tmp_path, capsys):
+    """One convention: every table a command writes that names a position along the racket
+    names it from the tip (none from the butt), and a position in m has the same position
+    in cm beside it."""
     files = {}
     for name, argv in {
         "sweep": ["sweep", "--racket", "pure-drive-2021", "--points", "5"],
         "map": ["map", "--grid", "5", "5"],
         "compare": ["compare", "--racket", "paper", "--racket", "pure-drive-2021", "--points", "5"],
         "serve": ["serve", "--racket-speed", "30"],
-        "sweetspots": ["sweetspots", "pure-drive-2021"],
+        "sweetspots": ["sweetspots", "--racket", "pure-drive-2021"],
         "modes": ["modes"],
+        "specs": ["specs"],
         "feel": ["feel", "--duration-ms", "10"],
     }.items():
         files[name] = tmp_path / f"{name}.json"
         assert main([*argv, "--out", str(files[name])]) == 0, name
     capsys.readouterr()
     for name, path in files.items():
-        rows = json.loads(path.read_text())
-        columns = set(pd.DataFrame(rows).columns)
-        for column in columns:
-            if "from_tip" in column:
-                assert column.replace("from_tip", "from_butt").replace("_m", "_cm") in columns or (
-                    column.replace("from_tip", "from_butt") in columns
+        table = pd.DataFrame(json.loads(path.read_text()))
+        columns = set(table.columns)
+        assert not [c for c in columns if "butt" in c], name
+        named = [c for c in columns if "from_tip" in c]
+        assert bool(named) == (name != "feel"), name  # feel's table: histories at the hand
+        for column in named:
+            if column.endswith("_from_tip_m"):
+                beside = column.replace("_from_tip_m", "_from_tip_cm")
+                assert table[beside].to_numpy() == pytest.approx(
+                    100 * table[column].to_numpy(), rel=1e-12
                 ), (name, column)
 
 
@@ -130,7 +138,8 @@ def test_tables_describe_themselves_and_rerun_from_the_sidecar(tmp_path, capsys,
     assert record["inputs"]["racket"][0]["spec_sheet"]["swingweight_kgcm2"] == 315
     # the default for a real racket (the real ball, issue 24), recorded
     assert record["inputs"]["ball"][0]["preset"] == "itf-type-2"
-    assert record["options"]["pivot_cm_from_butt"] == -5.0
+    assert record["options"]["pivot_cm_from_tip"] is None  # the wrist, said:
+    assert "about the wrist (5 cm beyond the butt)" in record["conditions"]
     first = (tmp_path / "s.csv").read_text()
     sheet.write_text(sheet.read_text().replace("315", "330"))  # the file changes ...
     (tmp_path / "s.csv").unlink()
@@ -170,7 +179,7 @@ def test_rerun_puts_back_only_whole_paths(tmp_path, capsys, monkeypatch):
     assert _restored("--b=/tmp/x/0/bb.toml", copies) == "--b=/tmp/x/0/bb.toml"
 
 
-def test_rerun_records_the_recorded_inputs_of_positional_rackets_and_balls(
+def test_rerun_records_the_recorded_inputs_of_racket_and_ball_files(
     tmp_path, capsys, monkeypatch
 ):
     monkeypatch.chdir(tmp_path)
@@ -180,7 +189,7 @@ def test_rerun_records_the_recorded_inputs_of_positional_rackets_and_balls(
         "f1_hz = 150\nhead_size_in2 = 100\ntension_lb = 55\n"
     )
     sheet.write_text(text)
-    assert main(["specs", "r.toml", "--out", "s.csv"]) == 0
+    assert main(["specs", "--racket", "r.toml", "--out", "s.csv"]) == 0
     sheet.write_text(text.replace("315", "330"))  # edited after the run
     assert main(["rerun", "s.csv"]) == 0
     again = json.loads((tmp_path / "s.csv.meta.json").read_text())

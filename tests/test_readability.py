@@ -20,8 +20,8 @@ EXAMPLES = __import__("pathlib").Path(__file__).parent.parent / "examples"
 
 DEFAULT_RUNS = [
     ["sweep"], ["map"], ["serve"], ["serve", "--what-if"], ["collide"], ["drop"], ["ball"],
-    ["ball", "--list"], ["modes"], ["specs", "pure-drive-2021"], ["feel"],
-    ["sweetspots", "pure-drive-2021"], ["compare"], ["validate"],
+    ["ball", "--list"], ["modes"], ["specs", "--racket", "pure-drive-2021"], ["feel"],
+    ["sweetspots", "--racket", "pure-drive-2021"], ["compare"], ["validate"],
     ["sweep", "--racket", str(EXAMPLES / "profile_racket.toml")],
     ["serve", "--racket-speed-mph", "100", "110", "120"],
 ]  # fmt: skip
@@ -53,16 +53,16 @@ _UNIT = re.compile(r"\[[^\]]+\]")  # "[m/s]", "[-]"
 def test_every_sweep_column_has_a_unit_or_says_it_is_dimensionless():
     numeric = [c for c in COLUMNS if c != "self_consistent"]
     for column in [*numeric, "speed_m_s", "tension_N", "f1_Hz", "string_stiffness_N_m",
-                   "nodes_cm_from_butt", "serve_simulated_mph", "peak_compression_m"]:  # fmt: skip
+                   "nodes_cm_from_tip", "serve_simulated_mph", "peak_compression_m"]:  # fmt: skip
         assert re.search(r"\[[^\]]+\]$", label(column)), column
     assert label("contact_time_s") == "contact time [s]"
-    assert label("e") == "e [-]" and label("nodes_cm_from_butt") == "nodes from butt [cm]"
+    assert label("e") == "e [-]" and label("nodes_cm_from_tip") == "nodes from tip [cm]"
     assert label("mode") == "mode [-]" and label("damping_ratio") == "damping ratio [-]"
     assert label("stiffness") == "stiffness"  # neither a unit nor listed: no "[-]" made up
 
 
 def test_a_printed_table_labels_its_headers_and_folds_per_row_units():
-    table = pd.DataFrame({"position_from_butt_cm": [50.25], "e": [0.9123], "ball": ["x"]})
+    table = pd.DataFrame({"position_from_tip_cm": [50.25], "e": [0.9123], "ball": ["x"]})
     header = " ".join(table_lines(table)[:-1])
     assert "[cm]" in header and "e [-]" in header and "ball [-]" not in header
     rows = pd.DataFrame({"quantity": ["mass", "balance"], "value": [321.0, 33.0],
@@ -77,8 +77,10 @@ def test_compare_prints_racket_columns_and_writes_what_it_printed(tmp_path, caps
     argv = ["compare", "--points", "11", "--tension-lb", "55", "48", "--out", str(out_file)]
     assert main(argv) == 0
     out = capsys.readouterr().out
-    assert "paper 55 lb" in out.replace("\n", " ") or "55 lb" in out
-    assert "best rebound, racket at rest [m/s]" in out  # not an "exit" of a racket at rest
+    assert "pure-drive-2021 55 lb" in out and "pro-staff-97l-cv 55 lb" in out
+    # not an "exit" of a racket at rest (the label's unit may fold under its row)
+    assert re.search(r"^best rebound, racket at rest( \[m/s\]|\s.*\n\[m/s\])", out, re.M)
+    assert "exit" not in out
     summary = pd.read_csv(out_file)
     assert len(summary) == 4 and "largest_rebound_at_rest_mph" in summary  # 2 rackets x 2
     assert main([*argv[:-2], "--out", str(tmp_path / "long.csv"), "--long"]) == 0
@@ -119,23 +121,26 @@ def test_sentences_give_each_number_its_unit(capsys):
 
 def test_recontacts_are_flagged_with_one_line_saying_what_they_are(capsys):
     assert main(["sweep", "--racket", str(EXAMPLES / "profile_racket.toml")]) == 0
-    out = capsys.readouterr().out
-    header = " ".join(out.splitlines()[:3])
-    assert "re-contacts" in header and "[-]" in header
+    lines = capsys.readouterr().out.splitlines()
+    out = "\n".join(lines)
+    first_row = next(i for i, line in enumerate(lines) if re.match(r"^\s*-?\d", line))
+    header = " ".join(lines[first_row - 3 : first_row])  # the table's header, under the
+    assert "re-contacts" in header and "[-]" in header  # conditions and the rows-shown line
     assert "re-contacts: at" in out and "caught again by the vibrating frame" in out
 
 
 def test_an_offset_sweep_is_clipped_to_the_elliptical_bed(capsys):
-    assert main(["sweep", "--racket", "pure-drive-2021", "--offset", "0.02", "--points",
+    assert main(["sweep", "--racket", "pure-drive-2021", "--offset", "2", "--points",
                  "5"]) == 0  # fmt: skip
     assert "the sweep is clipped to them" in capsys.readouterr().out
-    assert main(["sweep", "--racket", "pure-drive-2021", "--offset", "0.08", "--from",
-                 "0.01"]) == 2  # fmt: skip
+    assert main(["sweep", "--racket", "pure-drive-2021", "--offset", "8", "--from",
+                 "1"]) == 2  # fmt: skip
     assert "narrow --from/--to" in capsys.readouterr().err
 
 
 def test_the_sweet_spots_lie_on_the_strings_in_a_players_words(capsys):
     from racket import CATALOG, TENNIS_BALL_RADIUS
+    from studies.landmarks import HAND_FROM_BUTT
     from studies.sweetspots import sweet_spots
 
     racket = CATALOG["pure-drive-2021"].racket()
@@ -144,11 +149,12 @@ def test_the_sweet_spots_lie_on_the_strings_in_a_players_words(capsys):
     inside = table["from_tip_cm"] / 100
     assert (inside >= start + TENNIS_BALL_RADIUS - 1e-12).all()
     assert (inside <= end - TENNIS_BALL_RADIUS + 1e-12).all()
-    assert main(["sweetspots", "pure-drive-2021"]) == 0
+    assert main(["sweetspots", "--racket", "pure-drive-2021"]) == 0
     out = capsys.readouterr().out
     assert "node of the first mode (150 Hz)" in out
-    assert "centre of percussion (grip at 5 cm)" in out
-    assert "value" not in out.splitlines()[1]
+    hand = 100 * (racket.beam.length - HAND_FROM_BUTT)  # mid-grip, said from the tip
+    assert f"centre of percussion (hand at {hand:.1f} cm)" in out
+    assert "value" not in out[: out.index("node of the first mode")]  # the header
 
 
 def test_feel_reports_the_modes_frequency_not_a_spectral_bin(capsys):
@@ -179,7 +185,7 @@ PLOT_RUNS = [
     ["ball", "happy", "--speeds", "5", "10"],
     ["ball"],
     ["modes"],
-    ["specs", "pure-drive-2021"],
+    ["specs", "--racket", "pure-drive-2021"],
     ["feel"],
     ["compare", "--points", "11"],
     ["validate"],
@@ -192,7 +198,7 @@ _SAID = re.compile(r"\d\s?(mph|m/s|lb|Hz|cm|mm|ms|kg|g|N/m|N|J|s|m|%)(?![\w/])")
 def _drawn(argv, tmp_path, monkeypatch):
     """The Axes a command would save with --plot."""
     made = []
-    for module in ("sweep", "serve", "balls", "rackets", "validate"):
+    for module in ("sweep", "face", "compare", "serve", "balls", "rackets", "validate"):
         monkeypatch.setattr(f"studies.cli.{module}.save_plot", lambda axes, path: made.append(axes))
     assert main([*argv, "--plot", str(tmp_path / "p.png")]) == 0
     assert len(made) == 1

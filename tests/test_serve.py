@@ -71,7 +71,7 @@ def test_twin_has_the_ball_s_stiffness_at_that_speed_and_no_rebound(law, speed):
 def test_twin_serves_slower_for_every_law():
     racket = paper_racket()
     for ball in (
-        load_ball("tennis"),
+        load_ball("paper"),
         load_ball("happy"),
         Ball(0.057, PowerLawHysteresis(2e6, 1.5, 3.0)),
     ):
@@ -84,7 +84,7 @@ def test_serve_what_if_checks_the_string_stiffness(stiffness):
     from studies.serve import serve_what_if
 
     with pytest.raises(ValueError, match=r"string_stiffness must be"):
-        serve_what_if(paper_racket(), BALLS["tennis"](), string_stiffness=[3e4, stiffness])
+        serve_what_if(paper_racket(), BALLS["paper"](), string_stiffness=[3e4, stiffness])
 
 
 def test_centre_of_percussion_is_simulated_and_is_the_formula_for_a_free_racket():
@@ -107,7 +107,7 @@ def test_centre_of_percussion_is_simulated_and_is_the_formula_for_a_free_racket(
     assert cop["free"] == pytest.approx(formula, abs=1e-10)
     assert abs(cop["held"] - formula) > 0.005
     # and the grip given moves it as the formula says, for the free racket
-    table = sweet_spots(free, paper_ball(), grip_from_butt=0.07).set_index("spot")
+    table = sweet_spots(free, paper_ball(), hand_from_tip=free.beam.length - 0.07).set_index("spot")
     formula = rigid_centre_of_percussion(free, free.beam.length - 0.07)
     assert table.loc["centre of percussion", "from_tip_cm"] / 100 == pytest.approx(
         formula, abs=1e-10

@@ -26,7 +26,7 @@ def test_each_point_of_a_swing_is_its_own_impact(racket, ball, speed):
     """A swing's sweep (all points together) gives at each point what that point alone, at
     its own speed about the same pivot, gives; a power-law ball's contact time depends on
     the closing speed, so its points run with their own time steps."""
-    swing = Swing(22.0, -0.05)
+    swing = Swing(22.0, racket.beam.length + 0.05)  # the wrist, given
     x = np.linspace(*racket.strings.extent, 7)
     table = sweep(racket, ball, x, speed, swing=swing, progress=False)
     v = swing.point_speeds(racket, x)
@@ -81,7 +81,8 @@ def test_the_head_speed_for_a_target_serve_meets_it(racket, target_mph):
     "kwargs, match",
     [
         (dict(head_speed=0.0), r"head_speed must be in \[0.001, 300\] m/s"),
-        (dict(head_speed=30.0, pivot_from_butt=-2.0), r"pivot_from_butt must be in \[-1, 0.3\]"),
+        (dict(head_speed=30.0, pivot_from_tip=2.7), r"pivot_from_tip must be in \[0, 2.5\] m"),
+        (dict(head_speed=30.0, pivot_from_tip=-0.1), r"pivot_from_tip must be in \[0, 2.5\] m"),
         (dict(head_speed=float("nan")), r"head_speed must be a finite number"),
     ],
 )
@@ -126,7 +127,7 @@ def test_a_swung_sweeps_vibration_fraction_is_the_racket_at_rest(racket):
     "argv, match",
     [
         (["serve", "--racket-speed-mph", "100", "--target-ball-speed-mph", "120"], "not both"),
-        (["sweep", "--pivot-cm-from-butt", "-10"], "--pivot-cm-from-butt needs --swing-speed"),
+        (["sweep", "--pivot-cm-from-tip", "80"], "--pivot-cm-from-tip needs --swing-speed"),
     ],
 )
 def test_contradicting_or_incomplete_options_are_refused(argv, match, capsys):

@@ -25,10 +25,13 @@ marker the build fills: ``{{ output: TEXT }}`` becomes the number printed right 
 ``TEXT`` in the page's outputs (spaces and line breaks count as one space), so "e peaks at
 {{ output: largest e = }}" reads "e peaks at 0.8872"; ``{{ code: module.NAME }}`` (or
 ``module.NAME:FORMAT``, ``:.3g``) becomes the value of a constant of the code: a default, or a
-published number that the code holds beside its source.  A marker that finds nothing fails the
-build.  On the pages :data:`CHECKED`, a number of the prose (not in code, a marker, a
-link's address or an HTML comment) that also appears in one of the page's outputs and has a
-decimal point or at least three digits (a year, 1900-2099, aside) fails the build
+published number that the code holds beside its source; ``{{ given: 148 }}``, the number as
+written, says that a number equal to an output's by chance is not that output (a source's, a
+dataset's).  A marker that finds nothing fails the build.
+
+On the pages :data:`CHECKED`, a number of the prose (not in code, a marker, a link's address
+or an HTML comment) that also appears in one of the page's outputs and has at least three
+significant digits (a year, 1900-2099, aside; :func:`counted`) fails the build
 (:func:`copied_numbers`): it is a hand-typed copy of an output, stale as soon as the output
 changes.  A number the page's blocks typed (a command's flag, a Python argument, a value of an
 example file they read) is an input, not a copy.
@@ -264,7 +267,9 @@ def _value(what: str) -> str:
         else:
             if isinstance(value, int | float) and not isinstance(value, bool):
                 return format(value, spec or "g")
-            raise RunError(f"{{{{ code: {what} }}}} is a {type(value).__name__}, not a number")
+            if isinstance(value, str):
+                return format(value, spec)
+            raise RunError(f"{{{{ code: {what} }}}} is a {type(value).__name__}")
     raise RunError(f"{{{{ code: {what} }}}}: no such constant in the code")
 
 
@@ -273,10 +278,12 @@ def _quoted(match: re.Match, printed: str) -> str:
     kind, what = match["kind"], match["what"]
     if kind == "code":
         return _value(what)
+    if kind == "given":  # a number that is no output (a source's), equal to one by chance
+        if not NUMBER.fullmatch(what):
+            raise RunError(f"{match[0]!r}: a given number is a number")
+        return what
     if kind != "output":
-        raise RunError(
-            f"unknown marker {match[0]!r}: use {{{{ output: TEXT }}}} or {{{{ code: NAME }}}}"
-        )
+        raise RunError(f"unknown marker {match[0]!r}: output, code or given")
     after = " ".join(what.split())
     found = re.search(re.escape(after) + r"\s*(-?" + NUMBER.pattern + ")", printed)
     if not found:
@@ -298,13 +305,17 @@ def prose(text: str) -> str:
 
 
 def counted(number: str) -> bool:
-    """Whether a number of the prose may be a copy of an output: it has a decimal point or at
-    least three digits, and is not a year (1900-2099).
+    """Whether a number of the prose may be a copy of an output: it has at least three
+    significant digits (16.5, 0.745, 139, 5,000,000; not 0.27, 10 or 120, too common to tell a
+    copy from a coincidence) and is not a year (1900-2099).
     """
-    digits = number.replace(",", "").split("e")[0].split("E")[0]
-    if re.fullmatch(r"(?:19|20)\d\d", digits):
+    mantissa = re.split(r"[eE]", number.replace(",", ""))[0]
+    if re.fullmatch(r"(?:19|20)\d\d", mantissa):
         return False
-    return "." in digits or len(digits.lstrip("0")) >= 3
+    digits = mantissa.replace(".", "").lstrip("0")
+    if "." not in mantissa:
+        digits = digits.rstrip("0")  # an integer's trailing zeros are not significant
+    return len(digits) >= 3
 
 
 def copied_numbers(text: str, outputs: list[str], inputs: str = "") -> list[str]:

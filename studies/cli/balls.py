@@ -49,12 +49,13 @@ def cmd_collide(args) -> int:
         tables=[("--out", args.out), ("--history", args.history)], plots=[("--plot", args.plot)]
     )
     v_a, v_b = _speed(args, "va", signed=True), _speed(args, "vb", signed=True)
+    unit = speed_unit(args, "va", "vb")  # as typed: m/s, mph or km/h
     if v_a - v_b < SPEED_RANGE[0]:
-        typed = [f"{flag} {shown(v)} {unit}" for flag, v, unit, _ in
+        typed = [f"{flag} {shown(v)} {u}" for flag, v, u, _ in
                  (_typed(args, "va"), _typed(args, "vb"))]  # fmt: skip
         raise ValueError(
-            f"--va must exceed --vb by at least {SPEED_RANGE[0]:g} m/s (the balls must "
-            f"approach), got {typed[0]} and {typed[1]}"
+            f"--va must exceed --vb by at least {SPEED_RANGE[0] / SPEED_UNITS[unit]:.4g} {unit} "
+            f"(the balls must approach), got {typed[0]} and {typed[1]}"
         )
     a = load_ball(args.a)
     b = WALL if args.b == "wall" else load_ball(args.b)
@@ -74,7 +75,6 @@ def cmd_collide(args) -> int:
     from studies.cli.show import label
 
     names = {"a": args.a, "b": args.b} if args.a != args.b else {"a": "ball a", "b": "ball b"}
-    unit = speed_unit(args, "va", "vb")  # as typed: m/s, mph or km/h
     size = SPEED_UNITS[unit]
     said = {
         "v_a_after_m_s": f"{names['a']}'s velocity after [{unit}]",

@@ -152,7 +152,7 @@ def say_conditions(line: str) -> str:
     """
     if _RUN:
         _RUN["conditions"] = line
-    print(textwrap.fill(line, 100, subsequent_indent="  "))
+    print(textwrap.fill(line, 100, subsequent_indent="  ", break_on_hyphens=False))
     return line
 
 

@@ -137,10 +137,12 @@ def paper_figures() -> dict:
     from ball import Ball, LinearSpring, SineLaw
     from racket import impact, paper_ball, paper_racket
     from studies import plots
+    from studies.conditions import conditions_line, racket_details
     from studies.serve import serve_what_if
 
     unhappy = Ball(0.0103, SineLaw(2e4))
     racket, ball = paper_racket(), paper_ball()
+    said = conditions_line("paper", "paper", **racket_details(racket))
     return {
         "fig2_unhappy_on_wall.png": lambda: plots.plot_collision(
             collide(unhappy, WALL, 4.0), title="Fig. 2: unhappy ball on a rigid wall"
@@ -153,13 +155,22 @@ def paper_figures() -> dict:
         ),
         "cor_vs_stiffness.png": plots.plot_cor_vs_stiffness,
         "cor_along_racket.png": lambda: plots.plot_cor_along_racket(
-            impact(racket, ball, np.linspace(0, 0.32, 161), 10.0), racket
+            impact(racket, ball, np.linspace(0, 0.32, 161), 10.0),
+            racket,
+            conditions=conditions_line("paper", "paper", 10.0, **racket_details(racket)),
         ),
         "impact_near_tip.png": lambda: plots.plot_impact(
-            impact(racket, ball, 0.03, 10.0, histories=True)
+            impact(racket, ball, 0.03, 10.0, histories=True),
+            conditions=conditions_line("paper", "paper", 10.0, **racket_details(racket))
+            + ", 3 cm from the tip",
         ),
-        "modes.png": lambda: plots.plot_modes(racket),
-        "serve_what_if.png": lambda: plots.plot_serve_what_if(serve_what_if(racket, ball)),
+        "modes.png": lambda: plots.plot_modes(
+            racket, conditions=conditions_line("paper", None, **racket_details(racket))
+        ),
+        "serve_what_if.png": lambda: plots.plot_serve_what_if(
+            serve_what_if(racket, ball),
+            conditions=f"{said} at rest, swung at 40 m/s head speed about the wrist",
+        ),
     }
 
 

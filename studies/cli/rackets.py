@@ -41,7 +41,7 @@ def cmd_modes(args) -> int:
     beam, modes = racket.beam, racket.beam.modes
     hand = hand_pivot(racket)
     centre = racket.strings.center
-    say_conditions(racket_conditions(args, racket))
+    conditions = say_conditions(racket_conditions(args, racket))
     print(f"length            {beam.length:.4f} m")
     print(f"mass              {beam.mass:.4f} kg")
     print(f"centre of mass    {100 * beam.center_of_mass:.2f} cm from the tip (balance "
@@ -76,7 +76,7 @@ def cmd_modes(args) -> int:
     if args.plot:
         from studies.plots import plot_modes
 
-        save_plot(plot_modes(racket, count=count), args.plot)
+        save_plot(plot_modes(racket, count=count, conditions=conditions), args.plot)
     return 0
 
 
@@ -102,7 +102,7 @@ def cmd_specs(args) -> int:
     racket = racket_from(args)
     specs, sources = racket_specs(args.racket)
     report = spec_report(racket, specs, count=count, ball=load_ball(args.ball))
-    say_conditions(racket_conditions(args, racket))
+    conditions = say_conditions(racket_conditions(args, racket))
     if specs is not None and specs.get("ra") is not None:
         print(f"{ra_note(specs['ra'])}\nspec sheet and fitted model:")
     elif specs is not None:
@@ -146,14 +146,16 @@ def cmd_specs(args) -> int:
     if args.plot:
         from studies.plots import plot_modes
 
-        save_plot(plot_modes(racket, count=count), args.plot)
+        save_plot(plot_modes(racket, count=count, conditions=conditions), args.plot)
     return 0
 
 
 def add_feel(sub) -> None:
     """The ``feel`` subcommand, on the subparsers ``sub``."""
     p = sub.add_parser("feel", help="the handle's motion at the hand after an impact")
-    add_racket_options(p, support_default="hand-held")
+    from studies.feel import FEEL_SUPPORT
+
+    add_racket_options(p, support_default=FEEL_SUPPORT)
     _ball_arg(p)
     _speed_option(p, "speed", BALL_SPEED, "ball speed towards the strings")
     p.add_argument("--position", type=float, metavar="CM", help="impact point [cm from the "

@@ -156,6 +156,11 @@ def compare_view(summary, unit: str, swung: bool):
     return pd.DataFrame(data)
 
 
+def _wrap(text: str, size: int) -> list[str]:
+    """``text`` wrapped to ``size`` columns, names such as "pure-drive-2021" kept whole."""
+    return textwrap.wrap(text, size, break_on_hyphens=False)
+
+
 def _cells(values, floatfmt: str) -> tuple[list[str], bool]:
     """A column's values as text, and whether they are numbers (right-aligned)."""
     values = list(values)
@@ -224,7 +229,7 @@ def table_lines(table, floatfmt: str = "{:.4g}", width: int = WIDTH) -> list[str
     while True:  # the widest cells of words wrapped until the table fits
         columns = []
         for (name, title, cells, numeric, _), size in zip(raw, sizes, strict=True):
-            cells = [[c] if numeric else textwrap.wrap(c, size) or [""] for c in cells]
+            cells = [[c] if numeric else _wrap(c, size) or [""] for c in cells]
             size = max([len(line) for c in cells for line in c] + [len(w) for w in title.split()])
             while len(textwrap.wrap(title, size)) > 3:
                 size += 1

@@ -1,8 +1,12 @@
 """Plots of simulation results (matplotlib).
 
-Every function takes results computed elsewhere and an optional ``ax`` (an Axes, or a
-sequence of Axes for the multi-panel plots), draws, and returns the Axes; none calls
-``show()``.  Positions along the racket are distances from the tip, in cm on the plots.
+Every function takes results computed elsewhere, an optional ``ax`` (an Axes, or a
+sequence of Axes for the multi-panel plots) and optional ``conditions`` (what the results
+are for, :func:`studies.conditions.conditions_line`, drawn as the figure's heading), draws,
+and returns the Axes; none calls ``show()``.  A figure a plot makes is laid out so that
+everything fits (:mod:`studies.plots.layout`).  Positions along the racket are distances
+from the tip, in cm on the plots; the plots that show speeds take ``unit`` (m/s, mph or
+km/h: the one the user typed).
 """
 
 from studies.plots.ball import plot_collision, plot_cor_vs_stiffness, plot_drop, plot_rigid_bounce

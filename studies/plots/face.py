@@ -82,7 +82,7 @@ def plot_face_map(
             color="tab:orange",
             ls="--",
             lw=1.5,
-            label=f"node of the first mode, {x:.1f} cm from the tip",
+            label="node of the first mode",
         )
     cop = 100 * face_map.center_of_percussion
     ax.plot(
@@ -92,7 +92,7 @@ def plot_face_map(
         color="k",
         mec="w",
         ms=9,
-        label=f"centre of percussion (hand pivot), {cop:.1f} cm from the tip",
+        label="centre of percussion (hand pivot)",
     )
     _peak_region(ax, face_map, field, y_cm, x_cm, values)
     ax.set_aspect("equal")
@@ -100,7 +100,7 @@ def plot_face_map(
     ax.set_ylim(100 * strings.extent[1] + 1, 100 * strings.extent[0] - 1)  # tip up
     ax.set_xlabel("offset from the axis [cm] (+ towards 3 o'clock)")
     ax.set_ylabel(FROM_TIP)
-    ax.set_title(f"{label}\nball at {face_map.speed / size:.3g} {unit}")
+    ax.set_title(f"{label}\nball at {face_map.speed / size:.4g} {unit}")
     ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.1), fontsize="small")
     return finish(ax, conditions, made)
 
@@ -126,8 +126,7 @@ def _peak_region(ax, face_map, field: str, y_cm, x_cm, values) -> None:
         i, j = np.unravel_index(np.argmax(grid), grid.shape)
         words = _FIELD_LABELS[field].split(" [")[0]
         label = f"{words} within {100 * SWEET_FRACTION:g} % of its largest"
-        ax.plot(y_cm[i, j], x_cm[i, j], "*", color="r", mec="w", ms=12,
-                label=f"largest, {x_cm[i, j]:.1f} cm from the tip")  # fmt: skip
+        ax.plot(y_cm[i, j], x_cm[i, j], "*", color="r", mec="w", ms=12, label="largest")
     else:
         return
     if np.max(grid) > level:

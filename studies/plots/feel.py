@@ -4,6 +4,7 @@ time, and the vibration's spectrum.
 
 from __future__ import annotations
 
+from common.units import GRAVITY
 from studies.plots.axes import _axes
 from studies.plots.layout import finish, legend_outside
 
@@ -28,21 +29,21 @@ def plot_hand_feel(feel, ax=None, conditions: str | None = None):
     top, bottom = ax
     t_ms = 1e3 * feel.t
     top.axvspan(0.0, 1e3 * feel.contact_time, color="0.9", label="ball on the strings")
-    top.plot(t_ms, feel.vibration_acceleration / 9.81, color="C3", lw=0.8, label="vibration")
+    top.plot(t_ms, feel.vibration_acceleration / GRAVITY, color="C3", lw=0.8, label="vibration")
     on = feel.t <= feel.contact_time
-    shock = feel.shock_acceleration / 9.81
+    shock = feel.shock_acceleration / GRAVITY
     top.plot(t_ms[on], shock[on], color="C0", label="shock: the rigid-body motion")
     top.plot(t_ms[~on], shock[~on], color="C0", lw=0.8, ls=":",
              label="the same after: racket and hand moving on")  # fmt: skip
     top.set_xlabel("time since first contact [ms]")
     top.set_ylabel("handle acceleration [g]")
     top.set_title(
-        f"at the grip, {100 * feel.grip:.1f} cm from the tip: shock {feel.shock / 9.81:.1f} g "
-        f"(ball on the strings), vibration {feel.vibration / 9.81:.0f} g (after)"
+        f"at the grip, {100 * feel.grip:.1f} cm from the tip: shock {feel.shock / GRAVITY:.1f} g "
+        f"(ball on the strings), vibration {feel.vibration / GRAVITY:.0f} g (after)"
     )
     legend_outside(top)
     keep = feel.frequencies <= 2000.0
-    bottom.plot(feel.frequencies[keep], feel.spectrum[keep] / 9.81, color="C3")
+    bottom.plot(feel.frequencies[keep], feel.spectrum[keep] / GRAVITY, color="C3")
     bottom.set_xlabel("frequency [Hz]")
     bottom.set_ylabel("vibration amplitude [g]")
     bottom.set_title(

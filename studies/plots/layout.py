@@ -11,12 +11,13 @@ import numpy as np
 
 AXES_WIDTH = 5.0
 """Width [in] the Axes of a figure made here keep beside the legends outside them: the
-figure is widened to make room (ASSUMPTION: matplotlib's default figure is 6.4 in wide; its
-Axes keep about 5 in of it when nothing stands beside them)."""
+figure is widened to make room (ASSUMPTION, a choice: about what Axes keep of matplotlib's
+default 6.4 in wide figure when nothing stands beside them)."""
 
 LEGEND_CHARACTERS = 40
 """Longest line [characters] of a legend entry beside the Axes; longer entries are wrapped
-(so that a legend takes at most about 2.5 in beside the Axes at the small font)."""
+(ASSUMPTION, a choice: about 2.5 in at the legend's small font, so that a legend never takes
+more than half a widened figure)."""
 
 FROM_TIP = "from the tip [cm]"
 """The end of every position axis' label: positions along the racket are measured from the
@@ -35,7 +36,7 @@ def legend_outside(ax, **options) -> None:
         Passed to :meth:`matplotlib.axes.Axes.legend` (e.g. ``fontsize``).
     """
     handles, labels = ax.get_legend_handles_labels()
-    labels = [textwrap.fill(label, LEGEND_CHARACTERS) for label in labels]
+    labels = [_fill(label, LEGEND_CHARACTERS) for label in labels]
     place = dict(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize="small", borderaxespad=0)
     ax.legend(handles, labels, **(place | options))
 
@@ -100,4 +101,11 @@ def _wrap(text, width: float) -> None:
     for characters in range(longest - 2, 10, -2):
         if text.get_window_extent().width <= width:
             return
-        text.set_text("\n".join(textwrap.fill(line, characters) for line in original.splitlines()))
+        text.set_text("\n".join(_fill(line, characters) for line in original.splitlines()))
+
+
+def _fill(line: str, characters: int) -> str:
+    """``line`` wrapped at spaces into lines of at most ``characters`` (a name such as
+    "itf-type-2" kept whole).
+    """
+    return textwrap.fill(line, characters, break_on_hyphens=False, break_long_words=False)
