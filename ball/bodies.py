@@ -9,7 +9,32 @@ from dataclasses import dataclass
 import numpy as np
 
 from ball.laws import MonotoneLaw, SineLaw
-from common.checks import positive
+from common.checks import CM_AS_M, MM_AS_M, finite_array, in_range, instance, positive
+
+BALL_RADIUS_RANGE = (0.005, 0.15)
+"""The radius of a ball [m] racket-impact accepts: **an assumption**, generous around the
+balls of ball sports (table tennis 20 mm, a tennis ball 33.5 mm, a basketball about
+120 mm).  It bounds a ball's :attr:`Ball.radius` and the limit ``x_lim`` of
+:class:`~ball.StiffeningHysteresis` (the ball's radius), so that a radius in cm or mm typed
+as m (3.35 or 33.5 for 0.0335) is refused with the hint."""
+
+RADIUS_SLIPS = (CM_AS_M, MM_AS_M)
+"""The likely slips of unit of a ball's radius: cm or mm typed as m."""
+
+
+def ball_radius(name: str, value) -> float:
+    """A ball's radius [m] (or a length as large, ``x_lim``), in :data:`BALL_RADIUS_RANGE`:
+    ValueError naming ``name`` with the range and a likely slip of unit otherwise.
+
+    Parameters
+    ----------
+    name : str
+        The argument's name, as the message quotes it.
+    value : object
+        The radius [m].
+    """
+    positive(name, value, "m")  # a sign slip said as such
+    return in_range(name, value, *BALL_RADIUS_RANGE, "m", slips=RADIUS_SLIPS)
 
 
 @dataclass(frozen=True)
@@ -25,9 +50,9 @@ class Ball:
         :class:`~ball.PowerLawHysteresis`, :class:`~ball.GrowingHysteresis` or
         :class:`~ball.SineLaw`).
     radius : float, optional
-        Ball radius [m], > 0: a result that compresses the ball beyond it is out of the
-        range where any force law of a ball means something, and warns
-        (:func:`warn_if_squashed`).  None: not checked.
+        Ball radius [m], in :data:`BALL_RADIUS_RANGE`: a result that compresses the ball
+        beyond it is out of the range where any force law of a ball means something, and
+        warns (:func:`warn_if_squashed`).  None: not checked.
     """
 
     mass: float
@@ -37,7 +62,7 @@ class Ball:
     def __post_init__(self):
         object.__setattr__(self, "mass", positive("mass", self.mass, "kg"))
         if self.radius is not None:
-            object.__setattr__(self, "radius", positive("radius", self.radius, "m"))
+            object.__setattr__(self, "radius", ball_radius("radius", self.radius))
         if not isinstance(self.law, (MonotoneLaw, SineLaw)):
             raise ValueError(
                 "law must be LinearSpring, LinearHysteresis, PowerLawHysteresis, "
@@ -74,6 +99,10 @@ def warn_if_squashed(ball: Ball, compression, stacklevel: int = 3) -> None:
     stacklevel : int, optional
         Passed to :func:`warnings.warn`, so the warning points at the caller's caller.
     """
+    instance("ball", ball, Ball, "a ball.Ball")
+    compression = finite_array("compression", compression, "m")
+    if compression.size == 0:
+        raise ValueError("compression must be one or more numbers [m], got none")
     largest = float(np.max(compression))
     if ball.radius is not None and largest > ball.radius:
         warnings.warn(

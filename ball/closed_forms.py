@@ -10,7 +10,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from common.checks import in_range, non_negative, positive
+from common.checks import finite_array, in_range, non_negative, positive
 
 
 def energy_loss_fraction(e: float) -> float:
@@ -136,7 +136,7 @@ def unhappy_solution(t, m1: float, m2: float, k0: float, k2: float, v1: float) -
     m1, m2 = positive("m1", m1, "kg"), positive("m2", m2, "kg")
     k0, k2 = positive("k0", k0, "N/m"), positive("k2", k2, "N/m")
     v1 = positive("v1", v1, "m/s")
-    t = np.asarray(t, dtype=float)
+    t = finite_array("t", t, "s")
     omega = np.sqrt(k2 * (1.0 / m1 + 1.0 / m2))  # Eq. 13
     x_o = v1 / (omega * (1.0 / np.pi + k0 / k2))
     f_o = k0 * x_o

@@ -17,7 +17,7 @@ from ball.bodies import Ball, Wall, warn_if_squashed
 from ball.contact import RelativeContact
 from ball.laws import SineLaw
 from ball.monotone import monotone_contact
-from common.checks import SPEED_RANGE, in_range, shown
+from common.checks import SPEED_RANGE, ends, in_range, instance, shown, whole
 
 
 @dataclass(frozen=True)
@@ -105,6 +105,57 @@ class Collision:
         return self.energy_lost / self.energy_initial
 
 
+def largest_closing_speed(a: Ball, b: Ball | Wall) -> float:
+    """The fastest closing speed [m/s] at which ``a`` and ``b`` can collide: their force
+    laws must store the collision's energy in the centre-of-mass frame, mu v**2 / 2, short of
+    their limits (``law.storable``: a stiffening ball squashed flat); inf when neither law
+    has a limit.
+
+    Parameters
+    ----------
+    a : Ball
+        One ball.
+    b : Ball or Wall
+        The other, or :data:`~ball.WALL`.
+    """
+    wall = isinstance(b, Wall)
+    mu = a.mass if wall else a.mass * b.mass / (a.mass + b.mass)
+    storable = a.law.storable + (0.0 if wall else b.law.storable)
+    return float(np.sqrt(2.0 * storable / mu))
+
+
+def too_fast_to_store(
+    name: str, typed, fastest: float, unit: str = "m/s", size: float = 1.0
+) -> ValueError:
+    """The refusal of a closing speed above :func:`largest_closing_speed`, naming the input
+    as the user gave it: "v_a must be in [0.001, 170.7] m/s for these balls: faster, the
+    collision's energy is more than the balls' force laws can store ..., got 300".
+
+    Parameters
+    ----------
+    name : str
+        The input, as the message quotes it (an argument's name, a flag).
+    typed : float or str
+        Its value as typed [``unit``]: a number, or a text such as "300 - 10" for two
+        velocities.
+    fastest : float
+        The largest closing speed [m/s] (:func:`largest_closing_speed`).
+    unit : str, optional
+        The unit the speed was typed in.
+    size : float, optional
+        That unit's size [m/s].
+    """
+    low = SPEED_RANGE[0]
+    said = f"in [{ends(low / size, fastest / size)}]" if fastest >= low else (
+        f"at most {fastest / size:.3g}"  # below any speed accepted: no collision at all
+    )  # fmt: skip
+    return ValueError(
+        f"{name} must be {said} {unit} for these balls: faster, the collision's energy is more "
+        "than the balls' force laws can store short of their limits (a stiffening ball "
+        f"squashed flat), got {typed if isinstance(typed, str) else shown(typed)}"
+    )
+
+
 def collide(a: Ball, b: Ball | Wall, v_a: float, v_b: float = 0.0, samples: int = 400) -> Collision:
     """Collide ball ``a`` head-on with ball ``b`` (or :data:`~ball.WALL`) in the lab frame.
 
@@ -122,7 +173,7 @@ def collide(a: Ball, b: Ball | Wall, v_a: float, v_b: float = 0.0, samples: int 
         +-300 m/s; the balls must approach (``v_a - v_b >= 0.001`` m/s).  The wall does not
         move (``v_b = 0``).
     samples : int
-        Points per phase in the returned history.
+        Points per phase in the returned history, in [2, 100000].
 
     Returns
     -------
@@ -143,10 +194,9 @@ def collide(a: Ball, b: Ball | Wall, v_a: float, v_b: float = 0.0, samples: int 
     >>> round(r.e, 4), round(r.v_b_after, 4)
     (0.5171, 3.0342)
     """
-    if not isinstance(a, Ball):
-        raise ValueError(f"a must be a Ball, got {a!r}")
-    if not isinstance(b, (Ball, Wall)):
-        raise ValueError(f"b must be a Ball or WALL, got {b!r}")
+    instance("a", a, Ball, "a ball.Ball")
+    instance("b", b, (Ball, Wall), "a ball.Ball or ball.WALL")
+    samples = whole("samples", samples, 2, 100_000)
     v_a = in_range("v_a", v_a, -SPEED_RANGE[1], SPEED_RANGE[1], "m/s")
     v_b = in_range("v_b", v_b, -SPEED_RANGE[1], SPEED_RANGE[1], "m/s")
     wall = isinstance(b, Wall)
@@ -159,6 +209,11 @@ def collide(a: Ball, b: Ball | Wall, v_a: float, v_b: float = 0.0, samples: int 
         )
 
     closing = v_a - v_b
+    fastest = largest_closing_speed(a, b)
+    if closing > fastest:
+        if v_b == 0.0:
+            raise too_fast_to_store("v_a", v_a, fastest)
+        raise too_fast_to_store("v_a - v_b", f"{shown(v_a)} - {shown(v_b)}", fastest)
     mu = a.mass if wall else a.mass * b.mass / (a.mass + b.mass)
     law_b = None if wall else b.law
     from ball.unhappy import unhappy_contact  # scipy loads on first use (import time)

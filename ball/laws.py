@@ -467,6 +467,11 @@ class SineLaw:
         return self.k0
 
     @property
+    def storable(self) -> float:
+        """The most energy [J] a collision can store in the ball: no limit (its Xo grows)."""
+        return np.inf
+
+    @property
     def kernel_law(self) -> tuple:
         """(code, (k0, 0, 0, 0)): the law in the racket solver's compiled kernel."""
         return SINE, (self.k0, 0.0, 0.0, 0.0)

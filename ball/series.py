@@ -16,7 +16,7 @@ from collections.abc import Sequence
 import numpy as np
 
 from ball.laws import MonotoneLaw
-from common.checks import finite, finite_array
+from common.checks import ArgumentTypeError, finite, finite_array, shown
 
 _DOUBLINGS = 2100
 """Doublings of the force at most while bracketing the root (2**2100 spans every float)."""
@@ -84,6 +84,12 @@ def series_force(laws: Sequence[MonotoneLaw], z, f_max, rtol: float = 1e-14, gue
         last one): Newton's method starts there, a few steps instead of about twenty.  The
         answer is the same to ``rtol``.
     """
+    laws_ok = isinstance(laws, tuple | list) and all(isinstance(w, MonotoneLaw) for w in laws)
+    if not (laws_ok and laws):
+        raise ArgumentTypeError(
+            "laws must be a non-empty list of MonotoneLaw (LinearSpring, LinearHysteresis, "
+            f"...), got {shown(laws)}"
+        )
     if np.ndim(z) == 0 and np.ndim(f_max) == 0:
         z, f_max = finite("z", z, "m"), finite("f_max", f_max, "N")
         with np.errstate(over="ignore"):  # doubling towards a huge force may overflow

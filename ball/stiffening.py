@@ -28,6 +28,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ball.bodies import ball_radius
 from ball.laws import STIFFENING, _PowerBranches, falling_cor, falling_cor_parameters
 from common.checks import positive
 
@@ -69,7 +70,8 @@ class StiffeningHysteresis(_PowerBranches):
     k : float
         Stiffness at small compression [N/m], > 0.
     x_lim : float
-        Compression the loading approaches and never reaches [m], > 0 (the ball's radius).
+        Compression the loading approaches and never reaches [m] (the ball's radius), in
+        :data:`ball.bodies.BALL_RADIUS_RANGE`.
     e0 : float
         COR of a vanishingly slow bounce on a rigid surface [-], in (COR_FLOOR, 1].
     slope : float
@@ -83,7 +85,7 @@ class StiffeningHysteresis(_PowerBranches):
 
     def __post_init__(self):
         object.__setattr__(self, "k", positive("k", self.k, "N/m"))
-        object.__setattr__(self, "x_lim", positive("x_lim", self.x_lim, "m"))
+        object.__setattr__(self, "x_lim", ball_radius("x_lim", self.x_lim))
         e0, slope = falling_cor_parameters(self.e0, self.slope)
         object.__setattr__(self, "e0", e0)
         object.__setattr__(self, "slope", slope)
@@ -98,6 +100,12 @@ class StiffeningHysteresis(_PowerBranches):
 
     def _force_at(self, x):
         return self.k * x / (1.0 - x / self.x_lim)
+
+    def secant_stiffness(self, mass: float, speed: float) -> float:
+        """F_max / X_max = (F_max + F_c) / x_lim [N/m] of a ball of ``mass`` [kg] hitting a
+        rigid surface at ``speed`` [m/s] (inf where the force overflows: never NaN).
+        """
+        return float((self.peak_force(mass, speed) + self._f_c) / self.x_lim)
 
     def _loading_compliance(self, f):
         return self.x_lim * self._f_c / (np.asarray(f, dtype=float) + self._f_c) ** 2

@@ -14,7 +14,7 @@ import numpy as np
 from beam import fem, uniform
 from beam.modes import Modes
 from beam.torsion import RollModes, roll_modes
-from common.checks import finite_array, in_range, positive, shown
+from common.checks import finite, finite_array, in_range, instance, positive, shown, whole
 
 DEFAULT_DAMPING = 0.005
 """Default modal damping ratio of every bending mode.  A freely suspended graphite racket
@@ -33,6 +33,10 @@ paper's racket is at 3.8 kHz, far above what a 4-5 ms impact excites; 12 modes c
 
 MAX_MODES = 200
 """Most bending modes a beam may keep (the analytic shapes overflow above about 225)."""
+
+MAX_ELEMENTS = 20_000
+"""Most finite elements along a beam (an assumption: 240 resolve a racket's modes; each
+element more costs time, and 20 000 are far past any use)."""
 
 MAX_PROFILE_RATIO = 1e4
 """Largest ratio between the segments' largest and smallest EI (or mass per length): a
@@ -72,7 +76,7 @@ class Beam:
     n_modes : int
         Number of bending modes, in [1, :data:`MAX_MODES`].  Default :data:`DEFAULT_MODES`.
     elements : int
-        Finite elements along a non-uniform beam (about), >= 20.
+        Finite elements along a non-uniform beam (about), in [20, :data:`MAX_ELEMENTS`].
     roll_inertia_per_length : sequence of float or None
         Moment of inertia about the long axis per length of each segment [kg m] (the
         frame's width: hoop, strings, throat arms), >= 0; None (default) when the beam's
@@ -123,12 +127,14 @@ class Beam:
                     f"{name} must vary by at most {MAX_PROFILE_RATIO:g} times along the beam, "
                     f"got {float(values.min()):g} to {float(values.max()):g}"
                 )
+        points = "a sequence of (position, mass[, offset]) [m, kg, m]"
+        instance("point_masses", self.point_masses, tuple | list, points)
         pm = np.zeros((len(self.point_masses), 3))
         for i, point in enumerate(self.point_masses):
             values = finite_array("point_masses", point).ravel()
             if values.size not in (2, 3):
                 raise ValueError(
-                    "each point mass must be (position [m], mass [kg]) or (position, mass, "
+                    "each of point_masses must be (position [m], mass [kg]) or (position, mass, "
                     f"offset [m]), got {shown(point)}"
                 )
             pm[i, : values.size] = values
@@ -177,8 +183,7 @@ class Beam:
             )
         if np.any((damping < 0) | (damping >= 1)):
             raise ValueError(f"damping must be in [0, 1), got {damping}")
-        if int(self.elements) < 20:
-            raise ValueError(f"elements must be >= 20, got {self.elements!r}")
+        object.__setattr__(self, "elements", whole("elements", self.elements, 20, MAX_ELEMENTS))
         object.__setattr__(self, "stations", tuple(st))
         object.__setattr__(self, "mass_per_length", tuple(rho))
         object.__setattr__(self, "bending_stiffness", tuple(ei))
@@ -255,6 +260,7 @@ class Beam:
 
     def inertia_about(self, x: float) -> float:
         """Moment of inertia [kg m^2] about a transverse axis at ``x`` [m from the tip]."""
+        x = finite("x", x, "m from the tip")
         mid, lengths, masses, pm = self._segments
         return float(masses @ (lengths**2 / 12.0 + (mid - x) ** 2) + pm[:, 1] @ (pm[:, 0] - x) ** 2)
 
@@ -287,7 +293,7 @@ class Beam:
         twisting are uncoupled (:mod:`beam.torsion`).
         """
         pm = self.point_array
-        off = pm[pm[:, 2] != 0.0]
+        off = pm[np.abs(pm[:, 2]) > 1e-15]  # on the axis but for round-off [m]: no coupling
         plus = off[off[:, 2] > 0]
         minus = off[off[:, 2] < 0] * np.array([1.0, 1.0, -1.0])
         if plus.shape != minus.shape:
@@ -328,7 +334,7 @@ class Beam:
         >>> round(float(beam.effective_mass(0.16)), 4)  # the paper racket's string centre
         0.1847
         """
-        b = self.center_of_mass - np.asarray(x, dtype=float)
+        b = self.center_of_mass - finite_array("x", x, "m from the tip")
         flexibility = 1.0 / self.mass + b**2 / self.inertia_cm
         if y is not None:
             if self.roll_inertia is None:
@@ -336,7 +342,8 @@ class Beam:
                     "an offset from the long axis needs the beam's roll inertia "
                     "(roll_inertia_per_length; a spec-sheet racket has it)"
                 )
-            flexibility = flexibility + np.asarray(y, dtype=float) ** 2 / self.roll_inertia
+            y = finite_array("y", y, "m from the long axis")
+            flexibility = flexibility + y**2 / self.roll_inertia
         return 1.0 / flexibility
 
     def with_f1(self, f1: float) -> Beam:
@@ -361,7 +368,8 @@ class Beam:
         """A copy of the beam with more point masses (lead tape): (position [m from the tip],
         mass [kg]) or (position, mass, lateral offset [m]).
         """
-        return replace(self, point_masses=(*self.point_masses, *map(tuple, masses)))
+        points = (tuple(finite_array("point_masses", m).ravel()) for m in masses)
+        return replace(self, point_masses=(*self.point_masses, *points))
 
     def with_torsion_frequency(self, frequency: float) -> Beam:
         """A copy of the beam with every torsional stiffness scaled so that its first torsion mode

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 import numbers
+import os
 import warnings
 from decimal import ROUND_CEILING, ROUND_FLOOR, Decimal
 
@@ -62,6 +63,86 @@ def shown(value) -> str:
     return repr(value)
 
 
+class ArgumentTypeError(TypeError, ValueError):
+    """An argument of the wrong type (None, a word, a list... where a number or a Racket is
+    asked for): a ``TypeError``, as Python has it, and a ``ValueError`` too, as every other
+    bad input here is, so that whoever catches those (the command line does) catches it.
+    """
+
+
+def instance(name: str, value, types, what: str, hint: str = ""):
+    """Return ``value``; raise :class:`ArgumentTypeError` ("ball must be a ball.Ball, got
+    'x'") unless it is an instance of ``types``.
+
+    Parameters
+    ----------
+    name : str
+        The argument's name, as the message quotes it.
+    value : object
+        The value to check.
+    types : type or tuple of type
+        What it may be (``type(None)`` among them if None is allowed).
+    what : str
+        What it may be, as the message says it ("a racket.Racket or None").
+    hint : str, optional
+        Appended to the message, e.g. how to make one.
+    """
+    if not isinstance(value, types):
+        raise ArgumentTypeError(f"{name} must be {what}, got {shown(value)}{hint}")
+    return value
+
+
+def flag(name: str, value) -> bool:
+    """Return ``value`` as a bool; raise :class:`ArgumentTypeError` unless it is True or
+    False (a word or a number would pass for either).
+
+    Parameters
+    ----------
+    name : str
+        The argument's name, as the message quotes it.
+    value : object
+        The value to check.
+    """
+    return bool(instance(name, value, bool | np.bool_, "True or False"))
+
+
+def choice(name: str, value, choices) -> str:
+    """Return ``value``; raise ``ValueError`` unless it is one of the words ``choices`` (an
+    :class:`ArgumentTypeError` if it is not a word at all).
+
+    Parameters
+    ----------
+    name : str
+        The argument's name, as the message quotes it.
+    value : object
+        The value to check.
+    choices : sequence of str
+        The words it may be.
+    """
+    said = f"{name} must be one of {', '.join(map(repr, choices))}, got {shown(value)}"
+    if not isinstance(value, str):
+        raise ArgumentTypeError(said)
+    if value not in choices:
+        raise ValueError(said)
+    return value
+
+
+def file_path(name: str, value) -> str:
+    """Return ``value``, a file's path (a str or an ``os.PathLike`` such as a
+    ``pathlib.Path``), as a str; raise :class:`ArgumentTypeError` for anything else (an int
+    would open a file descriptor).
+
+    Parameters
+    ----------
+    name : str
+        The argument's name, as the message quotes it.
+    value : object
+        The value to check.
+    """
+    path = os.fspath(instance(name, value, str | os.PathLike, "a path (str or os.PathLike)"))
+    return instance(name, path, str, "a path (str or os.PathLike)")
+
+
 def finite(name: str, value, unit: str = "") -> float:
     """Return ``value`` as a float; raise ``ValueError`` if it is not a finite real number.
 
@@ -74,17 +155,21 @@ def finite(name: str, value, unit: str = "") -> float:
     unit : str, optional
         Its unit, as the message quotes it (e.g. ``"m/s"``); "" for none.
     """
-    if isinstance(value, bool | np.bool_ | str):
-        raise ValueError(f"{name} must be a finite number{_unit(unit)}, got {shown(value)}")
     try:
+        if isinstance(value, bool | np.bool_ | str | os.PathLike):
+            raise TypeError
         x = float(value)
-    except (TypeError, ValueError, OverflowError):
-        raise ValueError(
-            f"{name} must be a finite number{_unit(unit)}, got {shown(value)}"
-        ) from None
+    except (TypeError, ValueError):
+        raise ArgumentTypeError(_not_finite(name, value, unit)) from None
+    except OverflowError:
+        raise ValueError(_not_finite(name, value, unit)) from None
     if not math.isfinite(x):
-        raise ValueError(f"{name} must be a finite number{_unit(unit)}, got {shown(value)}")
+        raise ValueError(_not_finite(name, value, unit))
     return x
+
+
+def _not_finite(name: str, value, unit: str) -> str:
+    return f"{name} must be a finite number{_unit(unit)}, got {shown(value)}"
 
 
 def positive(name: str, value, unit: str = "") -> float:
@@ -133,6 +218,9 @@ KN_AS_N = (1e3, "kN/m typed as N/m?")
 """A slip of unit for :func:`in_range`'s ``slips``: a stiffness in kN/m where N/m are asked
 for."""
 
+MM_AS_M = (1e-3, "mm typed as m?", "mm")
+"""A length in mm where m are asked for."""
+
 # The slips below quote the value typed in its likely unit: "645 cm^2 would be 99.98 in^2".
 MPH_AS_M_S = (MPH, "mph typed as m/s?", "mph")
 """A speed in mph where m/s are asked for."""
@@ -177,6 +265,10 @@ IN2_AS_CM2 = (1e4 * IN2, "in^2 typed as cm^2?", "in^2")
 
 KGM2_AS_KGCM2 = (1e4, "kg m^2 typed as kg cm^2?", "kg m^2")
 """A moment of inertia (swingweight) in kg m^2 where kg cm^2 are asked for."""
+
+KGCM2_AS_KGM2 = (1e-4, "kg cm^2 typed as kg m^2?", "kg cm^2")
+"""A moment of inertia (swingweight) in kg cm^2, as spec sheets give it, where kg m^2 are
+asked for."""
 
 OZ_AS_KG = (OUNCE, "ounces typed as kg?", "oz")
 """A mass in ounces where kg are asked for (racket weights are quoted in oz)."""
@@ -247,6 +339,25 @@ def in_range(
             f"{name} must be in [{ends(low, high)}]{_unit(unit)}, got {shown(value)}{hint}"
         )
     return x
+
+
+def whole(name: str, value, low: int, high: int) -> int:
+    """Return ``value`` as an int; raise ``ValueError`` unless it is a whole number in
+    ``[low, high]`` (an :class:`ArgumentTypeError` if it is not a number at all).
+
+    Parameters
+    ----------
+    name : str
+        The argument's name, as the message quotes it.
+    value : object
+        The value to check [-].
+    low, high : int
+        The bounds [-], inclusive.
+    """
+    x = in_range(name, value, low, high)
+    if x != int(x):
+        raise ValueError(f"{name} must be a whole number, got {shown(value)}")
+    return int(x)
 
 
 def ends(low: float, high: float, digits: int = 4) -> str:
@@ -400,8 +511,14 @@ def finite_array(name: str, values, unit: str = "") -> np.ndarray:
         Its unit, as the message quotes it (e.g. ``"m/s"``); "" for none.
     """
     try:
+        if isinstance(values, str | bytes | os.PathLike):  # numpy would read "4" as 4.0
+            raise TypeError
         a = np.asarray(values, dtype=float)
-    except (TypeError, ValueError, OverflowError):
+    except (TypeError, ValueError):
+        raise ArgumentTypeError(
+            f"{name} must be finite numbers{_unit(unit)}, got {shown(values)}"
+        ) from None
+    except OverflowError:
         raise ValueError(
             f"{name} must be finite numbers{_unit(unit)}, got {shown(values)}"
         ) from None

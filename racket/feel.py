@@ -29,7 +29,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from common.checks import finite, in_range
+from common.checks import finite, in_range, instance
 from common.checks import speed as check_speed
 from racket.racket import Racket
 from racket.solver import impact
@@ -157,6 +157,7 @@ def hand_feel(
     -------
     HandFeel
     """
+    instance("racket", racket, Racket, "a racket.Racket")
     if racket.support == "clamped-head":
         raise ValueError("support must be 'free' or 'hand-held' for the feel at the hand")
     duration = in_range("duration", duration, 0.005, 1.0, "s")

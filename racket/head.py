@@ -53,7 +53,10 @@ class Hoop:
         angle = np.asarray(angle, dtype=float)
         a, b = self.center, self.half_width
         r = a * b / np.hypot(b * np.cos(angle), a * np.sin(angle))
-        return a - r * np.cos(angle), r * np.sin(angle)
+        # On the long axis (12 and 6 o'clock) y is 0 exactly, not sin(pi)'s 1e-17 m round-off:
+        # a point mass there keeps the racket symmetric about its long axis.
+        across = np.where(np.isclose(np.sin(angle), 0.0, rtol=0.0, atol=1e-12), 0.0, np.sin(angle))
+        return a - r * np.cos(angle), r * across
 
     def clock(self, at: str) -> tuple[np.ndarray, np.ndarray]:
         """Where lead tape placed at clock position ``at`` sits on the hoop: (x, y) arrays,

@@ -8,7 +8,16 @@ from functools import cached_property
 import numpy as np
 
 from beam import Beam
-from common.checks import finite_array, non_negative, positive, shown
+from common.checks import (
+    GRAMS_AS_KG,
+    choice,
+    finite_array,
+    in_range,
+    instance,
+    non_negative,
+    positive,
+    shown,
+)
 from racket.hand import GRIPS, Hand
 from racket.head import HEAD_ASPECT, Hoop
 from racket.membrane import bed_radius, stiffness_ratio
@@ -16,6 +25,27 @@ from racket.system import clamped_system, face_system, racket_system, roll_syste
 
 SUPPORTS = ("free", "clamped-head", "hand-held")
 STRING_PROFILES = ("uniform", "membrane")
+
+ADDED_MASS_MAX = 0.2
+"""The most mass [kg] :meth:`Racket.with_mass` and :meth:`Racket.with_lead_tape` add at a
+point: **an assumption**, generous on purpose (players add a few grams of lead tape; 200 g
+is two thirds of a strung racket again), the TOML's ``lead_tape`` and ``--lead`` limit
+too.  A mass in grams typed as kg (5 for 0.005) is refused with the hint."""
+
+
+def added_mass(name: str, value) -> float:
+    """A point mass added to a racket [kg], in (0, :data:`ADDED_MASS_MAX`]: ValueError
+    naming ``name``, with the range and a likely slip of unit (grams typed as kg), otherwise.
+
+    Parameters
+    ----------
+    name : str
+        The argument's name, as the message quotes it.
+    value : object
+        The mass [kg].
+    """
+    mass = positive(name, value, "kg")
+    return in_range(name, mass, 0.0, ADDED_MASS_MAX, "kg", slips=(GRAMS_AS_KG,))
 
 
 @dataclass(frozen=True)
@@ -45,19 +75,19 @@ class StringBed:
 
     def __post_init__(self):
         object.__setattr__(self, "stiffness", positive("stiffness", self.stiffness, "N/m"))
-        if len(self.extent) != 2:
-            raise ValueError(f"extent must be (start, end) [m from the tip], got {self.extent!r}")
-        start = non_negative("extent start", self.extent[0], "m from the tip")
-        end = positive("extent end", self.extent[1], "m from the tip")
+        extent = finite_array("extent", self.extent, "m from the tip")
+        if extent.shape != (2,):
+            raise ValueError(
+                f"extent must be (start, end) [m from the tip], got {shown(self.extent)}"
+            )
+        start = non_negative("extent start", extent[0], "m from the tip")
+        end = positive("extent end", extent[1], "m from the tip")
         if end <= start:
             raise ValueError(f"extent must have start < end [m from the tip], got {self.extent!r}")
         object.__setattr__(self, "extent", (start, end))
         if self.width is not None:
             object.__setattr__(self, "width", positive("strings width", self.width, "m"))
-        if self.profile not in STRING_PROFILES:
-            raise ValueError(
-                f"string bed profile must be one of {STRING_PROFILES}, got {self.profile!r}"
-            )
+        choice("string bed profile", self.profile, STRING_PROFILES)
         if self.profile == "membrane":
             bed_radius(self.area)  # refuses a bed too small for the membrane model
 
@@ -136,19 +166,15 @@ class Racket:
     hand: Hand = GRIPS["medium"]
 
     def __post_init__(self):
-        if not isinstance(self.beam, Beam):
-            raise ValueError(f"beam must be a Beam, got {self.beam!r}")
-        if not isinstance(self.strings, StringBed):
-            raise ValueError(f"strings must be a StringBed, got {self.strings!r}")
+        instance("beam", self.beam, Beam, "a beam.Beam")
+        instance("strings", self.strings, StringBed, "a racket.StringBed")
+        choice("support", self.support, SUPPORTS)
+        instance("hand", self.hand, Hand, "a racket.Hand")
         if self.strings.extent[1] > self.beam.length:
             raise ValueError(
                 f"strings extent {self.strings.extent} runs past the beam's length "
                 f"{self.beam.length:g} m"
             )
-        if self.support not in SUPPORTS:
-            raise ValueError(f"support must be one of {SUPPORTS}, got {self.support!r}")
-        if not isinstance(self.hand, Hand):
-            raise ValueError(f"hand must be a Hand, got {self.hand!r}")
         if self.hand.grip_length >= self.beam.length - self.strings.extent[1]:
             raise ValueError(
                 f"grip_length must end below the strings, < "
@@ -207,6 +233,8 @@ class Racket:
         [m from the tip] on the long axis; mass, balance, swingweight and modes follow from
         the new beam.
         """
+        mass_kg = added_mass("mass_kg", mass_kg)
+        position_m = in_range("position_m", position_m, 0.0, self.beam.length, "m from the tip")
         return replace(self, beam=self.beam.with_point_masses((position_m, mass_kg)))
 
     def with_lead_tape(self, mass_kg: float, at: str) -> Racket:
@@ -216,8 +244,8 @@ class Racket:
         the mass, balance and swingweight by its position along the racket and to the roll
         inertia by m y**2.
         """
+        mass_kg = added_mass("mass_kg", mass_kg)
         x, y = self.hoop.clock(at)
-        mass_kg = positive("lead tape mass", mass_kg, "kg")
         points = [(float(xi), mass_kg, float(yi)) for xi, yi in zip(x, y, strict=True)]
         return replace(self, beam=self.beam.with_point_masses(*points))
 
@@ -232,6 +260,8 @@ class Racket:
             return self.check_positions(position), None
         x = finite_array("position", position, "m from the tip")
         y = finite_array("offset", offset, "m from the long axis")
+        if y.size == 0:
+            raise ValueError("offset must be a number or one per impact point [m], got none")
         try:
             x, y = np.broadcast_arrays(x, y)
         except ValueError:

@@ -38,7 +38,7 @@ import warnings
 import numpy as np
 
 from ball import Ball, SineLaw, warn_if_squashed
-from common.checks import finite, finite_array, in_range, shown
+from common.checks import finite, finite_array, flag, in_range, instance, shown
 from common.checks import speed as check_speed
 from racket import layout
 from racket.dispatch import IMPACTS_PER_THREAD, LOCKSTEP_MIN, one_blas_thread, pool_size
@@ -158,10 +158,9 @@ def impact(
     >>> round(r.e, 3), round(r.e_A, 3)
     (0.887, 0.442)
     """
-    if not isinstance(racket, Racket):
-        raise ValueError(f"racket must be a Racket, got {racket!r}")
-    if not isinstance(ball, Ball):
-        raise ValueError(f"ball must be a Ball, got {ball!r}")
+    instance("racket", racket, Racket, "a racket.Racket")
+    instance("ball", ball, Ball, "a ball.Ball")
+    histories = flag("histories", histories)
     scalar = np.ndim(position) == 0 and np.ndim(offset) == 0
     x, y = racket.check_points(position, offset)
     speed = check_speed("speed", speed, allow_zero=True)

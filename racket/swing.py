@@ -6,7 +6,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from common.checks import SPEED_RANGE, in_range, positive, shown
+from common.checks import KGCM2_AS_KGM2, SPEED_RANGE, in_range, positive, shown
 from common.checks import speed as check_speed
 
 WRIST_BEYOND_BUTT = 0.05
@@ -179,6 +179,14 @@ J. Sports Sci. 24 (2006) 23-30, abstract; for I0 > 0.03 kg m^2).  I0 is taken as
 swingweight, the moment of inertia about the axis 10 cm from the butt (an assumption: the
 abstract does not name the axis; a hand-held swing's axis is near it)."""
 
+SWINGWEIGHT_RANGE = (1e-4, 2.0)
+"""The swingweights [kg m^2] :func:`equal_effort` accepts: **an assumption**, generous
+around the rackets racket-impact builds (strung tennis rackets 0.028-0.036 kg m^2, 280-360
+kg cm^2, :data:`racket.specs.sheet.SPEC_RANGES`; a TOML frame of 0.2-1.5 m and 0.05-2 kg,
+``studies.config.TOML_RANGES``, 2e-4 to 1.2 kg m^2).  A swingweight in kg cm^2, as spec
+sheets give it, typed as kg m^2 (325 for 0.0325) is refused with the hint, not turned into
+a head speed 12 times too fast."""
+
 
 def equal_effort(swing: Swing, reference_swingweight: float, swingweight: float) -> Swing:
     """The swing a player makes with a racket of ``swingweight`` at the effort that swings a
@@ -191,7 +199,7 @@ def equal_effort(swing: Swing, reference_swingweight: float, swingweight: float)
         The reference racket's swing.
     reference_swingweight, swingweight : float
         Swingweights [kg m^2] (axis 10 cm from the butt) of the reference racket and of
-        the racket swung, each > 0.
+        the racket swung, each in :data:`SWINGWEIGHT_RANGE`.
 
     Examples
     --------
@@ -199,7 +207,17 @@ def equal_effort(swing: Swing, reference_swingweight: float, swingweight: float)
     >>> round(slower.head_speed, 3)
     29.752
     """
-    ratio = positive("reference_swingweight", reference_swingweight, "kg m^2") / positive(
-        "swingweight", swingweight, "kg m^2"
-    )
-    return Swing(swing.head_speed * ratio**EFFORT_EXPONENT, swing.pivot_from_tip)
+    reference, swung = (
+        in_range(name, positive(name, value, "kg m^2"), *SWINGWEIGHT_RANGE, "kg m^2",
+                 slips=(KGCM2_AS_KGM2,))
+        for name, value in (("reference_swingweight", reference_swingweight),
+                            ("swingweight", swingweight))
+    )  # fmt: skip
+    head = swing.head_speed * (reference / swung) ** EFFORT_EXPONENT
+    if not SPEED_RANGE[0] <= head <= SPEED_RANGE[1]:  # named by the swingweights, its cause
+        raise ValueError(
+            f"swingweight {shown(swingweight)} kg m^2 against reference_swingweight "
+            f"{shown(reference_swingweight)} kg m^2 gives an equal-effort head speed of "
+            f"{head:.4g} m/s, outside [{SPEED_RANGE[0]:g}, {SPEED_RANGE[1]:g}] m/s"
+        )
+    return Swing(head, swing.pivot_from_tip)

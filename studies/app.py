@@ -21,22 +21,16 @@ import threading
 from shiny import App, reactive, render, ui
 
 from racket import CATALOG
-from racket.swing import ARM_REACH, WRIST_BEYOND_BUTT
+from racket.swing import ARM_REACH
 from studies.config import BALLS
-from studies.dashboard import (
-    CONTROL_LABELS,
-    HEAD_SPEED_MAX_MPH,
-    MY_SHEET,
-    SHEET_FIELDS,
-    PageInputs,
-    page_results,
-)
+from studies.dashboard import HEAD_SPEED_MAX_MPH, MY_SHEET, PageInputs, page_results
 from studies.page_cards import built_sides, error_cards, headline_cards, spots_table
+from studies.page_guard import ERROR_OUTPUT, PageGuard
+from studies.page_inputs import LABELS, LEAD_CLOCKS, STIFFNESS, page_inputs
 
 DEFAULT_PORT = 8050
 """The page's default port (``mkdocs serve``, the docs, takes 8000)."""
 
-_CLOCK = ["3 and 9", "2 and 10", "12", "6"]
 _WARM = threading.Event()
 _STYLE = """
 .metric td, .metric th { padding: 0.1rem 0.4rem; white-space: nowrap; }
@@ -66,7 +60,7 @@ def _controls():
     """
     start = PageInputs()
     choices = {name: name for name in [*CATALOG, MY_SHEET]}
-    label = SHEET_FIELDS
+    label = LABELS
     sheet = ui.panel_conditional(
         f"input.racket === '{MY_SHEET}' || input.racket_b === '{MY_SHEET}'",
         ui.tags.b("My spec sheet"),
@@ -76,21 +70,17 @@ def _controls():
         ),
         ui.input_numeric(
             "swingweight",
-            label["swingweight_kgcm2"],
+            label["swingweight"],
             start.swingweight_kgcm2,
             min=270,
             max=370,
             step=1,
         ),
-        ui.input_numeric(
-            "head", label["head_size_in2"], start.head_size_in2, min=85, max=120, step=1
-        ),
-        ui.input_radio_buttons(
-            "stiffness", "Frame stiffness given as", {"f1": "frequency f1", "ra": "RA"}
-        ),
+        ui.input_numeric("head", label["head"], start.head_size_in2, min=85, max=120, step=1),
+        ui.input_radio_buttons("stiffness", label["stiffness"], STIFFNESS),
         ui.panel_conditional(
             "input.stiffness === 'f1'",
-            ui.input_numeric("f1", label["f1_hz"], start.f1_hz, min=100, max=200, step=1),
+            ui.input_numeric("f1", label["f1"], start.f1_hz, min=100, max=200, step=1),
         ),
         ui.panel_conditional(
             "input.stiffness === 'ra'",
@@ -99,28 +89,21 @@ def _controls():
             ),
         ),
     )
-    wrist = f"Pivot at the wrist ({100 * WRIST_BEYOND_BUTT:g} cm beyond the butt)"
     farthest = 100 * (CATALOG[start.racket].specs["length_m"] + ARM_REACH)
     return [
-        ui.input_select("racket", "Racket A", choices, selected=start.racket),
-        ui.input_select("racket_b", "Racket B", choices, selected=start.racket_b),
+        ui.input_select("racket", label["racket"], choices, selected=start.racket),
+        ui.input_select("racket_b", label["racket_b"], choices, selected=start.racket_b),
         sheet,
-        ui.input_slider("lead_g", "Lead tape on A, per side [g]", 0, 15, start.lead_g, step=0.5),
-        ui.input_select("lead_at", "Lead at (o'clock)", _CLOCK, selected=start.lead_at),
-        ui.input_slider(
-            "swing", CONTROL_LABELS["swing_mph"], 20, HEAD_SPEED_MAX_MPH, start.swing_mph, step=1
-        ),
-        ui.input_slider(
-            "ball_speed", CONTROL_LABELS["ball_speed_mph"], 10, 80, start.ball_speed_mph, step=0.1
-        ),
-        ui.input_slider("tension", "Tension, both [lb]", 40, 70, start.tension_lb, step=1),
-        ui.input_select("ball", "Ball", list(BALLS), selected=start.ball),
-        ui.input_checkbox("at_wrist", wrist, start.pivot_cm_from_tip is None),
+        ui.input_slider("lead_g", label["lead_g"], 0, 15, start.lead_g, step=0.5),
+        ui.input_select("lead_at", label["lead_at"], list(LEAD_CLOCKS), selected=start.lead_at),
+        ui.input_slider("swing", label["swing"], 20, HEAD_SPEED_MAX_MPH, start.swing_mph, step=1),
+        ui.input_slider("ball_speed", label["ball_speed"], 10, 80, start.ball_speed_mph, step=0.1),
+        ui.input_slider("tension", label["tension"], 40, 70, start.tension_lb, step=1),
+        ui.input_select("ball", label["ball"], list(BALLS), selected=start.ball),
+        ui.input_checkbox("at_wrist", label["at_wrist"], start.pivot_cm_from_tip is None),
         ui.panel_conditional(
             "!input.at_wrist",
-            ui.input_slider(
-                "pivot", CONTROL_LABELS["pivot_cm_from_tip"], 40, round(farthest), 74, step=0.5
-            ),
+            ui.input_slider("pivot", label["pivot"], 40, round(farthest), 74, step=0.5),
         ),
     ]
 
@@ -132,6 +115,7 @@ def _card(plot_id: str, title: str, height: str = "380px"):
 app_ui = ui.page_sidebar(
     ui.sidebar(*_controls(), width=300),
     ui.tags.style(_STYLE),
+    ui.output_ui(ERROR_OUTPUT),  # a message the server turned away (studies.page_guard)
     ui.output_ui("status"),
     ui.output_ui("cards"),
     ui.output_ui("notes"),
@@ -162,30 +146,17 @@ app_ui = ui.page_sidebar(
 )
 
 
-def _inputs(input) -> PageInputs:
-    """The page's controls as :class:`studies.dashboard.PageInputs`."""
-    return PageInputs(
-        racket=input.racket(),
-        racket_b=input.racket_b(),
-        mass_g=input.mass_g() or 300.0,
-        balance_cm=input.balance_cm() or 33.0,
-        swingweight_kgcm2=input.swingweight() or 315.0,
-        head_size_in2=input.head() or 100.0,
-        f1_hz=(input.f1() or 150.0) if input.stiffness() == "f1" else None,
-        ra=(input.ra() or 66.0) if input.stiffness() == "ra" else None,
-        lead_g=input.lead_g(),
-        lead_at=input.lead_at(),
-        ball=input.ball(),
-        tension_lb=input.tension(),
-        ball_speed_mph=input.ball_speed(),
-        swing_mph=input.swing(),
-        pivot_cm_from_tip=None if input.at_wrist() else input.pivot(),
-    )
+def _sent(input) -> dict:
+    """The values the browser sent for the page's controls, by input id (one it did not
+    send left out), as they came: :func:`studies.page_inputs.page_inputs` checks them.
+    """
+    return {name: input[name]() for name in LABELS if input[name].is_set()}
 
 
 def server(input, output, session):
     """The page's reactive outputs (Shiny's server function)."""
 
+    @output(suspend_when_hidden=False)  # shown even if the browser said nothing of it
     @render.ui
     def status():
         if not _WARM.is_set():
@@ -198,12 +169,21 @@ def server(input, output, session):
         return ui.div("Ready.", id="ready", class_="text-muted small")
 
     @reactive.calc
+    def inputs():  # the controls, or the one line refusing them
+        try:
+            return page_inputs(_sent(input))
+        except ValueError as err:
+            return str(err)
+
+    @reactive.calc
     def results():
+        if isinstance(inputs(), str):
+            return inputs()
         if not _WARM.is_set():
             reactive.invalidate_later(1.0)
             return None
         try:
-            return page_results(_inputs(input))
+            return page_results(inputs())
         except ValueError as err:
             return str(err)
 
@@ -211,6 +191,7 @@ def server(input, output, session):
         r = results()
         return None if r is None or isinstance(r, str) else r
 
+    @output(suspend_when_hidden=False)  # an error card even for a message without controls
     @render.ui
     def cards():
         r = results()
@@ -220,7 +201,7 @@ def server(input, output, session):
             return ui.div(r, id="numbers-text", class_="alert alert-danger")
         if not built_sides(r):
             return ui.div(*error_cards(r), id="numbers-text")
-        return headline_cards(r, input.swing())
+        return headline_cards(r, inputs().swing_mph)
 
     @render.ui
     def notes():
@@ -258,7 +239,7 @@ def server(input, output, session):
             return None
         serves = {k: v.serves for k, v in labels(r).items()}
         said = r.conditions["serve"]
-        return plot_serve_speeds(serves, input.swing(), conditions=said).figure
+        return plot_serve_speeds(serves, inputs().swing_mph, conditions=said).figure
 
     @render.plot(alt="ball speed off the swung strings along the racket, A and B")
     def exit_plot():
@@ -268,7 +249,7 @@ def server(input, output, session):
         if r is None:
             return None
         tables = {k: v.along for k, v in labels(r).items()}
-        ylabel = f"ball speed off the strings [mph] (swing {input.swing():.0f} mph)"
+        ylabel = f"ball speed off the strings [mph] (swing {inputs().swing_mph:.0f} mph)"
         return plot_along_racket(
             tables, "exit_speed_swung_mph", ylabel, mph=True, conditions=r.conditions["exit"]
         ).figure
@@ -323,7 +304,7 @@ def server(input, output, session):
         return ui.div() if r is None else spots_table(r)
 
 
-app = App(app_ui, server)
+app = PageGuard(App(app_ui, server))
 
 
 def run(host: str = "127.0.0.1", port: int = DEFAULT_PORT, announce=print) -> None:

@@ -18,6 +18,7 @@ import numpy as np
 
 from ball import BALL_PRESETS, WALL, Ball, MonotoneLaw, collide
 from ball.catalog import BALL_MASS, ITF_DROP_SPEED, ITF_FORCE
+from ball.collision import largest_closing_speed, too_fast_to_store
 from common.checks import shown
 from common.checks import speed as check_speed
 
@@ -111,6 +112,10 @@ def rigid_bounce_table(ball: Ball, speeds=DEFAULT_SPEEDS) -> pd.DataFrame:
     if np.size(speeds) == 0 or np.ndim(speeds) > 1:
         raise ValueError(f"speeds must be one speed or a list of them [m/s], got {shown(speeds)}")
     speeds = [check_speed("speed", v) for v in np.atleast_1d(speeds)]
+    fastest = largest_closing_speed(ball, WALL)
+    for v in speeds:
+        if v > fastest:  # named as given, not as collide's v_a
+            raise too_fast_to_store("speeds", v, fastest)
     rows = []
     for v in speeds:
         c = collide(ball, WALL, v)

@@ -64,9 +64,9 @@ kg is asked about, as ``--tension-lb`` is (:func:`common.checks.loose_tension`).
 
 from __future__ import annotations
 
+import os
 import sys
 from dataclasses import replace
-from pathlib import Path
 
 from ball import (
     BALL_PRESETS,
@@ -78,9 +78,10 @@ from ball import (
     SineLaw,
     StiffeningHysteresis,
 )
+from ball.bodies import BALL_RADIUS_RANGE, RADIUS_SLIPS
 from beam import Beam
 from common import checks as slip  # the slips of unit: slip.CM_AS_M, ...
-from common.checks import in_range, loose_tension, positive, shown
+from common.checks import file_path, in_range, instance, loose_tension, positive, shown
 from racket import (
     CATALOG,
     DEFAULT_RACKET,
@@ -93,8 +94,10 @@ from racket import (
     paper_ball,
     paper_racket,
 )
+from racket.hand import GRIP_LENGTH_RANGE, HAND_MASS_RANGE, HAND_STIFFNESS_RANGE
+from racket.racket import ADDED_MASS_MAX
 from racket.solver import F1_MIN
-from racket.specs.sheet import SPEC_RANGES
+from racket.specs.sheet import SPEC_RANGES, SPEC_SLIPS
 from studies.sweeps import F1_MAX, STRING_STIFFNESS_RANGE
 
 if sys.version_info >= (3, 11):
@@ -120,24 +123,6 @@ BALLS = {
 altitude, pressureless, punctured), the paper's tennis ball, its zero-COR twin (Sec. VIII),
 and the happy and unhappy balls of Secs. IV-VI."""
 
-SPEC_SLIPS = {
-    "length_m": (slip.CM_AS_M, slip.INCH_AS_M),
-    "mass_kg": (slip.GRAMS_AS_KG, slip.OZ_AS_KG),
-    "balance_cm": (slip.INCH_AS_CM, slip.M_AS_CM),
-    "swingweight_kgcm2": (slip.KGM2_AS_KGCM2,),
-    "recoil_weight_kgcm2": (slip.KGM2_AS_KGCM2,),
-    "twistweight_kgcm2": (slip.KGM2_AS_KGCM2,),
-    "head_size_in2": (slip.CM2_AS_IN2,),
-    "head_size_cm2": (slip.IN2_AS_CM2,),
-    "tension_lb": (slip.N_AS_LB,),
-    "tension_n": (slip.LB_AS_N, slip.KG_AS_N),
-    "string_stiffness_n_m": (slip.KN_AS_N,),
-}
-"""The likely slips of unit of the ``[racket.specs]`` keys (their ranges are the spec
-sheets', :data:`racket.specs.sheet.SPEC_RANGES`): a head size in cm^2 typed as in^2, a
-balance in inches typed as cm, a swingweight in kg m^2 typed as kg cm^2, a tension in N
-typed as lb, a mass in oz typed as kg..."""
-
 TOML_RANGES = {
     ("racket", "length"): (0.2, 1.5, "m", (slip.CM_AS_M, slip.INCH_AS_M)),
     ("racket", "mass"): (0.05, 2.0, "kg", (slip.GRAMS_AS_KG, slip.OZ_AS_KG)),
@@ -145,7 +130,11 @@ TOML_RANGES = {
     **{("racket.specs", key): (*SPEC_RANGES[key], slips) for key, slips in SPEC_SLIPS.items()},
     ("racket.strings", "stiffness"): (*STRING_STIFFNESS_RANGE, "N/m", (slip.KN_AS_N,)),
     ("ball", "mass"): (0.001, 1.0, "kg", (slip.GRAMS_AS_KG, slip.OZ_AS_KG)),
-    ("ball", "radius"): (0.005, 0.15, "m", (slip.CM_AS_M,)),
+    ("racket.hand", "stiffness"): (*HAND_STIFFNESS_RANGE, "N/m", (slip.KN_AS_N,)),
+    ("racket.hand", "grip_length"): (*GRIP_LENGTH_RANGE, "m", (slip.CM_AS_M,)),
+    ("racket.hand", "mass"): (*HAND_MASS_RANGE, "kg", (slip.GRAMS_AS_KG,)),
+    ("ball", "radius"): (*BALL_RADIUS_RANGE, "m", RADIUS_SLIPS),
+    ("ball", "x_lim"): (*BALL_RADIUS_RANGE, "m", RADIUS_SLIPS),
     ("ball", "k"): (1e3, 1e7, "N/m", (slip.KN_AS_N,)),
     ("ball", "k0"): (1e3, 1e7, "N/m", (slip.KN_AS_N,)),
 }
@@ -161,9 +150,11 @@ weighs 1 g-1 kg (a table-tennis ball 2.7 g, a basketball about 0.6 kg; the proje
 10.3 and 57 g), is 5-150 mm in radius (table tennis 20 mm, basketball about 120 mm), and a
 linear ball's stiffness is 1e3-1e7 N/m (a tennis ball's 4e4, paper Sec. III; the happy and
 unhappy balls' 2e4, Secs. IV-VI); the spec-sheet keys with a likely slip
-(:data:`SPEC_SLIPS`) in the spec sheets' ranges.  A value typed in g, oz, cm, inches or
-kN/m falls outside and is refused with the hint (``mass = 57`` for a ball would be
-0.057 kg)."""
+(:data:`racket.specs.sheet.SPEC_SLIPS`) in the spec sheets' ranges; a ball's radius and
+its law's ``x_lim`` in :data:`ball.bodies.BALL_RADIUS_RANGE`; the hand's in the ranges of
+:mod:`racket.hand` (its mass omitted: the grip held still).  A value typed in g, oz, mm,
+cm, inches or kN/m falls outside and is refused with the hint (``mass = 57`` for a ball
+would be 0.057 kg)."""
 
 LAWS = {
     "linear-spring": (LinearSpring, {"k"}),
@@ -249,14 +240,17 @@ def _preset(name: str, presets: dict, kind: str):
     return presets[name]()
 
 
-def read_toml(path: str | Path) -> dict:
+def read_toml(path: str | os.PathLike) -> dict:
     """The TOML file as a dict; ValueError naming the file if it cannot be read.
 
     Parameters
     ----------
-    path : str or Path
+    path : str or os.PathLike
         The TOML file.
     """
+    path = file_path("path", path)
+    if "\0" in str(path):  # open() would say only "embedded null byte"
+        raise ValueError(f"cannot read {str(path)!r}: a file name cannot hold a NUL byte")
     try:
         with open(path, "rb") as f:
             return tomllib.load(f)
@@ -356,6 +350,7 @@ def racket_from_table(table: dict) -> Racket:
     )
     hand_table = table.get("hand", {})
     _check_keys(hand_table, _HAND_KEYS, "racket.hand")
+    _check_ranges(hand_table, "racket.hand")
     if "grip" in hand_table and len(hand_table) > 1:
         raise ValueError("[racket.hand] takes a grip preset or its own values, not both")
     grip = hand_table.get("grip")
@@ -378,7 +373,7 @@ def _with_lead_tape(racket: Racket, tape) -> Racket:
             "each lead_tape entry needs mass_g and one of from_tip_cm or at (a clock "
             "position such as '12' or '3 and 9')"
         )
-    mass_g = in_range("lead_tape mass_g", tape["mass_g"], 0.0, 200.0, "g")
+    mass_g = in_range("lead_tape mass_g", tape["mass_g"], 0.0, 1e3 * ADDED_MASS_MAX, "g")
     if mass_g == 0.0:
         raise ValueError("lead_tape mass_g must be > 0 g, got 0")
     if "at" in tape:
@@ -409,7 +404,7 @@ def ball_from_table(table: dict) -> Ball:
         raise ValueError(f"unknown law {shown(table['law'])}; laws: {', '.join(LAWS)}")
     cls, params = LAWS[table["law"]]
     linear = cls in (LinearSpring, LinearHysteresis, StiffeningHysteresis)  # k in N/m
-    _check_ranges(table, "ball", {"mass", "radius", "k0"} | ({"k"} if linear else set()))
+    _check_ranges(table, "ball", {"mass", "radius", "k0", "x_lim"} | ({"k"} if linear else set()))
     given = set(table) - {"mass", "law", "radius"}
     if cls is PowerLawHysteresis and given == {"k", "a", "e"}:
         law = PowerLawHysteresis.with_cor(table["k"], table["a"], table["e"])
@@ -425,57 +420,71 @@ def ball_from_table(table: dict) -> Ball:
     return Ball(table["mass"], law, table.get("radius", TENNIS_BALL_RADIUS))
 
 
-def _load(spec: str, presets: dict, kind: str, from_table):
-    """A preset by name, or the ``[kind]`` table of a TOML file built by ``from_table``."""
-    if spec in presets:
-        return presets[spec]()
+def _preset_or_file(spec, presets: dict, kind: str) -> tuple[str | None, str | None]:
+    """(name, None) for a preset, (None, path) for a file: a Path, or a str ending in .toml."""
+    if isinstance(spec, os.PathLike):
+        return None, file_path("spec", spec)
+    what = f"a {kind} preset's name or a .toml file's path (str or os.PathLike)"
+    if instance("spec", spec, str, what) in presets:
+        return spec, None
     if not spec.endswith(".toml"):
         raise ValueError(
             f"unknown {kind} preset {spec!r}; presets: {', '.join(presets)} (or a .toml file)"
         )
+    return None, spec
+
+
+def _load(spec, presets: dict, kind: str, from_table):
+    """A preset by name, or the ``[kind]`` table of a TOML file built by ``from_table``."""
+    name, spec = _preset_or_file(spec, presets, kind)
+    if name is not None:
+        return presets[name]()
     data = read_toml(spec)
     if kind not in data:
         raise ValueError(f"{spec} has no [{kind}] table")
     try:
         return from_table(data[kind])
+    except ValueError:  # (a wrong type said as such is one too)
+        raise
     except TypeError as err:  # a value of the wrong type deep in a constructor
         raise ValueError(f"{spec}: a value in [{kind}] has the wrong type ({err})") from None
 
 
-def load_racket(spec: str) -> Racket:
+def load_racket(spec: str | os.PathLike) -> Racket:
     """A racket from a preset name or a TOML file with a ``[racket]`` table.
 
     Parameters
     ----------
-    spec : str
-        A key of :data:`RACKETS`, or the path of a ``.toml`` file.
+    spec : str or os.PathLike
+        A key of :data:`RACKETS`, or a ``.toml`` file (a str, or a ``pathlib.Path``).
     """
     return _load(spec, RACKETS, "racket", racket_from_table)
 
 
-def load_ball(spec: str) -> Ball:
+def load_ball(spec: str | os.PathLike) -> Ball:
     """A ball from a preset name or a TOML file with a ``[ball]`` table.
 
     Parameters
     ----------
-    spec : str
-        A key of :data:`BALLS`, or the path of a ``.toml`` file.
+    spec : str or os.PathLike
+        A key of :data:`BALLS`, or a ``.toml`` file (a str, or a ``pathlib.Path``).
     """
     return _load(spec, BALLS, "ball", ball_from_table)
 
 
-def racket_specs(spec: str) -> tuple[dict | None, dict | None]:
+def racket_specs(spec: str | os.PathLike) -> tuple[dict | None, dict | None]:
     """The spec sheet a racket preset or TOML file was built from, and the sources of its
     numbers (catalogue presets only); (None, None) for a racket not built from one.
 
     Parameters
     ----------
-    spec : str
-        A key of :data:`RACKETS`, or the path of a ``.toml`` file.
+    spec : str or os.PathLike
+        A key of :data:`RACKETS`, or a ``.toml`` file (a str, or a ``pathlib.Path``).
     """
-    if spec in CATALOG:
-        return dict(CATALOG[spec].specs), dict(CATALOG[spec].sources)
-    if spec in RACKETS or not spec.endswith(".toml"):
+    name, spec = _preset_or_file(spec, RACKETS, "racket")
+    if name in CATALOG:
+        return dict(CATALOG[name].specs), dict(CATALOG[name].sources)
+    if name is not None:
         return None, None
     table = read_toml(spec).get("racket", {})
     if "specs" in table:

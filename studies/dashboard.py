@@ -22,7 +22,7 @@ import numpy as np
 import pandas as pd
 
 from ball import DEFAULT_BALL
-from common.checks import SPEED_RANGE, in_range, non_negative
+from common.checks import SPEED_RANGE, in_range
 from common.units import LB, MPH
 from racket import CATALOG, DEFAULT_RACKET, Swing, from_specs, impact
 from racket.feel import hand_feel
@@ -53,6 +53,11 @@ is below the fastest head speed assumed for any stroke (:data:`common.checks.FAS
 115 mph; a professional's 120 mph serve is hit by the racket's tip at nearly 120 mph, the
 impact point about 22 % slower: popularmechanics.com/adventure/sports/a2072/4221210)."""
 
+LEAD_MAX_G = 200.0
+"""The most lead tape per side the page takes [g]: the command line's ``--lead`` and the
+TOML's ``lead_tape`` most (:data:`studies.cli.racket_options.LEAD_GRAMS`; an assumption,
+generous on purpose), not imported from the command line's layer."""
+
 HEAD_SPEEDS_MPH = np.arange(20.0, HEAD_SPEED_MAX_MPH + 1.0, 10.0)
 """Head speeds of the serve-speed curve [mph]: a slow feed to :data:`HEAD_SPEED_MAX_MPH`."""
 
@@ -78,8 +83,11 @@ CONTROL_LABELS = {
     "swing_mph": "Racket-head speed [mph]",
     "ball_speed_mph": "Incoming ball speed [mph]",
     "pivot_cm_from_tip": "Swing pivot [cm from the tip]",
+    "tension_lb": "Tension, both [lb]",
+    "lead_g": "Lead tape on A, per side [g]",
 }
-"""The speed and pivot controls as the page labels them (its sliders and its messages)."""
+"""The speed, pivot, tension and lead controls as the page labels them (its sliders and its
+messages)."""
 
 _SHEET = tuple(SHEET_FIELDS)
 _FIT_NAMES = {  # how racket.specs names the sheet's fields in its messages
@@ -279,7 +287,7 @@ def said_on_page(message: str) -> str:
 
 def _with_tape(racket, inputs: PageInputs):
     """``racket`` with the controls' lead tape (if any)."""
-    lead_g = non_negative("lead_g", inputs.lead_g, "g")
+    lead_g = in_range("lead_g", inputs.lead_g, 0.0, LEAD_MAX_G, "g")
     return racket.with_lead_tape(lead_g / 1e3, inputs.lead_at) if lead_g > 0 else racket
 
 
@@ -337,8 +345,8 @@ def page_results(inputs: PageInputs, points: int = 61) -> PageResults:
         raise ValueError(f"ball must be one of {list(BALLS)}, got {inputs.ball!r}")
     low, high = (v / MPH for v in SPEED_RANGE)
     in_range(CONTROL_LABELS["ball_speed_mph"], inputs.ball_speed_mph, low, high, "mph")
-    in_range("tension_lb", inputs.tension_lb, *SPEC_RANGES["tension_lb"])
-    non_negative("lead_g", inputs.lead_g, "g")
+    in_range(CONTROL_LABELS["tension_lb"], inputs.tension_lb, *SPEC_RANGES["tension_lb"])
+    in_range(CONTROL_LABELS["lead_g"], inputs.lead_g, 0.0, LEAD_MAX_G, "g")
     sides, errors = {}, {}
     for side, name, lead_g in (("A", inputs.racket, inputs.lead_g), ("B", inputs.racket_b, 0)):
         try:

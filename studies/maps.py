@@ -433,7 +433,8 @@ def compare_summary(rackets, table, ball: Ball, speed: float):
     roll inertia is modelled, the off-axis power (e_A at the centre's distance from the
     tip, at 3 o'clock with the ball's edge on the frame) and the sweet area of the
     :func:`face_map` of the racket at rest hit at ``speed`` (or :data:`BALL_SPEED` when
-    ``speed`` is 0, a serve), NaN otherwise.
+    ``speed`` is 0, a serve); for the others e_A at the string centre (one impact) and NaN,
+    each NaN said in ``summary.attrs["notes"]`` (``compare`` prints them under its table).
 
     Parameters
     ----------
@@ -446,7 +447,7 @@ def compare_summary(rackets, table, ball: Ball, speed: float):
     """
     import pandas as pd
 
-    rows = []
+    rows, notes = [], []
     swung = bool(np.any(table["swing_speed_m_s"].to_numpy() != 0.0))
     for label, group in table.groupby("racket", sort=False):
         racket = rackets[label]
@@ -483,8 +484,15 @@ def compare_summary(rackets, table, ball: Ball, speed: float):
             face = face_map(racket, ball, speed or BALL_SPEED)
             row["e_A_centre"], row["e_A_3_oclock"] = face.e_A_centre, face.e_A_side
             row["sweet_area_cm2"] = face.sweet_area_cm2
+        else:  # on the axis all the same; off it the frame has no width to roll
+            row["e_A_centre"] = impact(racket, ball, racket.strings.center, speed or BALL_SPEED).e_A
+            notes.append(f"{label}: e_A at 3 o'clock and sweet area '-': no roll inertia modelled")
+        if np.isnan(cop):  # clamped: the racket does not move; else none on the strings
+            notes.append(f"{label}: centre of percussion '-' ({racket.support}): none")
         if not swung:  # no swing, no exit speed: the ball's rebound off the racket at rest
             del row["head_speed_mph"]
             row = {k.replace("largest_exit", "largest_rebound_at_rest"): v for k, v in row.items()}
         rows.append(row)
-    return pd.DataFrame(rows)
+    summary = pd.DataFrame(rows)
+    summary.attrs["notes"] = notes
+    return summary

@@ -70,12 +70,24 @@ def _metric(card_id: str, title: str, note: str, columns, sides, digits, si=None
 
 
 def built_sides(r) -> dict:
-    """The rackets of results ``r`` that were built, by side."""
+    """The rackets of results ``r`` that were built, by side.
+
+    Parameters
+    ----------
+    r : PageResults
+        The page's results (:func:`studies.dashboard.page_results`).
+    """
     return {side: one for side, one in zip(SIDES, (r.a, r.b), strict=True) if one is not None}
 
 
 def error_cards(r):
-    """One line per racket that could not be built, in its place."""
+    """One line per racket of results ``r`` that could not be built, in its place.
+
+    Parameters
+    ----------
+    r : PageResults
+        The page's results (:func:`studies.dashboard.page_results`).
+    """
     return [
         ui.div(line, id=f"error_{side.lower()}", class_="alert alert-danger py-2 mb-2")
         for side, line in r.errors.items()
@@ -83,7 +95,15 @@ def error_cards(r):
 
 
 def headline_cards(r, swing_mph: float):
-    """The headline cards and the rackets' own numbers for results ``r``."""
+    """The headline cards and the rackets' own numbers for results ``r``.
+
+    Parameters
+    ----------
+    r : PageResults
+        The page's results (:func:`studies.dashboard.page_results`).
+    swing_mph : float
+        The page's racket-head speed [mph], as the serve card says it.
+    """
     built = built_sides(r)
     said = r.conditions
 
@@ -168,6 +188,11 @@ def headline_cards(r, swing_mph: float):
 def spots_table(r):
     """The "Where to hit" table of results ``r``: a row per spot, its name, then where it
     is on each racket built [cm from the tip]; every header over its column, aligned as it.
+
+    Parameters
+    ----------
+    r : PageResults
+        The page's results (:func:`studies.dashboard.page_results`).
     """
     built = built_sides(r)
     spots = {side: one.spots.set_index("spot")["from_tip_cm"] for side, one in built.items()}

@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import contextlib
 import math
+import numbers
 import os
 import re
 import secrets
@@ -35,6 +36,8 @@ from concurrent.futures import Executor
 from typing import NamedTuple
 
 import numpy as np
+
+from common.checks import ArgumentTypeError, flag, shown
 
 TASK_IMPACTS = 4096
 """Most impacts in one task: about 65 ms of a worker's time at 16 us per impact (the
@@ -169,6 +172,29 @@ def _chunk(total: int) -> int:
     return int(np.clip(math.ceil(total / MIN_TASKS), MIN_TASK_IMPACTS, TASK_IMPACTS))
 
 
+def executor_argument(executor):
+    """``executor``: None (this process), a :class:`concurrent.futures.Executor` or a Dask
+    ``Client`` (anything whose ``submit`` returns futures); TypeError (a ValueError too)
+    otherwise.
+
+    Parameters
+    ----------
+    executor : object
+        The value given.
+    """
+    if executor is None or isinstance(executor, Executor):
+        return executor
+    if not isinstance(executor, str | numbers.Number) and callable(
+        getattr(executor, "submit", None)
+    ):
+        return executor
+    raise ArgumentTypeError(
+        "executor must be None or a concurrent.futures.Executor (a ProcessPoolExecutor, a Dask "
+        "client's get_executor(); studies.scale.executor_for makes either from a number of "
+        f"workers or a scheduler's address), got {shown(executor)}"
+    )
+
+
 def run_calls(
     calls: Sequence[Impacts],
     read: Callable,
@@ -198,6 +224,9 @@ def run_calls(
         ``read`` of each call, its arrays over all its points, bit-identical to a run in this
         process.  The tasks' warnings are raised here.
     """
+    executor = executor_argument(executor)
+    if progress is not None:
+        flag("progress", progress)
     key = secrets.token_hex(8)
     if executor is None:
         tasks = [[call] for call in calls]

@@ -7,6 +7,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ball import CollisionHistory
+from common.checks import instance
 from common.units import MPH
 from racket import Impact
 
@@ -24,6 +25,7 @@ def impact_table(result: Impact) -> pd.DataFrame:
     """
     import pandas as pd
 
+    instance("result", result, Impact, "a racket.Impact (the result of racket.impact)")
     return pd.DataFrame(impact_columns(result))
 
 
@@ -94,6 +96,7 @@ def history_table(history: CollisionHistory) -> pd.DataFrame:
     """
     import pandas as pd
 
+    instance("history", history, CollisionHistory, "a ball.CollisionHistory (collide(...).history)")
     return pd.DataFrame(
         {
             "t_s": history.t,

@@ -78,7 +78,8 @@ def test_serve_one_swing_tip_ward_is_faster_in_the_unit_typed(tmp_path, capsys):
     )  # fmt: skip
     assert status == 0 and "at 100 mph head speed" in out and "zero-COR" not in out
     assert "17.32" in out and "12.32" in out  # cm from the tip, as typed
-    assert "(simulated)" in out and "[mph]" in out and "[m/s]" not in out and "butt" in out
+    assert "(simulated)" in out and "[mph]" in out and "[m/s]" not in out and "the tip" in out
+    assert "about the wrist (5 cm beyond the butt)" in out  # the pivot, said
     centre, tipward = json.loads((tmp_path / "serve.json").read_text())
     assert tipward["point_speed_mph"] > centre["point_speed_mph"]
     assert tipward["serve_simulated_mph"] > centre["serve_simulated_mph"]

@@ -179,9 +179,7 @@ def test_rerun_puts_back_only_whole_paths(tmp_path, capsys, monkeypatch):
     assert _restored("--b=/tmp/x/0/bb.toml", copies) == "--b=/tmp/x/0/bb.toml"
 
 
-def test_rerun_records_the_recorded_inputs_of_racket_and_ball_files(
-    tmp_path, capsys, monkeypatch
-):
+def test_rerun_records_the_recorded_inputs_of_racket_and_ball_files(tmp_path, capsys, monkeypatch):
     monkeypatch.chdir(tmp_path)
     sheet = tmp_path / "r.toml"
     text = (

@@ -103,11 +103,14 @@ def test_ra_in_a_toml_file_and_the_specs_command(tmp_path, capsys):
     lines = [f"{key} = {value}" for key, value in (SHEET | {"ra": 70}).items()]
     path.write_text("[racket.specs]\n" + "\n".join(lines) + "\n")
     assert _f1(load_racket(str(path))) == pytest.approx(f1_from_ra(70), rel=1e-7)
-    assert main(["specs", str(path), "--count", "1"]) == 0
+    assert main(["specs", "--racket", str(path), "--count", "1"]) == 0
     out = capsys.readouterr().out
+    lines = out.splitlines()
+    said = 1 + next(i for i, line in enumerate(lines[1:]) if not line.startswith("  "))
+    assert lines[0].startswith("racket ")  # the conditions (long path: folded), then the note
     note = f"f1 from RA 70: {f1_from_ra(70):.0f} +/- {RA_SCATTER:.0f} Hz (TWU regression, "
-    assert note + f"{RA_ROWS} rackets)" in out.splitlines()[0]
-    row = next(line for line in out.splitlines()[1:] if "f1 from RA 70" in line)  # the fit table
+    assert note + f"{RA_ROWS} rackets)" in lines[said]
+    row = next(line for line in lines[said + 1 :] if "f1 from RA 70" in line)  # the fit table
     assert f"TWU regression of {RA_ROWS} rackets" in row
 
 

@@ -114,6 +114,26 @@ def test_centre_of_percussion_is_simulated_and_is_the_formula_for_a_free_racket(
     )
 
 
+def test_the_hand_given_from_the_tip_on_the_command_line_moves_the_centre_of_percussion(
+    tmp_path, capsys
+):
+    """``sweetspots --hand-cm-from-tip CM``: the centre of percussion for that hand (the
+    formula, on the default free racket); the hand in m typed as cm refused with the hint."""
+    import json
+
+    from racket import default_racket
+    from studies.landmarks import rigid_centre_of_percussion
+
+    out = tmp_path / "spots.json"
+    assert main(["sweetspots", "--hand-cm-from-tip", "61.58", "--out", str(out)]) == 0
+    assert "centre of percussion (hand at 61.6 cm)" in capsys.readouterr().out
+    spots = {row["spot"]: row for row in json.loads(out.read_text())}
+    formula = rigid_centre_of_percussion(default_racket(), 0.6158)
+    assert spots["centre of percussion"]["from_tip_cm"] / 100 == pytest.approx(formula, abs=1e-10)
+    assert main(["sweetspots", "--hand-cm-from-tip", "0.6158"]) == 2
+    assert "(m typed as cm? 0.6158 m would be 61.58 cm)" in capsys.readouterr().err
+
+
 @pytest.mark.parametrize(
     "pivot, match",
     [

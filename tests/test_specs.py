@@ -150,17 +150,19 @@ def test_membrane_stiffness_rises_with_tension(tension, factor, head_in2):
     assert string_bed_stiffness(tension * factor, head_in2 * IN2) > low > 0
 
 
-@pytest.mark.parametrize("where_cm_from_butt", [68.58, 52.0, 34.0, 10.0, 0.0])
-def test_lead_tape_follows_the_parallel_axis_rule(where_cm_from_butt):
+@pytest.mark.parametrize("where_cm_from_tip", [0.0, 16.58, 34.58, 58.58, 68.58])
+def test_lead_tape_follows_the_parallel_axis_rule(where_cm_from_tip):
     racket = from_specs(tension_lb=55, **SHEETS["Pure Drive-like"])
     beam, m = racket.beam, 0.004
-    x = beam.length - where_cm_from_butt / 100
+    x = where_cm_from_tip / 100
     taped = racket.with_mass(m, x).beam
-    d = where_cm_from_butt / 100 - 0.10  # distance from the swingweight axis
+    d = beam.length - 0.10 - x  # distance from the swingweight axis (10 cm from the butt)
     assert taped.swingweight - beam.swingweight == pytest.approx(m * d**2, rel=1e-10, abs=1e-15)
-    y = where_cm_from_butt / 100 - beam.balance  # from the old balance point, towards the tip
-    shift = taped.balance - beam.balance
+    y = beam.center_of_mass - x  # from the old centre of mass, towards the tip
+    shift = beam.center_of_mass - taped.center_of_mass  # towards the tip
     assert shift == pytest.approx(y * m / (beam.mass + m), rel=1e-10, abs=1e-15)
+    # the balance (spec sheets give it from the butt) moves as far
+    assert taped.balance - beam.balance == pytest.approx(shift, rel=1e-10, abs=1e-15)
     assert taped.mass == pytest.approx(beam.mass + m)
     # Recoil weight: the new I about the new centre of mass.
     recoil = beam.inertia_cm + beam.mass * shift**2 + m * (y - shift) ** 2

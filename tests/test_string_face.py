@@ -318,9 +318,9 @@ def test_face_map_plot_and_cli(tmp_path, capsys, pure_drive):
     assert (tmp_path / "m.png").stat().st_size > 10_000
     assert main(["map", "--racket", "paper"]) == 2
     assert "roll inertia is modelled" in capsys.readouterr().err
-    assert main(["sweep", "--racket", "pure-drive-2021", "--offset", "0.3", "--points", "3"]) == 2
+    assert main(["sweep", "--racket", "pure-drive-2021", "--offset", "30", "--points", "3"]) == 2
     err = capsys.readouterr().err  # refused before the sweep, in the unit typed
-    assert "--offset must be in [" in err and "m from the long axis, got 0.3" in err
+    assert "--offset must be in [" in err and "] cm from the long axis, got 30" in err
 
 
 def test_toml_gives_the_torsion_the_bed_profile_and_a_profile_roll_inertia(tmp_path):

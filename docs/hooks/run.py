@@ -25,16 +25,21 @@ marker the build fills: ``{{ output: TEXT }}`` becomes the number printed right 
 ``TEXT`` in the page's outputs (spaces and line breaks count as one space), so "e peaks at
 {{ output: largest e = }}" reads "e peaks at 0.8872"; ``{{ code: module.NAME }}`` (or
 ``module.NAME:FORMAT``, ``:.3g``) becomes the value of a constant of the code: a default, or a
-published number that the code holds beside its source; ``{{ given: 148 }}``, the number as
-written, says that a number equal to an output's by chance is not that output (a source's, a
-dataset's).  A marker that finds nothing fails the build.
+published number that the code holds beside its source; ``{{ given: 148 }}`` (or a range,
+``{{ given: 135-147 }}``), the number as written, says that the number is no output of this
+project: a source's (named beside it), a dataset's, a measurement's.  A marker that finds
+nothing fails the build.
 
-On the pages :data:`CHECKED`, a number of the prose (not in code, a marker, a link's address
-or an HTML comment) that also appears in one of the page's outputs and has at least three
-significant digits (a year, 1900-2099, aside; :func:`counted`) fails the build
-(:func:`copied_numbers`): it is a hand-typed copy of an output, stale as soon as the output
-changes.  A number the page's blocks typed (a command's flag, a Python argument, a value of an
-example file they read) is an input, not a copy.
+On the pages :data:`CHECKED` the rule is default-deny (:func:`loose_numbers`): every number of
+the prose (not in code, a marker, a link's address, a DOI or an HTML comment) with at least
+three significant digits (:func:`counted`: a year, 1900-2099, aside; a section, equation,
+figure or table number is no prose, :func:`prose`) is a marker, or a number the page's blocks
+typed (a command's flag, a Python argument, a value of an example file they read: an input),
+or it fails the build: a hand-typed result goes stale as soon as the code changes, whether or not a block prints it.
+Shorter numbers (0.27, 10, 120) are too common in ranges, exponents and round assumptions to
+tell a result from them; a page writes its results with markers all the same.  The README,
+which GitHub shows with no build to fill a marker, is held to the older rule
+(:func:`copied_numbers`): its prose copies no number its console blocks print.
 
 The blocks run in ``on_files`` (the figures must be files of the site before the pages are
 read, so that the strict build checks their links); ``on_page_markdown`` puts the results and
@@ -71,17 +76,20 @@ _CACHE: dict[tuple[str, str], Run] = {}  # for mkdocs serve
 _MANIFEST: dict[str, str] = {}  # page -> fingerprint, of the pages this build ran
 MANIFEST = "run-manifest.json"
 CODE = ("ball", "beam", "common", "racket", "studies", "examples")  # what the blocks run
-CHECKED = ("guide/", "index.md", "python.md", "cli.md")  # pages whose prose may copy no output
+CHECKED = ("guide/", "index.md", "python.md", "cli.md")  # pages whose prose types no result
 SITE_VARIABLE = "RACKET_IMPACT_SITE"  # the built site the tests read (built_site)
 MARKER = re.compile(r"\{\{\s*(?P<kind>[a-z]+):\s*(?P<what>.*?)\s*\}\}")
 NUMBER = re.compile(r"(?<![\w.])\d+(?:,\d{3})*(?:\.\d+)?(?:[eE][-+]?\d+)?(?![\w]|\.\d)")
+GIVEN = re.compile(f"-?{NUMBER.pattern}(?:-{NUMBER.pattern})?")  # {{ given: 135-147 }}
 FENCE = re.compile(r"^[ \t]*(?P<fence>`{3,}|~{3,}).*?^[ \t]*(?P=fence)`*~*[ \t]*$", re.M | re.S)
 NOT_PROSE = re.compile(
     r"<!--.*?-->"  # an HTML comment
     r"|(?P<ticks>`+).+?(?P=ticks)"  # inline code
     r"|\]\([^)]*\)"  # a link's address
     r"|<[^>\n]*>"  # an HTML tag
-    r"|\b[a-z]+://\S+",  # an address in the text
+    r"|\b[a-z]+://\S+"  # an address in the text
+    r"|\bdoi:\S+"  # a DOI
+    r"|\b(?:Eqs?|Secs?|Figs?|Sections?|Tables?|Appendix)\.?\s*\d+(?:[-,]\s*\d+)*",  # a reference
     re.S,
 )
 
@@ -278,9 +286,9 @@ def _quoted(match: re.Match, printed: str) -> str:
     kind, what = match["kind"], match["what"]
     if kind == "code":
         return _value(what)
-    if kind == "given":  # a number that is no output (a source's), equal to one by chance
-        if not NUMBER.fullmatch(what):
-            raise RunError(f"{match[0]!r}: a given number is a number")
+    if kind == "given":  # a number that is no output of this project (a source's)
+        if not GIVEN.fullmatch(what):
+            raise RunError(f"{match[0]!r}: a given number is a number, or a range N-M")
         return what
     if kind != "output":
         raise RunError(f"unknown marker {match[0]!r}: output, code or given")
@@ -299,7 +307,8 @@ def quote(text: str, outputs: list[str]) -> str:
 
 def prose(text: str) -> str:
     """The prose of a page: its text but the fenced blocks, the markers, inline code, links'
-    addresses, HTML tags and comments, and addresses.
+    addresses, HTML tags and comments, addresses, DOIs and the numbers of references to a
+    section, an equation, a figure or a table (Sec. 4, Eqs. 20-22).
     """
     return NOT_PROSE.sub(" ", MARKER.sub(" ", FENCE.sub(" ", text)))
 
@@ -318,31 +327,57 @@ def counted(number: str) -> bool:
     return len(digits) >= 3
 
 
+def _around(words: str, match: re.Match) -> str:
+    """A number of the prose with the prose around it, for an error message."""
+    return f"{match[0]}: ... {' '.join(words[max(0, match.start() - 50) : match.end() + 20].split())} ..."
+
+
+def _numbers(text: str) -> set[str]:
+    """The numbers of ``text``, without their thousands' commas."""
+    return {n.replace(",", "") for n in NUMBER.findall(text)}
+
+
 def copied_numbers(text: str, outputs: list[str], inputs: str = "") -> list[str]:
     """The numbers of ``text``'s prose that are copies of ``outputs`` (see :func:`counted`),
     each with the prose around it; the numbers of ``inputs`` (what the blocks typed) are not.
+    The README's rule: GitHub shows it with no build to fill a marker.
     """
-    printed = {n.replace(",", "") for n in NUMBER.findall("\n".join(outputs))}
-    printed -= {n.replace(",", "") for n in NUMBER.findall(inputs)}
+    printed = _numbers("\n".join(outputs)) - _numbers(inputs)
     words = prose(text)
     return [
-        f"{m[0]}: ... {' '.join(words[max(0, m.start() - 50) : m.end() + 20].split())} ..."
+        _around(words, m)
         for m in NUMBER.finditer(words)
         if counted(m[0]) and m[0].replace(",", "") in printed
     ]
 
 
+def loose_numbers(text: str, inputs: str = "", outputs: tuple[str, ...] = ()) -> list[str]:
+    """The numbers of ``text``'s prose (see :func:`counted`) that no marker put there and the
+    page did not type (``inputs``), each with the prose around it, and "(printed)" after one
+    that is also a number of ``outputs``: a hand-typed copy.  The checked pages' rule.
+    """
+    typed, printed = _numbers(inputs), _numbers("\n".join(outputs))
+    words = prose(text)
+    return [
+        _around(words, m) + (" (printed)" if m[0].replace(",", "") in printed else "")
+        for m in NUMBER.finditer(words)
+        if counted(m[0]) and m[0].replace(",", "") not in typed
+    ]
+
+
 def check(text: str, page: str, run: Run) -> None:
     """Fail (:class:`RunError`) on a marker that finds nothing and, on the pages
-    :data:`CHECKED`, on a number of the prose copied from an output.
+    :data:`CHECKED`, on a number of the prose that no marker put there and no block typed.
     """
     quote(text, run.outputs)
     if page.startswith(CHECKED):
-        copies = copied_numbers(text, run.outputs, run.inputs)
-        if copies:
+        loose = loose_numbers(text, run.inputs, tuple(run.outputs))
+        if loose:
             raise RunError(
-                f"{page}: the prose copies numbers of the page's output (quote them with "
-                "{{ output: TEXT }}, or leave them out):\n  " + "\n  ".join(copies)
+                f"{page}: the prose types numbers by hand (quote an output with "
+                "{{ output: TEXT }}, a constant of the code with {{ code: NAME }}, mark a "
+                "source's number {{ given: N }} with the source beside it, or leave the number "
+                "out):\n  " + "\n  ".join(loose)
             )
 
 

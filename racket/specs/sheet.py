@@ -12,7 +12,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from beam import SWINGWEIGHT_AXIS
-from common.checks import CM_AS_M, GRAMS_AS_KG, finite, in_range, positive, shown
+from common import checks as slip  # the slips of unit: slip.CM_AS_M, ...
+from common.checks import finite, in_range, positive, shown
 from common.units import IN2, LB, POINT
 from racket.specs.strings import TENSION_RANGE_LB, string_bed_stiffness
 
@@ -101,7 +102,7 @@ SPEC_RANGES = {
     "balance_pts_hl": (-24.0, 24.0, "pts head-light"),
     "swingweight_kgcm2": (100.0, 500.0, "kg cm^2"),
     "recoil_weight_kgcm2": (50.0, 300.0, "kg cm^2"),
-    "twistweight_kgcm2": (5.0, 40.0, "kg cm^2"),
+    "twistweight_kgcm2": (8.0, 30.0, "kg cm^2"),
     "f1_hz": (60.0, 400.0, "Hz"),
     "torsion_hz": (150.0, 1500.0, "Hz"),
     "ra": (40.0, 90.0, ""),
@@ -123,19 +124,38 @@ rackets start at 19 in (48 cm), but the mass model's 19 cm handle, 5 cm of throa
 (retailers' spec sheets, e.g. tests/data/racket_specs_sample.csv); frames ring at
 100-200 Hz (Taraborrelli et al., Appl. Sci. 2019); strings are strung at 40-65 lb; RA
 ratings are 44-76 over the 622 rackets of the TWU table (:mod:`racket.specs.ra`; 55-76 on
-the sample), widened to 40-90 (the regression is extrapolated outside 44-76).  The
-rest (recoil weight 50-300 and twistweight 5-40 kg cm^2, f1 60-400 Hz, torsion
-150-1500 Hz, a flex test of
-0.1-100 mm under 1-2000 N, string-bed 5e3-2e5 N/m) is this project's assumption."""
+the sample), widened to 40-90 (the regression is extrapolated outside 44-76); their
+twistweights are 9.6-23.2 kg cm^2 (``tests/data/twu_racquets_half.csv``), widened to
+8-30.  The rest (recoil weight 50-300 kg cm^2, f1 60-400 Hz, torsion 150-1500 Hz, a flex
+test of 0.1-100 mm under 1-2000 N, string-bed 5e3-2e5 N/m) is this project's
+assumption."""
+
+SPEC_SLIPS = {
+    "length_m": (slip.CM_AS_M, slip.INCH_AS_M),
+    "mass_kg": (slip.GRAMS_AS_KG, slip.OZ_AS_KG),
+    "balance_cm": (slip.INCH_AS_CM, slip.M_AS_CM),
+    "swingweight_kgcm2": (slip.KGM2_AS_KGCM2,),
+    "recoil_weight_kgcm2": (slip.KGM2_AS_KGCM2,),
+    "twistweight_kgcm2": (slip.KGM2_AS_KGCM2,),
+    "head_size_in2": (slip.CM2_AS_IN2,),
+    "head_size_cm2": (slip.IN2_AS_CM2,),
+    "tension_lb": (slip.N_AS_LB,),
+    "tension_n": (slip.LB_AS_N, slip.KG_AS_N),
+    "string_stiffness_n_m": (slip.KN_AS_N,),
+}
+"""The likely slips of unit of the spec sheet's values (:data:`SPEC_RANGES`), quoted when a
+value out of its range is refused: a head size in cm^2 typed as in^2, a balance in inches
+typed as cm, a swingweight in kg m^2 typed as kg cm^2, a tension in N typed as lb, a mass
+in oz typed as kg...  Checked by :func:`spec_sheet`, so the TOML files and the page, which
+build their rackets with it, say them too."""
 
 
 def _check_spec(name: str, value) -> float:
     """A spec-sheet value in its range (:data:`SPEC_RANGES`), with a hint at a likely slip
-    of unit (grams typed as kg, cm as m).
+    of unit (:data:`SPEC_SLIPS`: grams typed as kg, kg m^2 as kg cm^2, ...).
     """
     low, high, unit = SPEC_RANGES[name]
-    slips = {"mass_kg": [GRAMS_AS_KG], "length_m": [CM_AS_M]}.get(name, ())
-    return in_range(name, value, low, high, unit, slips=slips)
+    return in_range(name, value, low, high, unit, slips=SPEC_SLIPS.get(name, ()))
 
 
 def _one(kind: str, **given):

@@ -54,6 +54,7 @@ from __future__ import annotations
 import numpy as np
 
 from beam import Beam, fem
+from common.checks import in_range, instance
 
 POISSON = 0.3
 """Poisson's ratio of the tube rule GJ = EI / (1 + nu) (assumption: an isotropic wall)."""
@@ -96,7 +97,10 @@ def flex_test_stiffness(beam: Beam, throat: float) -> float:
     throat : float
         The throat support [m from the tip] (the throat end of the head).
     """
-    supports = np.array([throat, beam.length - HANDLE_SUPPORT])
+    instance("beam", beam, Beam, "a beam.Beam")
+    handle = beam.length - HANDLE_SUPPORT
+    throat = in_range("throat", throat, 0.0, handle, "m from the tip")
+    supports = np.array([throat, handle])
     extra = np.column_stack([supports, np.zeros(2)])
     nodes, k, _ = fem.assemble(
         np.asarray(beam.stations),

@@ -6,9 +6,10 @@ from dataclasses import replace
 
 import numpy as np
 
-from common.checks import in_range, positive
+from common.checks import in_range, instance, positive
 from common.units import IN2, LB
 from racket.membrane import CONTACT_RADIUS, MIN_RADIUS, bed_radius
+from racket.racket import Racket
 
 MEMBRANE_REFERENCE = (245.0, 100.0 * IN2, 3e4)
 """Calibration of the membrane model: 245 N (55 lb) on a 100 in^2 head gives a string-plane
@@ -33,6 +34,7 @@ def with_tension(racket, tension_n: float):
         String (reference) tension [N], in the spec sheets' range
         (:data:`TENSION_RANGE_LB`, 20-80 lb).
     """
+    instance("racket", racket, Racket, "a racket.Racket")
     low, high = (tension * LB for tension in TENSION_RANGE_LB)
     tension_n = in_range("tension", tension_n, low, high, "N")
     stiffness = string_bed_stiffness(tension_n, racket.strings.area)

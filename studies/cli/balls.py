@@ -7,15 +7,18 @@ from __future__ import annotations
 import numpy as np
 
 from ball import BALL_PRESETS, WALL, collide
+from ball.collision import largest_closing_speed, too_fast_to_store
 from common.checks import CM_AS_M, SPEED_RANGE, in_range, shown
 from common.units import SPEED_SUFFIXES, SPEED_UNITS
 from studies.cli.files import check_outputs, save_plot, write_table
 from studies.cli.options import (
     _ball_arg,
+    _Named,
     _print_table,
     _speed,
     _speed_option,
     _typed,
+    refuse_unused,
     speed_unit,
 )
 from studies.cli.racket_options import add_racket_options, racket_from
@@ -48,6 +51,8 @@ def cmd_collide(args) -> int:
     check_outputs(
         tables=[("--out", args.out), ("--history", args.history)], plots=[("--plot", args.plot)]
     )
+    if args.b == "wall":
+        refuse_unused(args, ("vb", "vb_mph", "vb_kmh"), "to --b wall (it cannot move)")
     v_a, v_b = _speed(args, "va", signed=True), _speed(args, "vb", signed=True)
     unit = speed_unit(args, "va", "vb")  # as typed: m/s, mph or km/h
     if v_a - v_b < SPEED_RANGE[0]:
@@ -59,6 +64,16 @@ def cmd_collide(args) -> int:
         )
     a = load_ball(args.a)
     b = WALL if args.b == "wall" else load_ball(args.b)
+    fastest = largest_closing_speed(a, b)
+    if v_a - v_b > fastest:  # said in the flags and units typed, not as collide's v_a
+        (flag_a, typed_a, unit_a, size), (flag_b, typed_b, unit_b, _) = (
+            _typed(args, "va"), _typed(args, "vb")
+        )  # fmt: skip
+        name, typed = flag_a, typed_a
+        if v_b != 0.0:
+            name = f"{flag_a} - {flag_b}"
+            typed = f"{shown(typed_a)} {unit_a} - {shown(typed_b)} {unit_b}"
+        raise too_fast_to_store(name, typed, fastest, unit_a, size)
     r = collide(a, b, v_a, v_b)
     rows = {
         "v_a_after_m_s": r.v_a_after,
@@ -122,7 +137,7 @@ def energy_lost(r) -> float:
 def add_drop(sub) -> None:
     """The ``drop`` subcommand, on the subparsers ``sub``."""
     p = sub.add_parser("drop", help="a ball dropped on the floor, on strings or on a racket")
-    _ball_arg(p, "ball", nargs="?")
+    _ball_arg(p, "ball", nargs="?", action=_Named)
     p.add_argument("--height-m", type=float, default=2.54, metavar="M",
                    help="drop height [m] (default 2.54, the ITF rebound test)")  # fmt: skip
     p.add_argument("--onto", choices=["floor", "strings", "racket"], default="floor",
@@ -142,6 +157,12 @@ def cmd_drop(args) -> int:
     from studies.drop import HEIGHT_RANGE, drop
 
     check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
+    if args.onto == "floor":
+        refuse_unused(args, ("racket", "tension_lb", "string_stiffness", "lead"),
+                      "to a drop onto the floor: add --onto strings or --onto racket")  # fmt: skip
+    elif args.onto == "strings":  # the head clamped: the frame does not move
+        refuse_unused(args, ("lead",), "to the strings of a clamped head (the frame does not "
+                      "move): --onto racket drops on the racket lying free")  # fmt: skip
     height = in_range("--height-m", args.height_m, *HEIGHT_RANGE, "m", slips=(CM_AS_M,))
     ball = load_ball(args.ball)
     onto, where = None, "the floor"
@@ -182,7 +203,7 @@ def cmd_drop(args) -> int:
 def add_ball(sub) -> None:
     """The ``ball`` subcommand, on the subparsers ``sub``."""
     p = sub.add_parser("ball", help="a ball's bounce on a rigid surface against impact speed")
-    _ball_arg(p, "ball", nargs="?")
+    _ball_arg(p, "ball", nargs="?", action=_Named)
     p.add_argument(
         "--list", action="store_true", help="the real-ball presets, their numbers and sources"
     )
@@ -204,6 +225,9 @@ def cmd_ball(args) -> int:
 
     check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
     if args.list:
+        refuse_unused(args, ("ball", "speeds", "speeds_mph", "speeds_kmh", "plot"),
+                      "to ball --list (the presets' numbers; --out writes them): leave out "
+                      "--list for one ball's bounce")  # fmt: skip
         presets = preset_table()
         band = [f"{low:.3f}-{high:.3f}" if low == low else "-" for low, high in
                 zip(presets["itf_cor_low"], presets["itf_cor_high"], strict=True)]  # fmt: skip
@@ -215,6 +239,11 @@ def cmd_ball(args) -> int:
         return 0
     speeds = _speed(args, "speeds")
     ball = load_ball(args.ball)
+    fastest = largest_closing_speed(ball, WALL)
+    flag, typed, unit, size = _typed(args, "speeds")
+    for value, v in zip(np.atleast_1d(typed), speeds, strict=True):
+        if v > fastest:  # said as typed, not as collide's v_a
+            raise too_fast_to_store(flag, value, fastest, unit, size)
     table = rigid_bounce_table(ball, speeds)
     unit = speed_unit(args, "speeds")
     if unit != "m/s":  # mph or km/h in, mph or km/h out

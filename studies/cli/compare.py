@@ -111,6 +111,8 @@ def cmd_compare(args) -> int:
     conditions = say_conditions(said + (" (equal effort)" if args.equal_effort else ""))
     unit = speed_unit(args, "speed", "swing_speed")
     _print_table(compare_view(summary, unit, swung=swing is not None))
+    for note in summary.attrs["notes"]:  # each "-" of the table said
+        print(note)
     if args.out:
         write_table(table if args.long else summary, args.out)
     if args.plot:

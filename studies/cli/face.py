@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import textwrap
 
-from common.checks import in_range
+from common.checks import M_AS_CM, in_range
 from studies.cli.files import check_outputs, save_plot, say_conditions, write_table
 from studies.cli.options import (
     _ball_arg,
@@ -17,6 +17,7 @@ from studies.cli.options import (
     _speed_option,
     _swing,
     _swing_options,
+    refuse_unused,
     speed_unit,
 )
 from studies.cli.racket_options import add_racket_options, racket_conditions, racket_from
@@ -58,6 +59,9 @@ def cmd_map(args) -> int:
     scale = _scale(args)
     if args.field not in FIELDS:
         raise ValueError(f"--field must be one of {list(FIELDS)}, got {args.field!r}")
+    if args.plot is None:
+        refuse_unused(args, ("field",), "without --plot (it chooses what the plot shows; the "
+                      "table has every field): add --plot FILE")  # fmt: skip
     grid = tuple(_count("--grid", n, 4, 1000) for n in args.grid)
     check_map_points(*grid, f"--grid {grid[0]} {grid[1]}")
     speed = _speed(args, "speed")
@@ -109,11 +113,15 @@ def cmd_sweetspots(args) -> int:
     swing = _swing(args)
     speed = _speed(args, "speed", allow_zero=swing is not None)
     racket, ball = racket_from(args), load_ball(args.ball)
+    if racket.support == "clamped-head":
+        refuse_unused(args, ("hand_cm_from_tip",), "to a racket with its head clamped (no "
+                      "centre of percussion): --support free or hand-held")  # fmt: skip
     hand = None
     if args.hand_cm_from_tip is not None:
         length = 100 * racket.beam.length
         low = length - 100 * HANDLE_REACH
-        hand = in_range("--hand-cm-from-tip", args.hand_cm_from_tip, low, length, "cm") / 100
+        hand = in_range("--hand-cm-from-tip", args.hand_cm_from_tip, low, length, "cm",
+                        slips=(M_AS_CM,)) / 100  # fmt: skip
     _check_swing(args, swing, racket, racket.strings.extent)  # the points span the strings
     table = sweet_spots(racket, ball, speed, swing, hand)
     unit = speed_unit(args, "speed", "swing_speed")

@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from studies import outputs
-from studies.provenance import sidecar_path
+from studies.provenance import SIDECAR_SUFFIX, sidecar_path
 
 if TYPE_CHECKING:
     import pandas as pd
@@ -25,8 +25,9 @@ PLOT_FORMATS = (".png", ".svg", ".pdf")
 def check_outputs(tables=(), plots=(), directories=()) -> None:
     """Check every output path before any work: a known extension (for Parquet, a library
     to write it with), an existing, writable directory, a name the directory can hold,
-    nothing there but a regular file, not a symbolic link (for a table, its sidecar too), and
-    no file named twice.  ValueError naming the path otherwise.
+    nothing there but a regular file, not a symbolic link (for a table, its sidecar too), no
+    table named as a sidecar (``*.meta.json``: it would overwrite one, and rerun would take
+    it for one), and no file named twice.  ValueError naming the path otherwise.
     """
     seen = {}
     for paths, kinds, what in ((tables, TABLE_FORMATS, "table"), (plots, PLOT_FORMATS, "plot")):
@@ -36,6 +37,11 @@ def check_outputs(tables=(), plots=(), directories=()) -> None:
             if Path(path).suffix.lower() not in kinds:
                 raise ValueError(
                     f"{flag} must be a {what} file ending in {', '.join(kinds)}, got {path!r}"
+                )
+            if what == "table" and Path(path).name.lower().endswith(SIDECAR_SUFFIX):
+                raise ValueError(
+                    f"{flag} {str(path)!r} is named as a table's sidecar (*{SIDECAR_SUFFIX}, "
+                    "written beside each table, read by rerun): name the table otherwise"
                 )
             if Path(path).suffix.lower() == ".parquet":
                 _check_parquet(flag)

@@ -33,13 +33,62 @@ if TYPE_CHECKING:
 
 
 class _Once(argparse.Action):
-    """Store a single-valued option, refusing it twice (the last would silently win)."""
+    """Store an option, refusing it twice (the last would silently win)."""
 
     def __call__(self, parser, namespace, values, option_string=None):
         if getattr(namespace, f"_seen_{self.dest}", False):
-            parser.error(f"{option_string} given twice; give it once")
+            once = f"all its values after one {option_string}" if self.nargs == "+" else "it once"
+            parser.error(f"{option_string} given twice; give {once}")
         setattr(namespace, f"_seen_{self.dest}", True)
         setattr(namespace, self.dest, values)
+
+
+class _Named(argparse.Action):
+    """Store an optional positional (``ball [PRESET_OR_TOML]``), noting whether it was typed:
+    argparse hands an absent one its default, the very object (as argparse itself tells).
+    """
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        if values is not self.default:  # said as typed by :func:`given`
+            setattr(namespace, f"_seen_{self.dest}", f"the {self.dest} {values!r}")
+        setattr(namespace, self.dest, values)
+
+
+def given(args, *dests: str) -> list[str]:
+    """The options among ``dests`` (their ``dest``: ``"tension_lb"``) that the command line
+    gave, as their flags (``"--tension-lb"``; a positional as :class:`_Named` says it).
+
+    Parameters
+    ----------
+    args : argparse.Namespace
+        The parsed command line.
+    *dests : str
+        The options' ``dest``.
+    """
+    seen = [(dest, getattr(args, f"_seen_{dest}", False)) for dest in dests]
+    return [
+        said if isinstance(said, str) else f"--{dest.replace('_', '-')}"
+        for dest, said in seen
+        if said
+    ]
+
+
+def refuse_unused(args, dests, why: str) -> None:
+    """ValueError in one line for the first option among ``dests`` the command line gave
+    (:func:`given`): it does not apply ``why`` (what it would take, or what to do instead),
+    and would otherwise be ignored in silence.
+
+    Parameters
+    ----------
+    args : argparse.Namespace
+        The parsed command line.
+    dests : sequence of str
+        The options' ``dest`` that do not apply.
+    why : str
+        Where they do not apply and what to do, after "does not apply ".
+    """
+    for flag in given(args, *dests):
+        raise ValueError(f"{flag} does not apply {why}")
 
 
 class _Parser(argparse.ArgumentParser):
@@ -54,12 +103,31 @@ class _Parser(argparse.ArgumentParser):
         self.exit(2, f"{self.prog}: error: {message}\n")
 
     def add_argument(self, *args, **kwargs):
-        if args and args[0].startswith("--") and "action" not in kwargs:
-            kwargs["action"] = _Once
-        action = super().add_argument(*args, **kwargs)
+        action = super().add_argument(*args, **_once(args, kwargs))
         if action.option_strings and action.metavar in ("FILE", "DIR"):
             self.set_defaults(_writes=(*(self.get_default("_writes") or ()), action.dest))
         return action
+
+    def add_mutually_exclusive_group(self, **kwargs):
+        group = _OnceGroup(self, **kwargs)
+        self._mutually_exclusive_groups.append(group)
+        return group
+
+
+class _OnceGroup(argparse._MutuallyExclusiveGroup):
+    """A group of mutually exclusive options, each refused twice as on the parser."""
+
+    def add_argument(self, *args, **kwargs):
+        return super().add_argument(*args, **_once(args, kwargs))
+
+
+def _once(args: tuple, kwargs: dict) -> dict:
+    """``kwargs`` of an option ``--NAME`` with :class:`_Once` as its action unless it says
+    another (``store_true``, ``append``): on the parser and in its groups alike.
+    """
+    if args and args[0].startswith("--") and "action" not in kwargs:
+        return {**kwargs, "action": _Once}
+    return kwargs
 
 
 class _Replay(_Parser):

@@ -10,7 +10,7 @@ from dataclasses import replace
 
 from common.checks import KN_AS_N, in_range, shown
 from racket import DEFAULT_RACKET, GRIPS, SUPPORTS
-from studies.cli.options import _Once, _tension, speed_unit
+from studies.cli.options import _Once, _tension, refuse_unused, speed_unit
 from studies.conditions import conditions_line, racket_details
 from studies.config import RACKETS, load_racket
 from studies.sweeps import STRING_STIFFNESS_RANGE
@@ -102,12 +102,27 @@ def lead_tape(racket, words):
                 f"--lead {word!r} must be GRAMS@CLOCK, e.g. 3@12, 2@3/9 or 4@6 (grams per side)"
             )
         grams = in_range("--lead", float(match.group(1)), *LEAD_GRAMS, "g per side")
-        at = match.group(2).replace("/", " and ")
+        at = match.group(2)
         try:
-            racket = racket.with_lead_tape(grams / 1e3, at)
-        except ValueError as err:
-            raise ValueError(f"--lead {word!r}: {err}") from None
+            racket = racket.with_lead_tape(grams / 1e3, at.replace("/", " and "))
+        except ValueError:
+            raise ValueError(f"--lead {word!r} {_clock_hint(match.group(1), at)}") from None
     return racket
+
+
+def _clock_hint(grams: str, at: str) -> str:
+    """What to type instead of the clock position ``at`` of ``--lead`` that the head refused,
+    in the option's own spelling (GRAMS@H/K, not the API's 'H and K').
+    """
+    if at.isdigit() and 1 <= int(at) <= 11:  # one side (12 and 6 are on the axis, accepted)
+        return (
+            f"puts lead on one side only: give both sides, {grams}@{int(at)}/{12 - int(at)} "
+            "(the racket model is symmetric about its long axis)"
+        )
+    return (
+        f"must be at 12 (the tip), 6 (the throat) or a mirrored pair H/K with H + K = 12, "
+        f"e.g. {grams}@12, {grams}@6, {grams}@3/9, {grams}@2/10"
+    )
 
 
 def racket_from(args, spec: str | None = None, grid: bool = False):
@@ -136,6 +151,25 @@ def racket_from(args, spec: str | None = None, grid: bool = False):
             )
         racket = replace(racket, hand=GRIPS[args.grip])
     return racket
+
+
+def check_offset(args, racket) -> None:
+    """``--offset`` refused in one line on a racket whose roll inertia is not modelled (its
+    impacts are all on the long axis), the racket named as ``--racket`` gave it.
+    """
+    if racket.beam.roll_inertia is None:
+        refuse_unused(args, ("offset",), f"to the racket {args.racket!r}: its roll inertia is "
+                      "not modelled, every impact is on the long axis (a spec-sheet racket, "
+                      f"such as {DEFAULT_RACKET}, has it)")  # fmt: skip
+
+
+def modes_options(args) -> None:
+    """The racket's options that ``modes`` does not take refused in one line: its modes are
+    the free frame's, whatever holds or strings it.
+    """
+    refuse_unused(args, ("support", "grip", "tension_lb", "string_stiffness"), "to modes (the "
+                  "free frame's modes and mass properties, whatever holds or strings it): "
+                  "racket-impact specs gives the modes held by the hand")  # fmt: skip
 
 
 def racket_conditions(

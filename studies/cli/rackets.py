@@ -13,7 +13,13 @@ from common.checks import M_AS_CM, S_AS_MS, in_range
 from racket.specs.ra import ra_note
 from studies.cli.files import check_outputs, save_plot, say_conditions, write_table
 from studies.cli.options import _ball_arg, _count, _print_table, _speed, _speed_option
-from studies.cli.racket_options import add_racket_options, racket_conditions, racket_from
+from studies.cli.racket_options import (
+    add_racket_options,
+    check_offset,
+    modes_options,
+    racket_conditions,
+    racket_from,
+)
 from studies.cli.show import WIDTH, spots_view
 from studies.config import load_ball, racket_specs
 from studies.sweeps import BALL_SPEED
@@ -37,6 +43,7 @@ def cmd_modes(args) -> int:
 
     check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
     count = _count("--count", args.count, 1, MAX_MODES)
+    modes_options(args)
     racket = racket_from(args)
     beam, modes = racket.beam, racket.beam.modes
     hand = hand_pivot(racket)
@@ -181,11 +188,10 @@ def cmd_feel(args) -> int:
         low, high = (100 * end for end in racket.strings.extent)
         position = in_range("--position", args.position, low, high, "cm from the tip",
                             slips=(M_AS_CM,)) / 100  # fmt: skip
+    check_offset(args, racket)
     if args.offset is not None:
         half = 50 * racket.strings.full_width
-        if racket.beam.roll_inertia is not None:
-            in_range("--offset", args.offset, -half, half, "cm from the long axis",
-                     slips=(M_AS_CM,))  # fmt: skip
+        in_range("--offset", args.offset, -half, half, "cm from the long axis", slips=(M_AS_CM,))
         offset = args.offset / 100
     duration = in_range("--duration-ms", args.duration_ms, 5.0, 1000.0, "ms", slips=(S_AS_MS,))
     speed = _speed(args, "speed")

@@ -30,6 +30,7 @@ from studies.cli.options import (
 )
 from studies.cli.racket_options import (
     add_racket_options,
+    check_offset,
     racket_conditions,
     racket_from,
     stiffnesses,
@@ -122,10 +123,12 @@ def cmd_sweep(args) -> int:
     sizes = [f"--points {points}"] + [f"{len(v)} {f} values" for f, v in grid.items() if len(v) > 1]
     check_impacts(points * int(np.prod([max(len(v), 1) for v in grid.values()])), " x ".join(sizes))
     racket, ball = racket_from(args, grid=True), load_ball(args.ball)
-    ends = _ends(args, racket)
+    ends, clipped = _ends(args, racket)
     _check_swing(args, swing, racket, ends)
-    for ra in args.ra or ():
-        print(ra_note(ra))
+    conditions = say_conditions(racket_conditions(args, racket, speed=speeds, swing=swing))
+    for note in [clipped, *(ra_note(ra) for ra in args.ra or ())]:
+        if note:
+            print(note)
     with scale as executor:
         table = sweep(
             racket,
@@ -142,7 +145,6 @@ def cmd_sweep(args) -> int:
         )
     varying = list(table.columns[len(COLUMNS) :])  # the parameters that vary
     table = _in_units(table, unit, args.tension_lb is not None)
-    conditions = say_conditions(racket_conditions(args, racket, speed=speeds, swing=swing))
     suffix = SPEED_SUFFIXES[unit]
     shown = ["position_from_tip_cm", "e", "e_A"]  # the rest: --out
     shown += ["recontacts"] if table["recontacts"].any() else []
@@ -192,16 +194,17 @@ def _every_group_alike(table, varying: list[str]):
     return shown
 
 
-def _ends(args, racket) -> list[float]:
+def _ends(args, racket) -> tuple[list[float], str]:
     """The first and last impact points [m from the tip] of ``sweep``: ``--from``/``--to``
     [cm from the tip] (on the strings; a value in m caught), by default the ends of the
     strings, or with ``--offset`` [cm] the ends of the strings that far off the axis (the bed
-    is an ellipse: said in one line).
+    is an ellipse: said in the note returned with them, "" if none).
     """
     extent = [100 * end for end in racket.strings.extent]  # cm from the tip
     half = 50 * racket.strings.full_width
-    offset = None  # (an offset on a racket without roll inertia: refused by the sweep)
-    if args.offset is not None and racket.beam.roll_inertia is not None:
+    check_offset(args, racket)
+    offset = None
+    if args.offset is not None:
         offset = in_range(
             "--offset", args.offset, -half, half, "cm from the long axis", slips=(M_AS_CM,)
         )
@@ -222,12 +225,13 @@ def _ends(args, racket) -> list[float]:
                     f"there they span {span[0]:.4g}-{span[1]:.4g} cm from the tip (the bed is "
                     "an ellipse); narrow --from/--to to that"
                 )
+    note = ""
     if offset and (args.from_ is None or args.to is None):
-        print(
+        note = (
             f"at --offset {shown(offset)} cm the strings span {span[0]:.4g}-{span[1]:.4g} cm "
             "from the tip\n(the bed is an ellipse): the sweep is clipped to them"
         )
-    return [end / 100 for end in ends]
+    return [end / 100 for end in ends], note
 
 
 def _in_units(table, unit: str, lb: bool):
