@@ -9,7 +9,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ball.laws import MonotoneLaw, SineLaw
-from common.checks import CM_AS_M, MM_AS_M, finite_array, in_range, instance, positive
+from common.checks import CM_AS_M, MM_AS_M, finite_array, in_range, positive
+from common.typechecks import instance
 
 BALL_RADIUS_RANGE = (0.005, 0.15)
 """The radius of a ball [m] racket-impact accepts: **an assumption**, generous around the

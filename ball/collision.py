@@ -17,7 +17,8 @@ from ball.bodies import Ball, Wall, warn_if_squashed
 from ball.contact import RelativeContact
 from ball.laws import SineLaw
 from ball.monotone import monotone_contact
-from common.checks import SPEED_RANGE, ends, in_range, instance, shown, whole
+from common.checks import SPEED_RANGE, ends, in_range, shown, whole
+from common.typechecks import instance
 
 
 @dataclass(frozen=True)

@@ -105,7 +105,8 @@ class StiffeningHysteresis(_PowerBranches):
         """F_max / X_max = (F_max + F_c) / x_lim [N/m] of a ball of ``mass`` [kg] hitting a
         rigid surface at ``speed`` [m/s] (inf where the force overflows: never NaN).
         """
-        return float((self.peak_force(mass, speed) + self._f_c) / self.x_lim)
+        with np.errstate(over="ignore"):  # an overflowing force: an infinite stiffness
+            return float((self.peak_force(mass, speed) + self._f_c) / self.x_lim)
 
     def _loading_compliance(self, f):
         return self.x_lim * self._f_c / (np.asarray(f, dtype=float) + self._f_c) ** 2

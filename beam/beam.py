@@ -14,7 +14,8 @@ import numpy as np
 from beam import fem, uniform
 from beam.modes import Modes
 from beam.torsion import RollModes, roll_modes
-from common.checks import finite, finite_array, in_range, instance, positive, shown, whole
+from common.checks import finite, finite_array, in_range, positive, shown, whole
+from common.typechecks import instance
 
 DEFAULT_DAMPING = 0.005
 """Default modal damping ratio of every bending mode.  A freely suspended graphite racket

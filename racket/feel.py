@@ -29,8 +29,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from common.checks import finite, in_range, instance
+from common.checks import finite, in_range
 from common.checks import speed as check_speed
+from common.typechecks import instance
 from racket.racket import Racket
 from racket.solver import impact
 

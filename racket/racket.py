@@ -8,16 +8,8 @@ from functools import cached_property
 import numpy as np
 
 from beam import Beam
-from common.checks import (
-    GRAMS_AS_KG,
-    choice,
-    finite_array,
-    in_range,
-    instance,
-    non_negative,
-    positive,
-    shown,
-)
+from common.checks import GRAMS_AS_KG, finite_array, in_range, non_negative, positive, shown
+from common.typechecks import choice, instance
 from racket.hand import GRIPS, Hand
 from racket.head import HEAD_ASPECT, Hoop
 from racket.membrane import bed_radius, stiffness_ratio

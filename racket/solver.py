@@ -38,8 +38,9 @@ import warnings
 import numpy as np
 
 from ball import Ball, SineLaw, warn_if_squashed
-from common.checks import finite, finite_array, flag, in_range, instance, shown
+from common.checks import finite, finite_array, in_range, shown
 from common.checks import speed as check_speed
+from common.typechecks import flag, instance
 from racket import layout
 from racket.dispatch import IMPACTS_PER_THREAD, LOCKSTEP_MIN, one_blas_thread, pool_size
 from racket.dispatch import compile_notice as _compile_notice  # noqa: F401  (kept importable here)

@@ -10,7 +10,8 @@ from __future__ import annotations
 import numbers
 
 from ball import Ball
-from common.checks import instance, shown
+from common.checks import shown
+from common.typechecks import instance
 from racket import Racket, Swing
 
 
@@ -31,7 +32,7 @@ def racket_argument(racket, name: str = "racket") -> Racket:
     name : str, optional
         The argument's name, as the message quotes it.
     """
-    return instance(name, racket, Racket, "a Racket", _named(racket, "load_racket"))
+    return instance(name, racket, Racket, "a racket.Racket", _named(racket, "load_racket"))
 
 
 def ball_argument(ball, name: str = "ball") -> Ball:
@@ -44,7 +45,7 @@ def ball_argument(ball, name: str = "ball") -> Ball:
     name : str, optional
         The argument's name, as the message quotes it.
     """
-    return instance(name, ball, Ball, "a Ball", _named(ball, "load_ball"))
+    return instance(name, ball, Ball, "a ball.Ball", _named(ball, "load_ball"))
 
 
 def swing_argument(swing) -> Swing | None:

@@ -21,6 +21,7 @@ from ball.catalog import BALL_MASS, ITF_DROP_SPEED, ITF_FORCE
 from ball.collision import largest_closing_speed, too_fast_to_store
 from common.checks import shown
 from common.checks import speed as check_speed
+from common.typechecks import instance
 
 if TYPE_CHECKING:
     import pandas as pd
@@ -109,6 +110,7 @@ def rigid_bounce_table(ball: Ball, speeds=DEFAULT_SPEEDS) -> pd.DataFrame:
     """
     import pandas as pd
 
+    ball = instance("ball", ball, Ball, "a ball.Ball")
     if np.size(speeds) == 0 or np.ndim(speeds) > 1:
         raise ValueError(f"speeds must be one speed or a list of them [m/s], got {shown(speeds)}")
     speeds = [check_speed("speed", v) for v in np.atleast_1d(speeds)]

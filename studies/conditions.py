@@ -8,7 +8,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from common.checks import shown
+from common.checks import finite_array, shown
+from common.typechecks import choice, instance
 from common.units import SPEED_UNITS
 
 
@@ -86,6 +87,12 @@ def conditions_line(
     >>> conditions_line("pure-drive-2021", "itf-type-2", 16.5, support="free")
     'racket pure-drive-2021 (free), ball itf-type-2 at 16.5 m/s, the racket at rest'
     """
+    for name, value in (("racket_name", racket_name), ("ball_name", ball_name), ("swing", swing),
+                        ("support", support), ("grip", grip), ("strings", strings)):  # fmt: skip
+        instance(name, value, str | type(None), "a str or None")
+    choice("unit", unit, tuple(SPEED_UNITS))
+    if speed is not None and finite_array("speed", speed, "m/s").size == 0:
+        raise ValueError("speed must be one speed or more [m/s], or None; got none")
     parts = []
     if racket_name is not None:
         details = [d for d in (support, grip, strings) if d]

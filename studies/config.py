@@ -81,7 +81,8 @@ from ball import (
 from ball.bodies import BALL_RADIUS_RANGE, RADIUS_SLIPS
 from beam import Beam
 from common import checks as slip  # the slips of unit: slip.CM_AS_M, ...
-from common.checks import file_path, in_range, instance, loose_tension, positive, shown
+from common.checks import in_range, loose_tension, positive, shown
+from common.typechecks import file_path, instance
 from racket import (
     CATALOG,
     DEFAULT_RACKET,
@@ -94,7 +95,6 @@ from racket import (
     paper_ball,
     paper_racket,
 )
-from racket.hand import GRIP_LENGTH_RANGE, HAND_MASS_RANGE, HAND_STIFFNESS_RANGE
 from racket.racket import ADDED_MASS_MAX
 from racket.solver import F1_MIN
 from racket.specs.sheet import SPEC_RANGES, SPEC_SLIPS
@@ -130,9 +130,6 @@ TOML_RANGES = {
     **{("racket.specs", key): (*SPEC_RANGES[key], slips) for key, slips in SPEC_SLIPS.items()},
     ("racket.strings", "stiffness"): (*STRING_STIFFNESS_RANGE, "N/m", (slip.KN_AS_N,)),
     ("ball", "mass"): (0.001, 1.0, "kg", (slip.GRAMS_AS_KG, slip.OZ_AS_KG)),
-    ("racket.hand", "stiffness"): (*HAND_STIFFNESS_RANGE, "N/m", (slip.KN_AS_N,)),
-    ("racket.hand", "grip_length"): (*GRIP_LENGTH_RANGE, "m", (slip.CM_AS_M,)),
-    ("racket.hand", "mass"): (*HAND_MASS_RANGE, "kg", (slip.GRAMS_AS_KG,)),
     ("ball", "radius"): (*BALL_RADIUS_RANGE, "m", RADIUS_SLIPS),
     ("ball", "x_lim"): (*BALL_RADIUS_RANGE, "m", RADIUS_SLIPS),
     ("ball", "k"): (1e3, 1e7, "N/m", (slip.KN_AS_N,)),
@@ -151,10 +148,9 @@ weighs 1 g-1 kg (a table-tennis ball 2.7 g, a basketball about 0.6 kg; the proje
 linear ball's stiffness is 1e3-1e7 N/m (a tennis ball's 4e4, paper Sec. III; the happy and
 unhappy balls' 2e4, Secs. IV-VI); the spec-sheet keys with a likely slip
 (:data:`racket.specs.sheet.SPEC_SLIPS`) in the spec sheets' ranges; a ball's radius and
-its law's ``x_lim`` in :data:`ball.bodies.BALL_RADIUS_RANGE`; the hand's in the ranges of
-:mod:`racket.hand` (its mass omitted: the grip held still).  A value typed in g, oz, mm,
-cm, inches or kN/m falls outside and is refused with the hint (``mass = 57`` for a ball
-would be 0.057 kg)."""
+its law's ``x_lim`` in :data:`ball.bodies.BALL_RADIUS_RANGE` (the hand's are
+:class:`racket.Hand`'s own).  A value typed in g, oz, mm, cm, inches or kN/m falls outside
+and is refused with the hint (``mass = 57`` for a ball would be 0.057 kg)."""
 
 LAWS = {
     "linear-spring": (LinearSpring, {"k"}),
@@ -350,7 +346,6 @@ def racket_from_table(table: dict) -> Racket:
     )
     hand_table = table.get("hand", {})
     _check_keys(hand_table, _HAND_KEYS, "racket.hand")
-    _check_ranges(hand_table, "racket.hand")
     if "grip" in hand_table and len(hand_table) > 1:
         raise ValueError("[racket.hand] takes a grip preset or its own values, not both")
     grip = hand_table.get("grip")

@@ -26,6 +26,7 @@ from common.checks import SPEED_RANGE, in_range
 from common.units import LB, MPH
 from racket import CATALOG, DEFAULT_RACKET, Swing, from_specs, impact
 from racket.feel import hand_feel
+from racket.racket import ADDED_MASS_MAX
 from racket.specs.ra import ra_note
 from racket.specs.sheet import SPEC_RANGES
 from racket.specs.strings import with_tension
@@ -53,10 +54,9 @@ is below the fastest head speed assumed for any stroke (:data:`common.checks.FAS
 115 mph; a professional's 120 mph serve is hit by the racket's tip at nearly 120 mph, the
 impact point about 22 % slower: popularmechanics.com/adventure/sports/a2072/4221210)."""
 
-LEAD_MAX_G = 200.0
-"""The most lead tape per side the page takes [g]: the command line's ``--lead`` and the
-TOML's ``lead_tape`` most (:data:`studies.cli.racket_options.LEAD_GRAMS`; an assumption,
-generous on purpose), not imported from the command line's layer."""
+LEAD_MAX_G = 1e3 * ADDED_MASS_MAX
+"""The most lead tape per side the page takes [g]: what the command line's ``--lead``, the
+TOML's ``lead_tape`` and the API take (:data:`racket.racket.ADDED_MASS_MAX`)."""
 
 HEAD_SPEEDS_MPH = np.arange(20.0, HEAD_SPEED_MAX_MPH + 1.0, 10.0)
 """Head speeds of the serve-speed curve [mph]: a slow feed to :data:`HEAD_SPEED_MAX_MPH`."""

@@ -17,6 +17,7 @@ import numpy as np
 
 from ball import WALL, Ball, collide
 from common.checks import CM_AS_M, in_range
+from common.typechecks import instance
 from common.units import GRAVITY
 from racket import Racket, impact
 
@@ -91,6 +92,10 @@ def drop(ball: Ball, height: float, onto: Racket | None = None) -> Drop:
     >>> 1.35 <= bounce.bounce_height <= 1.47
     True
     """
+    ball = instance("ball", ball, Ball, "a ball.Ball")
+    onto = instance("onto", onto, Racket | type(None), "a racket.Racket or None (the floor)", (
+        " (the command line's --onto strings is onto=replace(racket, support='clamped-head'), "
+        "--onto racket is a free racket)" if isinstance(onto, str) else ""))  # fmt: skip
     height = in_range("height", height, *HEIGHT_RANGE, "m", slips=(CM_AS_M,))
     speed = math.sqrt(2.0 * GRAVITY * height)
     if onto is None:

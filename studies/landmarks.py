@@ -105,21 +105,3 @@ def percussion_centre(racket: Racket, positions, v_cm, omega, pivot: float) -> f
         return float("nan")
     i = crossing[0]
     return float(x[i] - dc[i] * (x[i + 1] - x[i]) / (dc[i + 1] - dc[i]))
-
-
-def whole(name: str, value, low: int, high: int) -> int:
-    """``value`` as an int; raise ``ValueError`` unless it is a whole number in [low, high].
-
-    Parameters
-    ----------
-    name : str
-        The argument's name, as the message quotes it.
-    value : object
-        The count [-].
-    low, high : int
-        The bounds [-], inclusive.
-    """
-    x = in_range(name, value, low, high)
-    if x != int(x):
-        raise ValueError(f"{name} must be a whole number in [{low}, {high}], got {x:g}")
-    return int(x)

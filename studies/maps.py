@@ -17,11 +17,12 @@ from types import SimpleNamespace
 import numpy as np
 
 from ball import Ball
-from common.checks import in_range, shown
+from common.checks import in_range, shown, whole
 from common.checks import speed as check_speed
 from common.units import MPH, SPEED_UNITS
 from racket import TENNIS_BALL_RADIUS, Racket, Swing, impact
-from studies.landmarks import hand_pivot, percussion_centre, whole
+from studies.arguments import ball_argument, racket_argument, swing_argument
+from studies.landmarks import hand_pivot, percussion_centre
 from studies.scale import impacts_of, run_calls
 from studies.sweeps import BALL_SPEED
 
@@ -296,9 +297,8 @@ def face_map(
     >>> face.e_A.shape, round(face.sweet_area_cm2)
     ((15, 9), 34)
     """
+    racket, ball, swing = racket_argument(racket), ball_argument(ball), swing_argument(swing)
     speed = check_speed("speed", speed)
-    if swing is not None and not isinstance(swing, Swing):
-        raise ValueError(f"swing must be a Swing or None, got {shown(swing)}")
     if swing is not None and racket.support != "free":
         raise ValueError(
             f"swing must be None for a {racket.support} racket (the hand or clamp is at rest; "

@@ -32,9 +32,10 @@ PLOT_PX_MAX = 8000.0
 """The widest or tallest plot the page draws [CSS px]: an 8K screen is 7680 px wide
 (ASSUMPTION: a plot is never wider than the screen)."""
 
-PIXEL_RATIO_MAX = 4.0
-"""The largest device pixel ratio the page draws for [-] (ASSUMPTION: phones reach 3.5):
-with :data:`PLOT_PX_MAX`, a plot stays under matplotlib's 65536 px."""
+PIXEL_RATIO_MAX = 8.0
+"""The largest device pixel ratio the page draws for [-] (ASSUMPTION: phones reach 3.5,
+a browser's zoom multiplies it, 200 % on such a phone about 7): with :data:`PLOT_PX_MAX`, a
+plot stays under matplotlib's 65536 px (8000 x 8 = 64000)."""
 
 TYPES = ("shiny.number",)
 """The input types the page's controls send (its numeric inputs; the others send none)."""

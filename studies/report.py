@@ -14,10 +14,14 @@ import pandas as pd
 
 from ball import BALL_PRESETS, DEFAULT_BALL, Ball
 from beam import Beam
+from beam.beam import MAX_MODES
+from common.checks import whole
+from common.typechecks import instance
 from racket import Racket, flex_test_stiffness
 from racket.specs import Profile, SpecSheet, fit_profile, spec_sheet
 from racket.specs.ra import RA_ROWS, RA_SCATTER, f1_from_ra
 from racket.system import held_mode, held_system
+from studies.arguments import ball_argument, racket_argument
 from studies.sweetspots import sweet_spots
 
 
@@ -195,10 +199,14 @@ def spec_report(
         The spec sheet it was fitted to, as keywords of :func:`racket.from_specs` (units in
         their names); None: no fit tables.
     count : int, optional
-        Bending modes to list.
+        Bending modes to list, in [1, 200] (at most the beam's).
     ball : Ball, optional
         The ball of the sweet spots; default the ITF type 2 ball (:data:`ball.DEFAULT_BALL`).
     """
+    racket = racket_argument(racket)
+    ball = None if ball is None else ball_argument(ball)
+    specs = instance("specs", specs, dict | type(None), "a dict of from_specs keywords or None")
+    count = whole("count", count, 1, MAX_MODES)
     x = np.linspace(*racket.strings.extent, 9)
     effective = pd.DataFrame(
         {

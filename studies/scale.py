@@ -26,10 +26,12 @@ import contextlib
 import math
 import numbers
 import os
-import re
 import secrets
+import select
+import signal
 import socket
 import sys
+import threading
 import warnings
 from collections.abc import Callable, Sequence
 from concurrent.futures import Executor
@@ -37,7 +39,10 @@ from typing import NamedTuple
 
 import numpy as np
 
-from common.checks import ArgumentTypeError, flag, shown
+from common.checks import ArgumentTypeError, shown
+from common.typechecks import flag
+from studies import outputs
+from studies.scheduler import SCHEDULER_TIMEOUT, check_scheduler, connected
 
 TASK_IMPACTS = 4096
 """Most impacts in one task: about 65 ms of a worker's time at 16 us per impact (the
@@ -54,8 +59,6 @@ several, so that they finish together."""
 
 MAX_WORKERS = 1024
 """Most processes ``--workers`` starts."""
-
-_SCHEDULER = re.compile(r"^(?:(tcp|tls|ucx|ws|wss|inproc)://)?([^\s/:]+|\[[0-9A-Fa-f:]+\]):(\d+)$")
 
 
 class Impacts(NamedTuple):
@@ -320,9 +323,18 @@ def progress_bar(iterable, total: int, progress: bool | None, desc: str):
     return tqdm(iterable, total=total, desc=desc)
 
 
+def cores() -> int:
+    """The cores this process may run on (its CPU affinity, where the platform tells it)."""
+    if hasattr(os, "sched_getaffinity"):
+        return len(os.sched_getaffinity(0))
+    return os.cpu_count() or 1
+
+
 def check_workers(workers, flag: str = "workers") -> int:
-    """``workers``, a whole number of processes in [1, :data:`MAX_WORKERS`]; ValueError
-    naming ``flag`` otherwise.
+    """``workers``, a whole number of processes in [1, :data:`MAX_WORKERS`] (ValueError
+    naming ``flag`` otherwise), cut to the :func:`cores` with a warning: a worker runs one
+    thread, so more would only share the cores, each holding a solver (0.15-0.23 GB,
+    measured).
 
     Parameters
     ----------
@@ -338,90 +350,146 @@ def check_workers(workers, flag: str = "workers") -> int:
             f"{flag} must be in [1, {MAX_WORKERS}] processes (this machine has "
             f"{os.cpu_count()} cores), got {workers}"
         )
+    available = cores()
+    if workers > available:
+        warnings.warn(
+            f"{flag} {workers}: this process may use {available} cores; running on "
+            f"{available} processes (more would not run faster)",
+            stacklevel=2,
+        )
+        return available
     return int(workers)
 
 
-def check_scheduler(address: str, flag: str = "scheduler") -> str:
-    """``address``, a Dask scheduler's ``[PROTOCOL://]HOST:PORT`` (e.g.
-    ``tcp://10.0.0.5:8786``); ValueError naming ``flag`` otherwise.
+def quiet_worker(home: int | None = None) -> None:
+    """A pool worker's start (its ``initializer``): Ctrl-C is for the command, which stops
+    the pool, not for each worker to report; the kernel on one thread; the worker ends when
+    the command does (:func:`die_with`).
 
     Parameters
     ----------
-    address : str
-        The scheduler's address.
-    flag : str
-        The input's name as the user typed it (``--scheduler``).
+    home : int, optional
+        The command's process id; default this worker's parent (a pool forked or spawned by
+        the command; a forkserver's worker is the forkserver's child).
     """
-    match = _SCHEDULER.match(str(address).strip())
-    if match is None or not 0 < int(match.group(3)) < 65536:
-        raise ValueError(
-            f"{flag} must be a Dask scheduler's address, [tcp://]HOST:PORT with a port in "
-            f"[1, 65535] (e.g. tcp://10.0.0.5:8786), got {address!r}"
-        )
-    return str(address).strip()
-
-
-def quiet_worker() -> None:
-    """A pool worker's start (its ``initializer``): Ctrl-C is for the command, which stops
-    the pool, not for each worker to report; the kernel on one thread.
-    """
-    import signal
-
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     one_kernel_thread()
+    die_with(os.getppid() if home is None else home)
+
+
+def die_with(home: int) -> None:
+    """Kill this process (SIGKILL) when the process ``home`` ends, however it ends: on Linux
+    (5.3 and later), a thread waits on ``home``'s pidfd; elsewhere nothing (a killed
+    command's workers are then left waiting for tasks).  Not ``PR_SET_PDEATHSIG``: it
+    follows the parent, and a forkserver's worker's parent is the forkserver, which its
+    workers keep alive (they hold its pipe), so neither would ever end.
+
+    Parameters
+    ----------
+    home : int
+        The process id to die with.
+    """
+    if not hasattr(os, "pidfd_open"):
+        return
+    try:
+        handle = os.pidfd_open(home)
+    except ProcessLookupError:  # ended already
+        os.kill(os.getpid(), signal.SIGKILL)
+    except OSError:  # a kernel before 5.3
+        return
+
+    def wait():
+        ended = select.poll()
+        ended.register(handle, select.POLLIN)  # readable when ``home`` has ended
+        ended.poll()
+        os.kill(os.getpid(), signal.SIGKILL)
+
+    threading.Thread(target=wait, daemon=True, name="racket-impact: die with the command").start()
+
+
+def _pool_context():
+    """A pool's multiprocessing context: forkserver where the platform has it, spawn
+    otherwise (a clean process whatever threads this one runs).  The forkserver is started
+    with Ctrl-C and SIGHUP blocked, and its workers inherit the block: a signal a terminal
+    sends to every process of the command is the command's to answer (it ends its workers),
+    not a starting worker's traceback.
+    """
+    import multiprocessing
+    from multiprocessing import forkserver, resource_tracker
+
+    if "forkserver" not in multiprocessing.get_all_start_methods():
+        return multiprocessing.get_context("spawn")
+    context = multiprocessing.get_context("forkserver")
+    context.set_forkserver_preload(["racket.solver", "studies.tables"])
+    resource_tracker.ensure_running()  # first: its start unblocks SIGINT and SIGTERM
+    quiet = set(outputs.STOPS) - {signal.SIGTERM}  # (a broken pool's workers get SIGTERM)
+    unblocked = signal.pthread_sigmask(signal.SIG_BLOCK, quiet)
+    try:
+        forkserver.ensure_running()
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, unblocked)
+    return context
+
+
+def _kill(pool) -> None:
+    """End the workers of ``pool`` at once: their tasks' work is not wanted (``shutdown``
+    lets the running tasks end, and those already handed to the workers).  Python before
+    3.14 (``terminate_workers``) has no public way to them.
+    """
+    for process in list((pool._processes or {}).values()):
+        process.kill()
 
 
 @contextlib.contextmanager
-def executor_for(workers: int | None = None, scheduler: str | None = None, timeout: float = 10.0):
+def executor_for(
+    workers: int | None = None,
+    scheduler: str | None = None,
+    timeout: float = SCHEDULER_TIMEOUT,
+    flags: tuple[str, str] = ("workers", "scheduler"),
+):
     """An executor for a study: None (this process) when neither is given, a pool of
     ``workers`` processes, or the Dask cluster at ``scheduler`` (``client.get_executor``
     with ``pure=False``); closed when the block ends.  Both are checked, and the scheduler
-    reached, before the block runs (ValueError in one line).
+    reached, before the block runs (ValueError in one line).  A pool's workers end with the
+    command, however it ends (:func:`die_with`), and at once when the block raises (Ctrl-C,
+    SIGTERM, an error).
 
     Parameters
     ----------
     workers : int, optional
-        Processes of a local pool, in [1, :data:`MAX_WORKERS`] (forkserver where the
-        platform has it, spawn otherwise: a clean process whatever threads this one runs).
+        Processes of a local pool, in [1, :data:`MAX_WORKERS`], cut to the :func:`cores`
+        (:func:`check_workers`; forkserver where the platform has it, spawn otherwise).
     scheduler : str, optional
-        A Dask scheduler's address (:func:`check_scheduler`); needs ``dask[distributed]``
+        A Dask scheduler's address (:func:`studies.scheduler.check_scheduler`), refused
+        within ``timeout`` unless a Dask scheduler answers there
+        (:func:`studies.scheduler.connected`); needs ``dask[distributed]``
         (``pip install 'racket-impact[scale]'``).
     timeout : float
-        How long to try to reach the scheduler [s].
+        The longest the check of ``scheduler`` takes [s].
+    flags : tuple of str
+        The names of ``workers`` and ``scheduler`` as the user typed them (``--workers``).
     """
     if workers is not None and scheduler is not None:
-        raise ValueError("give workers or a scheduler, not both")
+        raise ValueError(f"give {flags[0]} or {flags[1]}, not both")
     if workers is None and scheduler is None:
         yield None
         return
     if workers is not None:
-        import multiprocessing
         from concurrent.futures import ProcessPoolExecutor
 
-        workers = check_workers(workers)
-        methods = multiprocessing.get_all_start_methods()
-        context = multiprocessing.get_context("forkserver" if "forkserver" in methods else "spawn")
-        if context.get_start_method() == "forkserver":
-            context.set_forkserver_preload(["racket.solver", "studies.tables"])
-        pool = ProcessPoolExecutor(workers, mp_context=context, initializer=quiet_worker)
+        workers = check_workers(workers, flags[0])
+        pool = ProcessPoolExecutor(
+            workers, _pool_context(), initializer=quiet_worker, initargs=(os.getpid(),)
+        )
         try:
             yield pool
+        except BaseException:
+            _kill(pool)
+            raise
         finally:
             pool.shutdown(wait=True, cancel_futures=True)
         return
-    address = check_scheduler(scheduler)
-    try:
-        from distributed import Client
-    except ImportError:
-        raise ValueError(
-            "a Dask scheduler needs dask.distributed: pip install 'racket-impact[scale]'"
-        ) from None
-    try:
-        client = Client(address, timeout=timeout, set_as_default=False)
-    except (OSError, TimeoutError) as err:
-        raise ValueError(
-            f"no Dask scheduler answers at {address} within {timeout:g} s ({err})"
-        ) from None
+    client = connected(check_scheduler(scheduler, flags[1]), flags[1], timeout)
     try:
         yield client.get_executor(pure=False)
     finally:

@@ -35,10 +35,12 @@ import numpy as np
 import pandas as pd
 
 from ball import Ball, LinearHysteresis, SineLaw, StiffeningHysteresis, serve_speed
-from common.checks import SPEED_RANGE, in_range, positive, shown
+from common.checks import SPEED_RANGE, finite, finite_array, in_range, positive, shown
 from common.checks import speed as check_speed
+from common.typechecks import flag
 from common.units import MPH
 from racket import Racket, Swing, impact
+from studies.arguments import ball_argument, racket_argument
 
 
 def zero_cor_ball(ball: Ball, force: float) -> Ball:
@@ -59,9 +61,9 @@ def zero_cor_ball(ball: Ball, force: float) -> Ball:
     force : float
         Peak force [N] of the real ball's impact, > 0.
     """
-    if isinstance(ball.law, SineLaw):
-        return ball
     force = positive("force", force, "N")
+    if isinstance(ball_argument(ball).law, SineLaw):
+        return ball
     return replace(ball, law=SineLaw(k0=force / float(ball.law.compression(force, force))))
 
 
@@ -143,7 +145,11 @@ def serve_table(
         those of :func:`serve`, plus ``reduction_eq22_percent`` and
         ``reduction_simulated_percent`` with ``zero_cor`` (0 for the normal ball).
     """
-    positions = np.atleast_1d(racket.strings.center if position is None else position)
+    racket, ball = racket_argument(racket), ball_argument(ball)
+    zero_cor = flag("zero_cor", zero_cor)
+    racket_speed = check_speed("racket_speed", racket_speed)
+    where = racket.strings.center if position is None else position
+    positions = np.atleast_1d(finite_array("position", where, "m from the tip"))
     if positions.size == 0 or positions.ndim != 1:
         raise ValueError(
             f"position must be one impact point or a list of them [m from the tip], got "
@@ -196,8 +202,11 @@ def head_speed_for(
     """
     from scipy.optimize import brentq
 
+    racket, ball = racket_argument(racket), ball_argument(ball)
     target = check_speed("target", target)
-    position = racket.strings.center if position is None else float(position)
+    if position is None:
+        position = racket.strings.center
+    position = float(racket.check_positions(finite("position", position, "m from the tip"))[0])
     heads, reach = serve_reach(racket, ball, position, pivot_from_tip)
     if not reach[0] < target < reach[1]:
         raise ValueError(
@@ -270,6 +279,10 @@ def serve_what_if(
         One row per case: ``varied`` ("strings" or "ball"), ``value``,
         then the zero-COR row of :func:`serve_table` (serve speeds and reductions).
     """
+    racket, ball = racket_argument(racket), ball_argument(ball)
+    if position is not None:
+        position = finite("position", position, "m from the tip")
+    racket_speed = check_speed("racket_speed", racket_speed)
     if not isinstance(ball.law, (LinearHysteresis, StiffeningHysteresis)):
         raise ValueError(
             "ball must have a LinearHysteresis or StiffeningHysteresis law (a stiffness k in "
@@ -284,6 +297,9 @@ def serve_what_if(
         for k_s in np.atleast_1d(string_stiffness)
     ]
     ball_stiffness = np.geomspace(2e4, 1e5, 5) if ball_stiffness is None else ball_stiffness
+    ball_stiffness = [
+        positive("ball_stiffness", k_b, "N/m") for k_b in np.atleast_1d(ball_stiffness)
+    ]
     rows = []
     for k_s in string_stiffness:
         variant = replace(racket, strings=replace(racket.strings, stiffness=float(k_s)))

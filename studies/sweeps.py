@@ -19,14 +19,16 @@ import numpy as np
 
 from ball import Ball
 from ball.catalog import TWU_SPEED
-from common.checks import in_range
+from common.checks import finite_array, in_range, whole
 from common.checks import speed as check_speed
-from racket import Racket, Swing
+from common.typechecks import choice, flag, instance
+from racket import SUPPORTS, Racket, Swing
 from racket.solver import F1_MIN
 from racket.specs.sheet import SPEC_RANGES
 from racket.specs.strings import with_tension
 from racket.swing import check_swung_support
 from racket.swing import equal_effort as same_effort
+from studies.arguments import ball_argument, racket_argument, swing_argument
 from studies.scale import impacts_of, run_calls
 from studies.tables import impact_columns
 
@@ -132,19 +134,20 @@ def _variant(racket: Racket, string_stiffness=None, tension=None, f1=None, suppo
 
 def _as_list(name, value):
     if isinstance(value, Mapping):
-        return list(value.items())
-    if isinstance(value, (str, Ball)) or np.ndim(value) == 0:
+        values = list(value.items())
+    elif isinstance(value, (str, Ball)) or np.ndim(value) == 0:
         return [value]
-    values = list(value)
+    else:
+        values = list(value)
     if not values:
         raise ValueError(f"{name} must not be empty")
     return values
 
 
 def _ball_label(item) -> tuple[str, Ball]:
-    if isinstance(item, tuple):
-        return item
-    return repr(item.law), item
+    if isinstance(item, tuple) and len(item) == 2:
+        return item[0], ball_argument(item[1])
+    return repr(ball_argument(item).law), item
 
 
 def sweep(
@@ -211,8 +214,11 @@ def sweep(
     """
     import pandas as pd
 
+    racket, swing = racket_argument(racket), swing_argument(swing)
     if positions is None:
         positions = np.linspace(*racket.strings.extent, 101)
+    elif finite_array("positions", positions, "m from the tip").size == 0:
+        raise ValueError("positions must give at least one impact point, got none")
     grid = {
         "speed": _as_list("speed", speed),
         "string_stiffness": _as_list("string_stiffness", string_stiffness),
@@ -230,11 +236,11 @@ def sweep(
     check_impacts(int(np.prod(list(sizes.values()))), " x ".join(sizes))
     for sp in grid["speed"]:
         check_speed("speed", sp, allow_zero=swing is not None)
-    if swing is not None and not isinstance(swing, Swing):
-        raise ValueError(f"swing must be a Swing, got {swing!r}")
     if swing is not None:
         swing.check_points(racket, positions)
     for sup in grid["support"]:
+        if sup is not None:
+            choice("support", sup, SUPPORTS)
         if swing is not None:
             check_swung_support(racket.support if sup is None else sup)
     for freq in grid["f1"]:
@@ -343,15 +349,19 @@ def compare(
     """
     import pandas as pd
 
-    if equal_effort and swing is None:
+    instance("rackets", rackets, Mapping, "a dict of label -> racket.Racket")
+    if not rackets:
+        raise ValueError("rackets must name one racket at least, got none")
+    for label, racket in rackets.items():
+        racket_argument(racket, f"rackets[{label!r}]")
+    ball, swing = ball_argument(ball), swing_argument(swing)
+    if flag("equal_effort", equal_effort) and swing is None:
         raise ValueError("equal_effort needs a swing (the first racket's)")
     if tension is not None:
         tension = in_range("tension", tension, *TENSION_RANGE, "N")
         rackets = {label: with_tension(r, tension) for label, r in rackets.items()}
-    points = in_range("points", points, 2, 100_000)
-    if points != int(points):
-        raise ValueError(f"points must be a whole number, got {points:g}")
-    check_impacts(int(points) * len(rackets), "points x rackets")
+    points = whole("points", points, 2, 100_000)
+    check_impacts(points * len(rackets), "points x rackets")
     check_speed("speed", speed, allow_zero=swing is not None)
     reference = next(iter(rackets.values())).beam.swingweight
     swings, calls = [], []

@@ -8,8 +8,11 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
+from common.checks import speed as check_speed
+from common.checks import whole
 from racket import TENNIS_BALL_RADIUS, Racket, impact
-from studies.landmarks import hand_pivot, percussion_centre, whole
+from studies.arguments import ball_argument, racket_argument, swing_argument
+from studies.landmarks import hand_pivot, percussion_centre
 from studies.maps import SWEET_FRACTION, face_map
 from studies.sweeps import BALL_SPEED
 
@@ -61,7 +64,8 @@ def sweet_spots(
         player's words, with its value), ``from_tip_cm``, ``value``,
         ``unit``, ``meaning``.
     """
-    speed = BALL_SPEED if speed is None else speed
+    racket, ball, swing = racket_argument(racket), ball_argument(ball), swing_argument(swing)
+    speed = BALL_SPEED if speed is None else check_speed("speed", speed, allow_zero=True)
     pivot = hand_pivot(racket, hand_from_tip)
     points = whole("points", points, 11, 10001)
     beam = racket.beam

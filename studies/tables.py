@@ -7,7 +7,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ball import CollisionHistory
-from common.checks import instance
+from common.typechecks import instance
 from common.units import MPH
 from racket import Impact
 

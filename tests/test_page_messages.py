@@ -108,7 +108,7 @@ def test_every_lead_position_offered_is_accepted():
         ('{"method": "init", "data": {"a:b:c": 1}}', "more than one ':'"),
         ('{"method": "init", "data": {"a:shiny.date": {}}}', "type the page's controls"),
         ('{"method": "init", "data": {".clientdata_url_search": {}}}', "must be a string"),
-        ('{"method": "init", "data": {".clientdata_pixelratio": 1e308}}', "(0, 4]"),
+        ('{"method": "init", "data": {".clientdata_pixelratio": 1e308}}', "(0, 8]"),
         ('{"method": "init", "data": {".clientdata_output_face_a_width": []}}', "px in"),
         ('{"method": "init", "data": {".clientdata_output_cards_hidden": 3}}', "true or false"),
         ("x" * (MESSAGE_MAX_CHARS + 1), "characters"),

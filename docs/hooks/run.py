@@ -35,10 +35,10 @@ the prose (not in code, a marker, a link's address, a DOI or an HTML comment) wi
 three significant digits (:func:`counted`: a year, 1900-2099, aside; a section, equation,
 figure or table number is no prose, :func:`prose`) is a marker, or a number the page's blocks
 typed (a command's flag, a Python argument, a value of an example file they read: an input),
-or it fails the build: a hand-typed result goes stale as soon as the code changes, whether or not a block prints it.
-Shorter numbers (0.27, 10, 120) are too common in ranges, exponents and round assumptions to
-tell a result from them; a page writes its results with markers all the same.  The README,
-which GitHub shows with no build to fill a marker, is held to the older rule
+or it fails the build: a hand-typed result goes stale as soon as the code changes, whether or
+not a block prints it.  Shorter numbers (0.27, 10, 120) are too common in ranges, exponents and
+round assumptions to tell a result from them; a page writes its results with markers all the
+same.  The README, which GitHub shows with no build to fill a marker, is held to the older rule
 (:func:`copied_numbers`): its prose copies no number its console blocks print.
 
 The blocks run in ``on_files`` (the figures must be files of the site before the pages are
@@ -81,6 +81,7 @@ SITE_VARIABLE = "RACKET_IMPACT_SITE"  # the built site the tests read (built_sit
 MARKER = re.compile(r"\{\{\s*(?P<kind>[a-z]+):\s*(?P<what>.*?)\s*\}\}")
 NUMBER = re.compile(r"(?<![\w.])\d+(?:,\d{3})*(?:\.\d+)?(?:[eE][-+]?\d+)?(?![\w]|\.\d)")
 GIVEN = re.compile(f"-?{NUMBER.pattern}(?:-{NUMBER.pattern})?")  # {{ given: 135-147 }}
+COMMENT = re.compile(r"(?:^|(?<=\s))#.*$", re.M)  # a Python or TOML comment
 FENCE = re.compile(r"^[ \t]*(?P<fence>`{3,}|~{3,}).*?^[ \t]*(?P=fence)`*~*[ \t]*$", re.M | re.S)
 NOT_PROSE = re.compile(
     r"<!--.*?-->"  # an HTML comment
@@ -329,7 +330,8 @@ def counted(number: str) -> bool:
 
 def _around(words: str, match: re.Match) -> str:
     """A number of the prose with the prose around it, for an error message."""
-    return f"{match[0]}: ... {' '.join(words[max(0, match.start() - 50) : match.end() + 20].split())} ..."
+    around = words[max(0, match.start() - 50) : match.end() + 20]
+    return f"{match[0]}: ... {' '.join(around.split())} ..."
 
 
 def _numbers(text: str) -> set[str]:
@@ -382,9 +384,11 @@ def check(text: str, page: str, run: Run) -> None:
 
 
 def _typed(body: str) -> str:
-    """What a block typed: its text and that of the example files it names."""
+    """What a block typed: its text and that of the example files it names, without their
+    comments (a number in a comment is prose, not an input).
+    """
     files = [ROOT / name for name in re.findall(r"examples/[\w.-]+", body)]
-    return "\n".join([body, *(f.read_text() for f in files if f.is_file())])
+    return COMMENT.sub("", "\n".join([body, *(f.read_text() for f in files if f.is_file())]))
 
 
 def run_page(text: str, page: str) -> Run:

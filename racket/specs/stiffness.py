@@ -54,7 +54,8 @@ from __future__ import annotations
 import numpy as np
 
 from beam import Beam, fem
-from common.checks import in_range, instance
+from common.checks import in_range
+from common.typechecks import instance
 
 POISSON = 0.3
 """Poisson's ratio of the tube rule GJ = EI / (1 + nu) (assumption: an isotropic wall)."""

@@ -6,7 +6,8 @@ from dataclasses import replace
 
 import numpy as np
 
-from common.checks import in_range, instance, positive
+from common.checks import in_range, positive
+from common.typechecks import instance
 from common.units import IN2, LB
 from racket.membrane import CONTACT_RADIUS, MIN_RADIUS, bed_radius
 from racket.racket import Racket

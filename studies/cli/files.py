@@ -38,11 +38,6 @@ def check_outputs(tables=(), plots=(), directories=()) -> None:
                 raise ValueError(
                     f"{flag} must be a {what} file ending in {', '.join(kinds)}, got {path!r}"
                 )
-            if what == "table" and Path(path).name.lower().endswith(SIDECAR_SUFFIX):
-                raise ValueError(
-                    f"{flag} {str(path)!r} is named as a table's sidecar (*{SIDECAR_SUFFIX}, "
-                    "written beside each table, read by rerun): name the table otherwise"
-                )
             if Path(path).suffix.lower() == ".parquet":
                 _check_parquet(flag)
             _check_directory(flag, Path(path).parent, path)
@@ -55,6 +50,11 @@ def check_outputs(tables=(), plots=(), directories=()) -> None:
                 if key in seen:
                     raise ValueError(f"{name} and {seen[key]} name the same file {str(file)!r}")
                 seen[key] = name
+            if what == "table" and Path(path).name.lower().endswith(SIDECAR_SUFFIX):
+                raise ValueError(
+                    f"{flag} {str(path)!r} is named as a table's sidecar (*{SIDECAR_SUFFIX}, "
+                    "written beside each table, read by rerun): name the table otherwise"
+                )
     for flag, path in directories:
         if not str(path).strip():
             raise ValueError(f"{flag} must name a directory, got {str(path)!r}")

@@ -27,6 +27,7 @@ from common.units import SPEED_SUFFIXES, SPEED_UNITS
 from racket.specs.sheet import SPEC_RANGES
 from racket.swing import WRIST_BEYOND_BUTT
 from studies.config import BALLS
+from studies.scheduler import SCHEDULER_TIMEOUT
 
 if TYPE_CHECKING:
     import pandas as pd
@@ -355,25 +356,28 @@ def _scale_options(p):
         action=_Once,
         type=int,
         metavar="N",
-        help="run the impacts on N local processes (bit-identical results)",
+        help="run the impacts on N local processes, at most this machine's cores "
+        "(bit-identical results)",
     )
     group.add_argument(
         "--scheduler",
         action=_Once,
         metavar="ADDRESS",
         help="run the impacts on the Dask cluster at [tcp://]HOST:PORT (needs "
-        "racket-impact[scale]; bit-identical results)",
+        "racket-impact[scale]; bit-identical results), refused unless a Dask scheduler "
+        f"answers there within {SCHEDULER_TIMEOUT:g} s",
     )
 
 
 def _scale(args):
-    """The ``--workers`` or ``--scheduler`` option checked (before any work), as a context
-    that yields the executor (None: this process), :func:`studies.scale.executor_for`.
+    """The ``--workers`` or ``--scheduler`` option checked (before any work: the number of
+    workers cut to the cores, a Dask scheduler answering at the address), as a context that yields
+    the executor (None: this process), :func:`studies.scale.executor_for`.
     """
-    from studies.scale import check_scheduler, check_workers, executor_for
+    from studies.scale import check_workers, executor_for
+    from studies.scheduler import check_answers, check_scheduler
 
-    if args.workers is not None:
-        check_workers(args.workers, "--workers")
+    workers = None if args.workers is None else check_workers(args.workers, "--workers")
     if args.scheduler is not None:
-        check_scheduler(args.scheduler, "--scheduler")
-    return executor_for(args.workers, args.scheduler)
+        check_answers(check_scheduler(args.scheduler, "--scheduler"), "--scheduler")
+    return executor_for(workers, args.scheduler, flags=("--workers", "--scheduler"))

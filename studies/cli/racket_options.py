@@ -10,6 +10,7 @@ from dataclasses import replace
 
 from common.checks import KN_AS_N, in_range, shown
 from racket import DEFAULT_RACKET, GRIPS, SUPPORTS
+from racket.racket import ADDED_MASS_MAX
 from studies.cli.options import _Once, _tension, refuse_unused, speed_unit
 from studies.conditions import conditions_line, racket_details
 from studies.config import RACKETS, load_racket
@@ -17,9 +18,9 @@ from studies.sweeps import STRING_STIFFNESS_RANGE
 
 _LEAD = re.compile(r"^\s*(\d+(?:\.\d*)?|\.\d+)\s*(?:g)?\s*@\s*(.+?)\s*$")
 
-LEAD_GRAMS = (0.1, 200.0)
-"""Lead tape per side [g]: what a stringer adds (a strip is about 0.5 g/cm; an
-assumption, generous on purpose; the TOML's ``lead_tape`` takes up to 200 g too)."""
+LEAD_GRAMS = (0.1, 1e3 * ADDED_MASS_MAX)
+"""Lead tape per side [g]: from a tenth of a gram (an assumption: less is no tape) to
+:data:`racket.racket.ADDED_MASS_MAX`, as the TOML's ``lead_tape``, the page and the API."""
 
 
 def add_racket_options(

@@ -6,8 +6,12 @@ from common.units import SPEED_UNITS
 
 
 def speed_scale(unit: str) -> float:
-    """The size [m/s] of the speed unit ``unit``, one of :data:`common.units.SPEED_UNITS`
-    (divide a speed in m/s by it to show it in ``unit``).
+    """The size [m/s] of a speed unit (divide a speed in m/s by it to show it in that unit).
+
+    Parameters
+    ----------
+    unit : str
+        One of :data:`common.units.SPEED_UNITS`: "m/s", "mph" or "km/h".
     """
     if unit not in SPEED_UNITS:
         raise ValueError(f"unit must be one of {', '.join(SPEED_UNITS)}, got {unit!r}")
