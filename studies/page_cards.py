@@ -151,12 +151,19 @@ def headline_cards(r, swing_mph: float):
     feel = _metric(
         "card_feel",
         "Feel at the hand",
-        "the shock and the vibration at the hand, centre hit (as `racket-impact feel`)",
-        ["shock [×g]", "vibration [×g]", "vibration [Hz]"],
-        pick("feel_shock_g", "feel_vibration_g", "feel_hz"),
-        [0, 1, 0],
+        "accelerations at the hand [×g]: the shock, and the ringing after the ball has left; "
+        "a centre hit, as the feel command says",
+        ["shock", "ring"],
+        pick("feel_shock_g", "feel_vibration_g"),
+        [1, 0],
         small="; ".join(
-            [*(f"{side}: {one.summary['feel_mode']}" for side, one in built.items()), said["feel"]]
+            [
+                *(
+                    f"{side}: rings at {one.summary['feel_hz']:.0f} Hz, {one.summary['feel_mode']}"
+                    for side, one in built.items()
+                ),
+                said["feel"],
+            ]
         ),
     )
     taped = " with lead tape" if "effort_head_taped_mph" in (r.a.summary if r.a else {}) else ""

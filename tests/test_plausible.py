@@ -83,7 +83,8 @@ def test_km_h_in_km_h_out(tmp_path, capsys):
     out_file = tmp_path / "b.csv"
     status, out, err = _run(["ball", "--speeds-kmh", "25.42", "--out", str(out_file)], capsys)
     assert status == 0, err
-    assert "[km/h]" in "".join(out.splitlines()[:3]) and "25.42" in out, out  # (its header)
+    assert out.startswith("ball itf-type-2 head on into a rigid wall at 25.42 km/h"), out
+    assert "[km/h]" in "".join(out.splitlines()[1:4]), out  # (its header)
     table = pd.read_csv(out_file)
     assert table["speed_kmh"].iloc[0] == pytest.approx(25.42)
     assert table["speed_m_s"].iloc[0] == pytest.approx(25.42 / 3.6)

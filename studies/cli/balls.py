@@ -10,7 +10,7 @@ from ball import BALL_PRESETS, WALL, collide
 from ball.collision import largest_closing_speed, too_fast_to_store
 from common.checks import CM_AS_M, SPEED_RANGE, in_range, shown
 from common.units import SPEED_SUFFIXES, SPEED_UNITS
-from studies.cli.files import check_outputs, save_plot, write_table
+from studies.cli.files import check_outputs, save_plot, say_conditions, write_table
 from studies.cli.options import (
     _ball_arg,
     _Named,
@@ -22,6 +22,7 @@ from studies.cli.options import (
     speed_unit,
 )
 from studies.cli.racket_options import add_racket_options, racket_from
+from studies.conditions import speed_text
 from studies.config import load_ball
 from studies.tables import history_table
 
@@ -91,6 +92,8 @@ def cmd_collide(args) -> int:
 
     names = {"a": args.a, "b": args.b} if args.a != args.b else {"a": "ball a", "b": "ball b"}
     size = SPEED_UNITS[unit]
+    target = "a rigid wall" if args.b == "wall" else f"ball {args.b} at {speed_text(v_b, unit)}"
+    conditions = say_conditions(f"ball {args.a} at {speed_text(v_a, unit)} head on into {target}")
     said = {
         "v_a_after_m_s": f"{names['a']}'s velocity after [{unit}]",
         "v_b_after_m_s": f"{names['b']}'s velocity after [{unit}]",
@@ -106,7 +109,8 @@ def cmd_collide(args) -> int:
     if args.plot:
         from studies.plots import plot_collision
 
-        save_plot(plot_collision(r, names=(names["a"], names["b"])), args.plot)
+        axes = plot_collision(r, names=(names["a"], names["b"]), unit=unit, conditions=conditions)
+        save_plot(axes, args.plot)
     return 0
 
 
@@ -177,8 +181,8 @@ def cmd_drop(args) -> int:
             else f"the string centre of {args.racket}, lying free"
         )
     result = drop(ball, height, onto)
-    print(f"ball {args.ball} dropped from {result.height:g} m onto {where}: it arrives at "
-          f"{result.speed:.3g} m/s")  # fmt: skip
+    conditions = say_conditions(f"ball {args.ball} dropped from {result.height:g} m onto {where}")
+    print(f"it arrives at {result.speed:.3g} m/s")
     print(f"bounces back at {result.rebound_speed:.3g} m/s, up to {result.bounce_height:.3g} m "
           f"({100 * result.bounce_height:.1f} cm)")  # fmt: skip
     ratio = result.rebound_ratio  # rebound / arrival speed
@@ -196,7 +200,7 @@ def cmd_drop(args) -> int:
     if args.plot:
         from studies.plots import plot_drop
 
-        save_plot(plot_drop(result), args.plot)
+        save_plot(plot_drop(result, conditions=conditions), args.plot)
     return 0
 
 
@@ -246,6 +250,9 @@ def cmd_ball(args) -> int:
             raise too_fast_to_store(flag, value, fastest, unit, size)
     table = rigid_bounce_table(ball, speeds)
     unit = speed_unit(args, "speeds")
+    conditions = say_conditions(
+        f"ball {args.ball} head on into a rigid wall at {speed_text(speeds, unit)}"
+    )
     if unit != "m/s":  # mph or km/h in, mph or km/h out
         table.insert(1, f"speed_{SPEED_SUFFIXES[unit]}", table["speed_m_s"] / SPEED_UNITS[unit])
     _print_table(table.drop(columns="speed_m_s") if unit != "m/s" else table)
@@ -256,7 +263,10 @@ def cmd_ball(args) -> int:
         from studies.plots import plot_rigid_bounce
 
         preset = BALL_PRESETS.get(args.ball)
-        axes = plot_rigid_bounce(table, radius=ball.radius, bands=preset and preset.bands)
+        axes = plot_rigid_bounce(
+            table, radius=ball.radius, bands=preset and preset.bands, unit=unit,
+            conditions=conditions,
+        )  # fmt: skip
         save_plot(axes, args.plot)
     return 0
 
