@@ -7,6 +7,7 @@ from __future__ import annotations
 import numpy as np
 
 from ball import BALL_PRESETS, WALL, collide
+from ball.catalog import ITF_DROP
 from ball.collision import largest_closing_speed, too_fast_to_store
 from common.checks import CM_AS_M, SPEED_RANGE, in_range, shown
 from common.units import SPEED_SUFFIXES, SPEED_UNITS
@@ -142,8 +143,13 @@ def add_drop(sub) -> None:
     """The ``drop`` subcommand, on the subparsers ``sub``."""
     p = sub.add_parser("drop", help="a ball dropped on the floor, on strings or on a racket")
     _ball_arg(p, "ball", nargs="?", action=_Named)
-    p.add_argument("--height-m", type=float, default=2.54, metavar="M",
-                   help="drop height [m] (default 2.54, the ITF rebound test)")  # fmt: skip
+    p.add_argument(
+        "--height-m",
+        type=float,
+        default=ITF_DROP,
+        metavar="M",
+        help=f"drop height [m] (default {ITF_DROP:g}, the ITF's rebound test)",
+    )
     p.add_argument("--onto", choices=["floor", "strings", "racket"], default="floor",
                    help="the floor (default), the strings of --racket with its head clamped, "
                    "or --racket lying free (at its string centre)")  # fmt: skip

@@ -158,7 +158,9 @@ def say_conditions(line: str) -> str:
     """
     if _RUN:
         _RUN["conditions"] = line
-    print(textwrap.fill(line, 100, subsequent_indent="  ", break_on_hyphens=False))
+    from studies.cli.show import WIDTH
+
+    print(textwrap.fill(line, WIDTH, subsequent_indent="  ", break_on_hyphens=False))
     return line
 
 

@@ -207,6 +207,26 @@ def speed_unit(args, *names: str) -> str:
     return "m/s"
 
 
+def in_speed_unit(table, unit: str):
+    """``table`` with each speed column [m/s] (``*_m_s``) also in ``unit``, the unit the user
+    typed (``*_mph`` or ``*_kmh`` beside it, unless there already); as it is for m/s.
+
+    Parameters
+    ----------
+    table : DataFrame
+        A table whose speed columns are in m/s.
+    unit : str
+        "m/s", "mph" or "km/h".
+    """
+    if unit == "m/s":
+        return table
+    suffix, size = SPEED_SUFFIXES[unit], SPEED_UNITS[unit]
+    return table.assign(**{
+        c.replace("_m_s", f"_{suffix}"): table[c] / size for c in table.columns
+        if c.endswith("_m_s") and c.replace("_m_s", f"_{suffix}") not in table
+    })  # fmt: skip
+
+
 def _count(flag: str, value: int, low: int, high: int) -> int:
     """A whole-number option in [low, high]."""
     return int(in_range(flag, value, low, high))

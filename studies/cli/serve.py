@@ -15,6 +15,8 @@ from studies.cli.options import (
     _speed,
     _speed_option,
     _typed,
+    given,
+    in_speed_unit,
     speed_unit,
 )
 from studies.cli.racket_options import add_racket_options, racket_conditions, racket_from
@@ -73,8 +75,8 @@ def cmd_serve(args) -> int:
     pivot = _pivot(args)
     unit = speed_unit(args, "racket_speed", "target_ball_speed")
     size = SPEED_UNITS[unit]
-    target_given = _given(args, "target_ball_speed")
-    if target_given and (getattr(args, "_seen_racket_speed", False) or _given_in_units(args)):
+    target_given = given(args, *_UNITS_OF["target_ball_speed"])
+    if target_given and given(args, *_UNITS_OF["racket_speed"]):
         raise ValueError(
             "give --racket-speed[-mph|-kmh] or --target-ball-speed[-mph|-kmh], not both (the "
             "target solves for the racket speed)"
@@ -106,7 +108,7 @@ def cmd_serve(args) -> int:
     table = pd.concat(
         [serve_table(racket, ball, positions, h, pivot, zero_cor=args.what_if) for h in heads]
     )
-    table = _named(_in_unit(table, unit), args.ball)
+    table = _named(in_speed_unit(table, unit), args.ball)
     swing = Swing(heads[0], pivot)
     said = f"swung at {speed_text(heads, unit)} head speed {swing.pivot_words()}"
     conditions = say_conditions(racket_conditions(args, racket, speed=None) + f" at rest, {said}")
@@ -119,7 +121,7 @@ def cmd_serve(args) -> int:
     _print_table(table[columns])
     if args.what_if:
         what_if = serve_what_if(racket, ball, positions[0], heads[0], pivot_from_tip=pivot)
-        what_if = _in_unit(what_if, unit)
+        what_if = in_speed_unit(what_if, unit)
         print()
         view = what_if.rename(columns={"value": "stiffness_N_m"})
         _print_table(
@@ -136,25 +138,9 @@ def cmd_serve(args) -> int:
     return 0
 
 
-def _given(args, name: str) -> bool:
-    """Whether the speed option ``--NAME`` was given in any unit."""
-    return any(getattr(args, f"{name}{u}", None) is not None for u in ("", "_mph", "_kmh"))
-
-
-def _given_in_units(args) -> bool:
-    """Whether ``--racket-speed-mph`` or ``--racket-speed-kmh`` was given."""
-    return any(getattr(args, f"racket_speed{u}", None) is not None for u in ("_mph", "_kmh"))
-
-
-def _in_unit(table, unit: str):
-    """``table`` with its speed columns [m/s] also in ``unit`` (mph or km/h, as typed)."""
-    if unit == "m/s":
-        return table
-    suffix, size = SPEED_SUFFIXES[unit], SPEED_UNITS[unit]
-    return table.assign(**{
-        c.replace("_m_s", f"_{suffix}"): table[c] / size for c in table.columns
-        if c.endswith("_m_s") and c.replace("_m_s", f"_{suffix}") not in table
-    })  # fmt: skip
+_UNITS_OF = {name: (name, f"{name}_mph", f"{name}_kmh") for name in
+             ("racket_speed", "target_ball_speed")}  # fmt: skip
+"""A speed option's ``dest`` in each unit."""
 
 
 def _named(table, ball_name: str):

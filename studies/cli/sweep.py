@@ -26,6 +26,7 @@ from studies.cli.options import (
     _swing,
     _swing_options,
     _typed,
+    in_speed_unit,
     speed_unit,
 )
 from studies.cli.racket_options import (
@@ -235,22 +236,15 @@ def _ends(args, racket) -> tuple[list[float], str]:
 
 
 def _in_units(table, unit: str, lb: bool):
-    """``table`` with its speeds also in ``unit`` (as the user typed them: mph or km/h) and
-    its tensions also in lb (``lb``): columns ``*_mph``/``*_kmh`` and ``tension_lb`` beside
-    the SI ones.
+    """``table`` with its speeds also in ``unit`` (as the user typed them:
+    :func:`studies.cli.options.in_speed_unit`) and its tensions also in lb (``lb``).
     """
-    from common.units import LB, SPEED_SUFFIXES, SPEED_UNITS
+    from common.units import LB
 
-    extra = {}
-    if unit != "m/s":
-        for name in ("speed_m_s", "ball_rebound_m_s", "swing_speed_m_s", "v_cm_m_s"):
-            if name in table:
-                extra[name.replace("_m_s", f"_{SPEED_SUFFIXES[unit]}")] = (
-                    table[name] / SPEED_UNITS[unit]
-                )
-    if lb and "tension_N" in table:
-        extra["tension_lb"] = table["tension_N"] / LB
-    return table.assign(**extra)
+    table = in_speed_unit(table, unit)
+    return (
+        table.assign(tension_lb=table["tension_N"] / LB) if lb and "tension_N" in table else table
+    )
 
 
 def _say_recontacts(table) -> None:
