@@ -245,3 +245,30 @@ def test_every_plot_labels_its_axes_with_units_and_keeps_its_legends_off_the_dat
     import matplotlib.pyplot as plt
 
     plt.close(fig)
+
+
+@pytest.mark.parametrize("depth", range(0, 40, 3))
+def test_a_wrapped_conditions_line_never_starts_a_line_with_a_number(depth, tmp_path, capsys):
+    """Wherever the racket's file lies, its path's length moves the conditions line's wrap:
+    no wrapped line may start with a number (a reader takes it for the table's first row)."""
+    folder = tmp_path / ("d" * depth) / "racket"
+    folder.mkdir(parents=True)
+    toml = folder / "profile_racket.toml"
+    toml.write_text((EXAMPLES / "profile_racket.toml").read_text())
+    assert main(["sweep", "--racket", str(toml), "--points", "3"]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    header_end = next(i for i, line in enumerate(lines) if line.split()[:1] == ["from"])
+    assert header_end >= 1 and "16.5 m/s" in " ".join(lines[:header_end])
+    assert not any(re.match(r"^\s*-?\d", line) for line in lines[:header_end])
+
+
+def test_say_conditions_keeps_every_number_with_its_words_at_any_wrap(capsys):
+    from studies.cli.files import say_conditions
+
+    for pad in range(120):
+        say_conditions(f"racket {'x' * pad}.toml (free, strings 35 kN/m), ball itf-type-2 "
+                       "at 16.5 m/s, -3.2 cm from the tip, the racket at rest")  # fmt: skip
+        lines = capsys.readouterr().out.splitlines()
+        assert not any(re.match(r"^\s*-?\d", line) for line in lines), lines
+        assert " ".join(line.strip() for line in lines).endswith("at 16.5 m/s, -3.2 cm from "
+                                                                 "the tip, the racket at rest")

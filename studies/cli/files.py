@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import contextlib
 import os
+import re
 import textwrap
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -152,6 +153,9 @@ def _sidecar(path) -> None:
         write_sidecar(path, _RUN["description"])
 
 
+_NBSP = "\u00a0"  # not whitespace to textwrap
+
+
 def say_conditions(line: str) -> str:
     """Print a run's conditions (:mod:`studies.conditions`), the header line of its printed
     tables, record them for its sidecars and return them (the plots' captions).
@@ -160,7 +164,11 @@ def say_conditions(line: str) -> str:
         _RUN["conditions"] = line
     from studies.cli.show import WIDTH
 
-    print(textwrap.fill(line, WIDTH, subsequent_indent="  ", break_on_hyphens=False))
+    # a number stays with the words on both sides ("at 16.5 m/s"): no wrapped line starts
+    # with a number, where a reader (or a parser) would take it for a table's first row
+    glued = re.sub(r" (?=-?\d)|(?<=\d) ", _NBSP, line)
+    wrapped = textwrap.fill(glued, WIDTH, subsequent_indent="  ", break_on_hyphens=False)
+    print(wrapped.replace(_NBSP, " "))
     return line
 
 
