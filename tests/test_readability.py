@@ -270,5 +270,6 @@ def test_say_conditions_keeps_every_number_with_its_words_at_any_wrap(capsys):
                        "at 16.5 m/s, -3.2 cm from the tip, the racket at rest")  # fmt: skip
         lines = capsys.readouterr().out.splitlines()
         assert not any(re.match(r"^\s*-?\d", line) for line in lines), lines
-        assert " ".join(line.strip() for line in lines).endswith("at 16.5 m/s, -3.2 cm from "
-                                                                 "the tip, the racket at rest")
+        assert " ".join(line.strip() for line in lines).endswith(
+            "at 16.5 m/s, -3.2 cm from the tip, the racket at rest"
+        )
