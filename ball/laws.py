@@ -34,7 +34,8 @@ from common.checks import finite, in_range, positive, shown
 
 LINEAR, POWER, SINE, GROWING, STIFFENING = 0, 1, 2, 3, 4
 """Codes of the law families in the racket solver's compiled kernel
-(:mod:`racket.kernel`), each law's ``kernel_law`` giving its code and (up to four) numbers."""
+(:mod:`racket.solver.kernel`),
+each law's ``kernel_law`` giving its code and (up to four) numbers."""
 
 COR_FLOOR = 0.1
 """Lowest rigid-surface COR a :class:`GrowingHysteresis` ball reaches however hard it is

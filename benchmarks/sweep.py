@@ -7,7 +7,7 @@ to the targets, not the absolute times; the load average is printed before and a
 
 * the lockstep kernel against the scalar kernel on the same inputs, batch by batch size
   (interleaved runs, medians): where the lockstep kernel starts to pay is
-  :data:`racket.dispatch.LOCKSTEP_MIN`;
+  :data:`racket.solver.dispatch.LOCKSTEP_MIN`;
 
 * a 200-point sweep of the paper racket (median of warm calls), and the straightforward
   implementation side by side: for each impact point, integrate the ball and every mode
@@ -39,9 +39,9 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from ball import Ball, SineLaw
-from racket import CATALOG, dispatch, impact, paper_ball, paper_racket
-from racket.solver import DEFAULT_STEPS_PER_CONTACT
-from racket.stepper import Stepper
+from racket import CATALOG, impact, paper_ball, paper_racket
+from racket.solver import DEFAULT_STEPS_PER_CONTACT, dispatch
+from racket.solver.stepper import Stepper
 from studies.maps import face_map
 from studies.sweeps import sweep
 
@@ -165,7 +165,8 @@ def kernel_table(racket, ball) -> None:
             f"{count:>8} {1e3 * scalar:>10.3f} {1e3 * lockstep:>12.3f} {scalar / lockstep:>8.2f}x"
         )
     print(
-        f"(lockstep from {dispatch.LOCKSTEP_MIN} impacts per thread: racket.dispatch.LOCKSTEP_MIN)"
+        f"(lockstep from {dispatch.LOCKSTEP_MIN} impacts per thread: "
+        "racket.solver.dispatch.LOCKSTEP_MIN)"
     )
 
 

@@ -3,7 +3,7 @@ impact.
 
 :func:`hand_feel` takes the contact force of an impact (the solver's history) and drives the
 racket's linear dynamics with it (the same real 2x2 blocks, each stepped exactly for a force
-varying linearly over a step, :meth:`racket.system.BlockSystem.step`), on past the moment
+varying linearly over a step, :func:`racket.solver.steps.system_steps`), on past the moment
 the ball leaves, for ``duration``, and reads the handle at the middle of the hand.  Its
 motion is split by the blocks (:attr:`racket.system.BlockSystem.dc`) into the two things a
 player feels (R. Cross, "The sweet spots of a tennis racquet", Sports Engineering 1 (1998)
@@ -33,7 +33,7 @@ from common.checks import finite, in_range
 from common.checks import speed as check_speed
 from common.typechecks import instance
 from racket.racket import Racket
-from racket.solver import impact
+from racket.solver import impact, system_steps
 
 
 @dataclass(frozen=True)
@@ -180,7 +180,7 @@ def hand_feel(
     grip = racket.beam.length - 0.5 * racket.hand.grip_length
     _, phi_grip, _ = racket.point_dynamics(grip, None if y is None else np.zeros(1))
     n = system.count
-    trans, g0, g1 = system.step(dt)
+    trans, g0, g1 = system_steps(system, dt)
     unit = system.inputs(phi)[0]  # (nb, 2): a unit force at the impact point
     states = np.empty((steps, *unit.shape))
     s = np.zeros(unit.shape)

@@ -63,30 +63,12 @@ class BlockSystem:
     damping: np.ndarray
     rigid: tuple = (0, 1)
     hand_coordinate: int | None = None
-    _steps: dict = field(default_factory=dict, compare=False, repr=False)
+    step_memo: dict = field(default_factory=dict, compare=False, repr=False)
 
     @property
     def count(self) -> int:
         """Number of modal coordinates N."""
         return self.stiffness.shape[0]
-
-    def step(self, dt: float):
-        """Exact step of every block for an input varying linearly over ``dt``.
-
-        Returns T, G0, G1, each (nb, 2, 2): s1 = T s0 + G0 u0 + G1 u1 for the block input
-        u (a 2-vector) going linearly from u0 to u1.  The last few are kept (a linear ball
-        has the same step at every speed).
-
-        Parameters
-        ----------
-        dt : float
-            Time step [s].
-        """
-        if dt not in self._steps:
-            if len(self._steps) >= 8:
-                self._steps.pop(next(iter(self._steps)))
-            self._steps[dt] = block_steps(self.blocks, dt)
-        return self._steps[dt]
 
     def _blocks_of(self, rows: np.ndarray) -> np.ndarray:
         """(P, 2N) rows over the state s as (P, nb, 2), contiguous for the kernel."""
@@ -164,30 +146,6 @@ class BlockSystem:
         """
         z = s.reshape(s.shape[0], 2 * self.count) @ self.basis.T
         return z[:, : self.count], z[:, self.count :]
-
-
-def block_steps(blocks: np.ndarray, dt: float):
-    """T, G0, G1 (n, 2, 2) of :meth:`BlockSystem.step` for any 2x2 blocks (n, 2, 2).
-
-    From the exponential of the augmented system (state, input, input rate), compiled
-    (:func:`racket.expm.augmented_steps`): no BLAS call, so no BLAS worker thread
-    competes with the time-stepper's threads for the cores.
-
-    Parameters
-    ----------
-    blocks : ndarray (n, 2, 2)
-        The 2x2 blocks of s' = blocks s [1/s].
-    dt : float
-        Time step [s].
-    """
-    from racket.expm import augmented_steps  # numba loads on first use (import time)
-
-    blocks = np.ascontiguousarray(blocks, dtype=float).reshape(-1, 2, 2)
-    trans = np.empty_like(blocks)
-    g0 = np.empty_like(blocks)
-    g1 = np.empty_like(blocks)
-    augmented_steps(blocks, float(dt), trans, g0, g1)
-    return trans, g0, g1
 
 
 def free_system(modes: Modes) -> BlockSystem:

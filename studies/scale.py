@@ -13,7 +13,7 @@ process.  The pieces:
   has computed), so that no task computes them again (about 50 ms each);
 * a worker's kernel runs on one thread (:func:`one_kernel_thread`): the executor's
   processes share the cores, the kernel's threads would oversubscribe them; BLAS runs on one
-  thread in every task, here too (:func:`racket.dispatch.one_blas_thread`: a racket's caches
+  thread in every task, here too (:func:`racket.solver.dispatch.one_blas_thread`: a racket's caches
   computed on several BLAS threads differ in their last bits);
 * every task has its own key (a run's random token and the task's number), so that a Dask
   client's default ``pure=True`` never hands one task's result to another;
@@ -123,9 +123,9 @@ def impacts_of(racket, ball, position, speed, offset=None, swing=None) -> Impact
 def one_kernel_thread() -> None:
     """Run this process's kernel on one thread (for a worker: its executor's processes
     share the cores).  The kernel's threads are numba's ``NUMBA_NUM_THREADS``
-    (:mod:`racket.dispatch`): set in the environment for numba not yet imported, and in its
+    (:mod:`racket.solver.dispatch`): set in the environment for numba not yet imported, and in its
     configuration otherwise.  BLAS runs on one thread in every task, wherever it runs
-    (:func:`racket.dispatch.one_blas_thread`).
+    (:func:`racket.solver.dispatch.one_blas_thread`).
     """
     os.environ["NUMBA_NUM_THREADS"] = "1"
     if "numba" in sys.modules:
@@ -139,11 +139,12 @@ def _task(key, home, read, pieces) -> tuple[list, list]:
     warnings they raised, as (category, message).  ``key`` (the run's token and the task's
     number) makes each task's arguments unique; ``home`` is the submitting process.
     """
-    from racket import dispatch, impact
+    from racket import impact
+    from racket.solver import one_blas_thread
 
     if _here() != home:
         one_kernel_thread()
-    with dispatch.one_blas_thread(), warnings.catch_warnings(record=True) as caught:
+    with one_blas_thread(), warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         out = [
             read(impact(p.racket, p.ball, p.position, p.speed, offset=p.offset,

@@ -5,7 +5,8 @@ import pytest
 from scipy.linalg import expm
 
 from racket import Hand, paper_racket
-from racket.system import block_steps, free_system, held_system
+from racket.solver.steps import block_steps
+from racket.system import free_system, held_system
 
 
 def _reference(blocks, dt):

@@ -15,7 +15,9 @@ from ball import (
     SineLaw,
 )
 from ball.stiffening import StiffeningHysteresis
-from racket import impact, kernel, paper_ball, paper_racket, solver
+from racket import impact, paper_ball, paper_racket
+from racket.solver import driver as solver
+from racket.solver import kernel
 
 LAWS = [
     LinearSpring(4e4),

@@ -1,6 +1,6 @@
-"""The lockstep kernel (racket.lockstep) against the scalar one (racket.kernel): the same
-numbers bit for bit, for every support, law, offset and swing; and the batch switch
-(racket.dispatch.run_kernel) choosing each of them."""
+"""The lockstep kernel (racket.solver.lockstep) against the scalar one
+(racket.solver.kernel): the same numbers bit for bit, for every support, law, offset and
+swing; and the batch switch (racket.solver.dispatch.run_kernel) choosing each of them."""
 
 import json
 import os
@@ -23,18 +23,9 @@ from ball import (
     SineLaw,
 )
 from ball.stiffening import StiffeningHysteresis
-from racket import (
-    CATALOG,
-    Hand,
-    dispatch,
-    impact,
-    kernel,
-    layout,
-    lockstep,
-    paper_ball,
-    paper_racket,
-)
-from racket.stepper import Stepper
+from racket import CATALOG, Hand, impact, paper_ball, paper_racket
+from racket.solver import dispatch, kernel, layout, lockstep
+from racket.solver.stepper import Stepper
 
 
 @cache
@@ -189,7 +180,8 @@ def test_the_batch_switch_chooses_each_kernel(monkeypatch):
 SCRIPT = """
 import json
 import numpy as np
-from racket import dispatch, impact, paper_racket, paper_ball
+from racket import impact, paper_ball, paper_racket
+from racket.solver import dispatch
 dispatch.LOCKSTEP_MIN = 0
 r = impact(paper_racket("hand-held"), paper_ball(), [0.02, 0.16, 0.3], 10.0,
            steps_per_contact=60)

@@ -9,6 +9,7 @@ module that defines the imported name (``from racket import Racket`` is an edge 
 """
 
 import ast
+import importlib
 from pathlib import Path
 
 import pytest
@@ -172,3 +173,47 @@ def test_the_physics_never_imports_plots_tables_or_studies(package):
         if name.split(".")[0] in FORBIDDEN
     }
     assert reached == set()
+
+
+SOLVER = "racket.solver"
+SOLVER_USERS = ("racket", "racket.feel")
+"""The model modules that use the solver (its public face only): the package's own face
+(``impact`` re-exported) and the feel, which computes with impacts."""
+
+
+def _in_solver(module: str) -> bool:
+    return module == SOLVER or module.startswith(SOLVER + ".")
+
+
+def test_the_solver_has_its_own_room_and_the_model_never_imports_it():
+    """The racket's description (racket/, outside racket/solver/) never imports the
+    time-stepping machinery; the feel and the package's face use its public face only."""
+    model = [m for m in MODULES if m.split(".")[0] == "racket" and not _in_solver(m)]
+    assert {"racket.racket", "racket.system", "racket.hand", "racket.swing"} <= set(model)
+    reached = {
+        f"{module}: {name}"
+        for module in model
+        for name, _ in _imports(module)
+        if _in_solver(name) and (module not in SOLVER_USERS or name != SOLVER)
+    }
+    assert reached == set()
+
+
+def test_outside_racket_only_the_solvers_public_face_is_used():
+    """The studies (and the docs' hooks) reach the solver through ``racket.solver`` itself,
+    never its rooms; the tests and benchmarks may look inside."""
+    face = set(importlib.import_module(SOLVER).__all__)
+    inside = {
+        f"{module}: {name}"
+        for module in MODULES
+        if module.split(".")[0] not in ("racket",)
+        for name, _ in _imports(module)
+        if _in_solver(name) and name != SOLVER
+    }
+    assert inside == set()
+    used = set()
+    for module in (m for m in MODULES if not _in_solver(m)):
+        for node in ast.walk(_tree(module)):
+            if isinstance(node, ast.ImportFrom) and node.module == SOLVER:
+                used |= {alias.name for alias in node.names}
+    assert used <= face

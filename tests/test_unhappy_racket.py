@@ -13,8 +13,9 @@ import numpy as np
 import pytest
 
 from ball import Ball, LinearSpring, SineLaw, collide
-from racket import StringBed, impact, layout, paper_racket
-from racket.solver import SCAN_RATIO, SELF_CONSISTENT_TOL, SINE_STEPS_PER_CONTACT, _Stepper
+from racket import StringBed, impact, paper_racket
+from racket.solver import layout
+from racket.solver.driver import SCAN_RATIO, SELF_CONSISTENT_TOL, SINE_STEPS_PER_CONTACT, _Stepper
 
 RACKET = paper_racket()
 BALLS = {

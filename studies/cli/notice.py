@@ -3,9 +3,9 @@ its on-disk cache), and the command line says so before that wait, not after it.
 
 :func:`compile_watch` watches a command from a thread: as soon as the solver's compiled
 modules are imported and any of their kernels has no fresh on-disk cache, it says that the
-solver is being compiled (once), and :func:`racket.dispatch.compile_notice` stays silent.
+solver is being compiled (once), and :func:`racket.solver.dispatch.compile_notice` stays silent.
 A run refused for its input ends before the solver is imported, and says one line.  (Numba
-first compiles the block exponentials, :mod:`racket.expm`, then the kernel, whose own notice
+first compiles the block exponentials, :mod:`racket.solver.expm`, then the kernel, whose own notice
 came only then: 7-22 s of silence, issue 28.)
 """
 
@@ -19,9 +19,9 @@ import threading
 EVERY = 0.1
 """How often the watch looks [s]."""
 
-KERNELS = ("racket.kernel", "racket.lockstep", "racket.budget")
+KERNELS = ("racket.solver.kernel", "racket.solver.lockstep", "racket.solver.budget")
 """The modules of the solver's compiled functions: the kernels that
-:func:`racket.dispatch.compile_notice` announces and the energy budget that reads their
+:func:`racket.solver.dispatch.compile_notice` announces and the energy budget that reads their
 results (all are compiled on a machine's first run of the solver)."""
 
 
@@ -50,19 +50,18 @@ def _cold_kernels() -> list:
 
 def _watch(done: threading.Event) -> None:
     while not done.wait(EVERY):
-        if "numba" not in sys.modules or "racket.dispatch" not in sys.modules:
+        if "numba" not in sys.modules or "racket.solver.dispatch" not in sys.modules:
             continue
-        from racket import dispatch
+        from racket.solver import COMPILE_SECONDS, announced
 
         cold = _cold_kernels()
         if cold:
             print(
-                f"racket-impact: compiling the solver (once, about {dispatch.COMPILE_SECONDS:g} "
-                "s)...",
+                f"racket-impact: compiling the solver (once, about {COMPILE_SECONDS:g} s)...",
                 file=sys.stderr,
                 flush=True,
             )
-            dispatch.announced(cold)  # said: the kernels' own notice is not
+            announced(cold)  # said: the kernels' own notice is not
         return
 
 

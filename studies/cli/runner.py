@@ -10,7 +10,7 @@ import re
 import sys
 import warnings
 
-from racket.dispatch import one_blas_thread
+from racket.solver import one_blas_thread
 from studies import outputs
 from studies.cli.files import _RUN
 from studies.cli.notice import compile_watch

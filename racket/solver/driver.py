@@ -41,15 +41,15 @@ from ball import Ball, SineLaw, warn_if_squashed
 from common.checks import finite, finite_array, in_range, shown
 from common.checks import speed as check_speed
 from common.typechecks import flag, instance
-from racket import layout
-from racket.dispatch import IMPACTS_PER_THREAD, LOCKSTEP_MIN, one_blas_thread, pool_size
-from racket.dispatch import compile_notice as _compile_notice  # noqa: F401  (kept importable here)
-from racket.outcome import SELF_CONSISTENT_TOL, Impact, outcome  # noqa: F401  (as above)
 from racket.racket import Racket
-from racket.stepper import Stepper as _Stepper
-from racket.stepper import contact_time_scale
+from racket.solver import layout
+from racket.solver.dispatch import IMPACTS_PER_THREAD, LOCKSTEP_MIN, one_blas_thread, pool_size
+from racket.solver.dispatch import compile_notice as _compile_notice  # noqa: F401  (kept importable here)
+from racket.solver.outcome import SELF_CONSISTENT_TOL, Impact, outcome  # noqa: F401  (as above)
+from racket.solver.stepper import Stepper as _Stepper
+from racket.solver.stepper import contact_time_scale
+from racket.solver.unhappy_search import SCAN_RATIO, unhappy_x_o  # noqa: F401  (as above)
 from racket.swing import ARM_REACH, check_swung_support
-from racket.unhappy_search import SCAN_RATIO, unhappy_x_o  # noqa: F401  (as above)
 
 DEFAULT_STEPS_PER_CONTACT = 300
 """Time steps per estimated contact time for the monotone ball laws.  With the static

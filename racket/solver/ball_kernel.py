@@ -1,16 +1,16 @@
 """The ball's force laws as the compiled time-steppers solve them, one step at a time.
 
 Each step reduces to one scalar equation for the force at the step's end (see
-:mod:`racket.kernel`), g_ball(F) + a F = z_pred, a the compliance in series with the ball:
+:mod:`racket.solver.kernel`), g_ball(F) + a F = z_pred, a the compliance in series with the ball:
 closed form for a linear law, a safeguarded Newton iteration for power laws
 (:func:`monotone_force`), and for the unhappy ball (sine law) a return mapping in its
 compression X, which never decreases (:func:`sine_step`, the fold and snap described in
-:mod:`racket.kernel`).
+:mod:`racket.solver.kernel`).
 
 Law codes (:data:`ball.laws.LINEAR` ...): 0 linear hysteresis (k, e), 1 power law (k, a, b),
 2 sine law (k0), 3 growing hysteresis (k, a, e0, slope), 4 stiffening hysteresis (k, X_lim,
 e0, slope), each from the law's ``kernel_law``.  Shared by the scalar kernel
-(:mod:`racket.kernel`) and the lockstep kernel (:mod:`racket.lockstep`).
+(:mod:`racket.solver.kernel`) and the lockstep kernel (:mod:`racket.solver.lockstep`).
 """
 
 from __future__ import annotations
@@ -20,7 +20,7 @@ import math
 from numba import njit
 
 from ball.laws import COR_FLOOR
-from racket.layout import LINEAR, POWER, STIFFENING
+from racket.solver.layout import LINEAR, POWER, STIFFENING
 
 
 @njit(cache=True)

@@ -1,7 +1,7 @@
 """The lockstep time-stepper: a batch of impacts advanced together, step by step.
 
-The same scheme and the same numbers as :func:`racket.kernel.run_impacts` (see
-:mod:`racket.kernel`), laid out for the machine: the impacts of a tile (``TILE`` of them) sit
+The same scheme and the same numbers as :func:`racket.solver.kernel.run_impacts` (see
+:mod:`racket.solver.kernel`), laid out for the machine: the impacts of a tile (``TILE`` of them) sit
 side by side along arrays, so that each pass of a step (the free step of every block, the
 force of a linear ball, the force's response, the dissipated power, the bookkeeping) is a
 loop over the impacts that LLVM vectorises.  What happens rarely, or per impact only, is
@@ -22,10 +22,15 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from racket.ball_kernel import ball_compression, force_coefficients, monotone_force, sine_step
-from racket.expm import step_back
-from racket.kernel import _dot, _opening_fraction, _power, _reach, _record
-from racket.layout import (
+from racket.solver.ball_kernel import (
+    ball_compression,
+    force_coefficients,
+    monotone_force,
+    sine_step,
+)
+from racket.solver.expm import step_back
+from racket.solver.kernel import _dot, _opening_fraction, _power, _reach, _record
+from racket.solver.layout import (
     DAMPING_LOSS,
     ENDED,
     F_PEAK,
@@ -64,7 +69,7 @@ N_ROWS = 8
 @njit(cache=True, nogil=True)
 def run_lockstep(frame, points, ball, controls, out, start, stop, step):
     """Advance impacts ``start`` to ``stop`` (by ``step``) of P, ``TILE`` at a time in
-    lockstep; the same arguments and outputs as :func:`racket.kernel.run_impacts`.
+    lockstep; the same arguments and outputs as :func:`racket.solver.kernel.run_impacts`.
     """
     nb = frame.trans.shape[0]
     w = np.empty((N_ROWS, nb, TILE))
@@ -147,7 +152,7 @@ def _tile(frame, points, ball, controls, out, ids, w, v, flags, scratch):
 @njit(cache=True)
 def _start(frame, points, ball, out, p, i, w, v, flags, record):
     """Impact ``p`` into slot ``i``: its inputs, first state and outputs as if it never left
-    (as :func:`racket.kernel._one_impact` sets them up).
+    (as :func:`racket.solver.kernel._one_impact` sets them up).
     """
     nb = frame.trans.shape[0]
     out_d = points.out_d[p]
@@ -195,7 +200,7 @@ def _ball_free(t00, t01, t10, t11, g00, g01, u, ud, force, u_p, ud_p, z, n):
 @njit(cache=True)
 def _free_blocks(trans, s0, s1, gin0_0, gin0_1, out_d0, out_d1, force, z, n):
     """The blocks' free step for the tile, and the point's displacement into ``z`` (summed
-    over the blocks in order, as :func:`racket.kernel._free_step`).
+    over the blocks in order, as :func:`racket.solver.kernel._free_step`).
     """
     for j in range(trans.shape[0]):
         t00, t01, t10, t11 = trans[j, 0, 0], trans[j, 0, 1], trans[j, 1, 0], trans[j, 1, 1]
@@ -210,7 +215,7 @@ def _free_blocks(trans, s0, s1, gin0_0, gin0_1, out_d0, out_d1, force, z, n):
 @njit(cache=True)
 def _linear_force(u_p, z, c0, c1, c2, f_peak, f_new, n):
     """z_pred = u_p - z into ``z``, and a linear ball's force, as
-    :func:`racket.ball_kernel.monotone_force`: on the loading line, else the unloading one.
+    :func:`racket.solver.ball_kernel.monotone_force`: on the loading line, else the unloading one.
     """
     for i in range(n):
         z_pred = u_p[i] - z[i]
@@ -243,7 +248,7 @@ def _force_blocks(s0, s1, gin1_0, gin1_1, f_new, n):
 
 @njit(cache=True)
 def _powers(damp_blocks, damp_rows, s0, s1, power, row, n):
-    """Dissipated power of each impact of the tile, as :func:`racket.kernel._power`
+    """Dissipated power of each impact of the tile, as :func:`racket.solver.kernel._power`
     (``row`` a scratch row).
     """
     for i in range(n):
@@ -309,7 +314,7 @@ def _sine_force(k0, controls, out, v, flags, i, step):
 @njit(cache=True)
 def _opening(ball, law, params, series, w, v, i, nb):
     """The contact opened within the step: the hold replaced by force -> 0 over tau dt (as
-    :func:`racket.kernel._one_impact`).
+    :func:`racket.solver.kernel._one_impact`).
     """
     force = v[FORCE, i]
     tau = _opening_fraction(law, params, series, force, v[F_PEAK_, i], v[Z, i])
@@ -326,7 +331,7 @@ def _opening(ball, law, params, series, w, v, i, nb):
 @njit(cache=True)
 def _after_step(frame, points, ball, controls, out, w, v, flags, scratch, i, step, left):
     """Slot ``i`` after the step: its histories, the state when the ball left, and whether
-    it has left for good (as :func:`racket.kernel._one_impact`).
+    it has left for good (as :func:`racket.solver.kernel._one_impact`).
     """
     p = flags[IMPACT, i]
     law, params, sine = ball.law, ball.params, ball.law == SINE

@@ -1,6 +1,6 @@
 """Matrix exponentials for the time-steppers, compiled and without BLAS: the exact step of
 each 2x2 block over a time step (:func:`augmented_steps`, for
-:func:`racket.system.block_steps`), and a block state stepped back in time
+:func:`racket.solver.steps.block_steps`), and a block state stepped back in time
 (:func:`step_back`, to the moment the ball left within its step).
 """
 

@@ -6,7 +6,7 @@ Between two steps the contact force is taken to vary linearly (first-order hold)
 force of that shape the racket, a linear system in real 2x2 blocks (each free mode, a
 damped oscillator q'' + 2 zeta omega q' + omega**2 q = phi(b) F, is one block; a hand-held
 racket's coupled modes are brought to such blocks by :mod:`racket.system`), is advanced
-*exactly* by precomputed 2x2 transition matrices (:func:`racket.system.block_steps`), and
+*exactly* by precomputed 2x2 transition matrices (:func:`racket.solver.steps.block_steps`), and
 so is the ball (u'' = -F / m1).  Only the force
 at the end of the step is unknown; the compression of the ball plus strings then depends
 on it linearly through the step's compliance c, so the step reduces to one scalar equation
@@ -28,7 +28,7 @@ sine.  If the contact would push the ball past the fold's maximum, or push a spe
 (X = Xo, force back to zero) again, Xo was not the ball's largest compression: the step
 flags a *snap*, and the summary's ``SNAP_RESIDUAL`` says by how much (the overshoot, > 0)
 or how close the contact came to it (minus the smallest gap to the fold, <= 0), a
-continuous function of Xo that :func:`racket.solver.impact` drives to zero (the
+continuous function of Xo that :func:`racket.solver.driver` drives to zero (the
 self-consistent Xo of :mod:`ball.unhappy`).
 
 Outcome at separation
@@ -40,9 +40,9 @@ states, energies) is the state at the step where the force last returned to zero
 moment the ball finally left.  For a hand-held racket the hand keeps pushing after that,
 and the racket's momentum keeps changing, so any later moment would give another e.
 
-This module advances one impact at a time (:func:`run_impacts`); :mod:`racket.lockstep`
+This module advances one impact at a time (:func:`run_impacts`); :mod:`racket.solver.lockstep`
 advances a batch together, with the same numbers.  The laws' force solves are in
-:mod:`racket.ball_kernel`, the blocks' exponentials in :mod:`racket.expm`.
+:mod:`racket.solver.ball_kernel`, the blocks' exponentials in :mod:`racket.solver.expm`.
 """
 
 from __future__ import annotations
@@ -52,9 +52,14 @@ import math
 import numpy as np
 from numba import njit
 
-from racket.ball_kernel import ball_compression, force_coefficients, monotone_force, sine_step
-from racket.expm import step_back
-from racket.layout import (
+from racket.solver.ball_kernel import (
+    ball_compression,
+    force_coefficients,
+    monotone_force,
+    sine_step,
+)
+from racket.solver.expm import step_back
+from racket.solver.layout import (
     DAMPING_LOSS,
     ENDED,
     F_PEAK,
@@ -84,20 +89,20 @@ def run_impacts(frame, points, ball, controls, out, start, stop, step):
 
     Parameters
     ----------
-    frame : racket.layout.Frame
+    frame : racket.solver.layout.Frame
         The racket's blocks, the same for every impact.
-    points : racket.layout.Points
+    points : racket.solver.layout.Points
         What differs between the P impacts (the impact point, the ball's speed, Xo).
-    ball : racket.layout.BallModel
+    ball : racket.solver.layout.BallModel
         The ball: its free step and its law.
-    controls : racket.layout.Controls
+    controls : racket.solver.layout.Controls
         Time step, step budget, tolerances, whether to stop at a snap or record.
-    out : racket.layout.Outputs
+    out : racket.solver.layout.Outputs
         Filled: ball and block states at the final separation, summary numbers and
         histories of the first T steps (if recorded).
     start, stop, step : int
         The slice of the P impacts to run (compiled with ``nogil``, so that threads can run
-        slices at once: :func:`racket.solver._run_on_threads`).
+        slices at once: :func:`racket.solver.driver._run_on_threads`).
     """
     for p in range(start, stop, step):
         _one_impact(frame, points, ball, controls, out, p)

@@ -1,6 +1,6 @@
 """The racket's motion when the ball has left, split into its dc and ac parts, and the
 energy budget, compiled: one pass over the impacts instead of some sixty small numpy
-operations per call (:func:`racket.outcome.outcome` reads the columns).
+operations per call (:func:`racket.solver.outcome.outcome` reads the columns).
 
 The sums run in index order, so a number may differ from numpy's (pairwise sums, BLAS
 products) in its last bit or two.

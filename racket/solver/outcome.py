@@ -9,8 +9,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from racket import layout
-from racket.stepper import Stepper
+from racket.solver import layout
+from racket.solver.stepper import Stepper
 
 SELF_CONSISTENT_TOL = 1e-4
 """An unhappy-ball impact is self-consistent when its compression at separation equals
@@ -166,7 +166,7 @@ def outcome(stepper: Stepper, racket, ball, x, y, speed, x_o, outputs, histories
         Ball speed [m/s] towards the strings before impact.
     x_o : ndarray
         The unhappy ball's Xo [m] per impact (NaN for other laws).
-    outputs : racket.layout.Outputs
+    outputs : racket.solver.layout.Outputs
         What :meth:`Stepper.run` returned.
     histories : bool
         Also the histories against time.
@@ -185,8 +185,8 @@ def outcome(stepper: Stepper, racket, ball, x, y, speed, x_o, outputs, histories
     n = system.count
 
     # dc part (rigid-body motion) and ac part (the rest) when the ball has left, and the
-    # energies: compiled, one pass (racket.budget).
-    from racket import budget  # numba loads on first use (import time)
+    # energies: compiled, one pass (racket.solver.budget).
+    from racket.solver import budget  # numba loads on first use (import time)
 
     face = stepper.face and n
     frame = np.array(

@@ -1,4 +1,4 @@
-"""The time-stepper's inputs and outputs (:func:`racket.kernel.run_impacts`): four named
+"""The time-stepper's inputs and outputs (:func:`racket.solver.kernel.run_impacts`): four named
 tuples of arrays and numbers in, one out, the columns of the per-impact summary and the
 rows of the histories.
 

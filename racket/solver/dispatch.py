@@ -1,7 +1,8 @@
 """Running the time-steppers: which kernel, on how many threads.
 
 A batch of at least ``LOCKSTEP_MIN`` impacts per thread runs in the lockstep kernel
-(:mod:`racket.lockstep`), a smaller one in the scalar kernel (:mod:`racket.kernel`); both
+(:mod:`racket.solver.lockstep`), a smaller one in the scalar kernel
+(:mod:`racket.solver.kernel`); both
 give the same numbers, bit for bit.  The kernels release the GIL, so the impacts of a batch
 are shared out between threads; numba loads (and on a machine's first run compiles) the
 kernels on first use, not on ``import racket``.
@@ -23,8 +24,8 @@ IMPACTS_PER_THREAD = 8
 20 us; handing work to a thread about as long)."""
 
 LOCKSTEP_MIN = 16
-"""Smallest share of a thread's impacts run in lockstep (:mod:`racket.lockstep`); fewer run
-one at a time (:mod:`racket.kernel`).  Measured by ``benchmarks/sweep.py`` (the paper
+"""Smallest share of a thread's impacts run in lockstep (:mod:`racket.solver.lockstep`); fewer run
+one at a time (:mod:`racket.solver.kernel`).  Measured by ``benchmarks/sweep.py`` (the paper
 racket, a linear ball, 2 threads, the two kernels interleaved): the lockstep kernel takes as
 long as the scalar one at 16 impacts per thread, 1.4x less time at 24, 1.5-2x at 100 and
 2.2x at 5000 (8 per thread: 0.75x)."""
@@ -37,15 +38,15 @@ def run_kernel(args, count: int) -> None:
     ----------
     args : tuple
         The kernels' arguments before the slice: frame, points, ball, controls and outputs
-        (:func:`racket.kernel.run_impacts`).
+        (:func:`racket.solver.kernel.run_impacts`).
     count : int
         Impacts in the batch [-].
     """
     threads = max(1, min(pool_size(), count // IMPACTS_PER_THREAD))
     if count >= LOCKSTEP_MIN * threads:
-        from racket.lockstep import run_lockstep as run  # numba loads on first use
+        from racket.solver.lockstep import run_lockstep as run  # numba loads on first use
     else:
-        from racket.kernel import run_impacts as run
+        from racket.solver.kernel import run_impacts as run
     if id(run) in _READY:  # (the usual case, without a context manager's cost)
         _run_on_threads(run, args, count, threads)
         return

@@ -8,8 +8,9 @@ from __future__ import annotations
 import numpy as np
 
 from ball import Ball
-from racket import layout
-from racket.dispatch import run_kernel
+from racket.solver import layout
+from racket.solver.dispatch import run_kernel
+from racket.solver.steps import system_steps
 
 FORCE_TOL = 1e-9
 """An unhappy-ball contact that approaches a common speed asymptotically is over when its
@@ -56,7 +57,7 @@ def _swing_velocities(modes, position, swing_speed, pivot):
 
 class Stepper:
     """The kernel's inputs for one racket, ball and set of impact points, prepared once and
-    run for any Xo (see :func:`racket.kernel.run_impacts`).
+    run for any Xo (see :func:`racket.solver.kernel.run_impacts`).
 
     Parameters
     ----------
@@ -95,7 +96,7 @@ class Stepper:
         system, phi, self.face = racket.point_dynamics(x, y)
         self.system, self.phi = system, phi
         self.n = n = system.count
-        trans, g0, g1 = system.step(self.dt)
+        trans, g0, g1 = system_steps(system, self.dt)
         out_d, out_v, out_dc = system.outputs(phi)
         self.swing_qd = _swing_velocities(modes, x, swing_speed, pivot)
         state0 = np.zeros((x.size, system.blocks.shape[0], 2))  # at rest
@@ -145,7 +146,7 @@ class Stepper:
 
     def run(self, x_o, subset=None, stop_on_snap=False, extra_steps=0, history_steps=0):
         """Run the impacts (all, or those indexed by ``subset``) with Xo ``x_o`` [m] per
-        impact run; returns the kernel's :class:`~racket.layout.Outputs` (ball, block
+        impact run; returns the kernel's :class:`~racket.solver.layout.Outputs` (ball, block
         states, summary, history), the history over the first ``history_steps`` steps
         (none if 0).
         """

@@ -9,9 +9,9 @@ from __future__ import annotations
 import numpy as np
 
 from ball import Ball
-from racket import layout
 from racket.racket import Racket
-from racket.stepper import CROSS_TOL, Stepper
+from racket.solver import layout
+from racket.solver.stepper import CROSS_TOL, Stepper
 
 SCAN_START, SCAN_RATIO, SCAN_MAX, SCAN_DOWN_MAX, REFINE_MAX = 0.7, 1.01, 400, 40, 60
 """The Xo search: start at this fraction of the rigid racket's Xo (halving it, at most

@@ -1,0 +1,48 @@
+"""The solver's room: the time-stepping machinery that drives a racket's modes with a
+ball's force law in series with the string bed (paper Sec. VII).
+
+The model (:mod:`racket.racket`, :mod:`racket.system`, the hand, the head, the swing, the
+presets and specs) describes a racket; this package computes what happens when a ball
+hits it, and never the other way round (``tests/test_structure.py`` keeps the model from
+importing it).  Its public face is small:
+
+* :func:`impact` and its :class:`Impact` result;
+* :func:`load_kernel`, to compile the kernels before the first impact;
+* :data:`F1_MIN` and :data:`DEFAULT_STEPS_PER_CONTACT`, the solver's limits and default
+  resolution;
+* :func:`one_blas_thread`, for a caller that runs impacts on several threads of its own;
+* :func:`system_steps`, a racket system's exact step (the feel's hand force uses it);
+* :data:`COMPILE_SECONDS` and :func:`announced`, for a program that announces the kernels'
+  first compilation itself.
+
+Inside: :mod:`~racket.solver.driver` (:func:`impact`), :mod:`~racket.solver.stepper`
+(the time step and the kernel's inputs), :mod:`~racket.solver.layout` (the kernel's interface),
+:mod:`~racket.solver.kernel` and :mod:`~racket.solver.lockstep` (one impact at a time, or a
+tile together), :mod:`~racket.solver.ball_kernel` (the force solve of each law),
+:mod:`~racket.solver.expm` (the blocks' exact steps), :mod:`~racket.solver.dispatch`
+(threads), :mod:`~racket.solver.outcome` and :mod:`~racket.solver.budget` (e, e_A and the
+energy budget at separation) and :mod:`~racket.solver.unhappy_search` (the unhappy ball's
+self-consistent Xo).
+"""
+
+from racket.solver.dispatch import COMPILE_SECONDS, announced, one_blas_thread
+from racket.solver.driver import (
+    DEFAULT_STEPS_PER_CONTACT,
+    F1_MIN,
+    Impact,
+    impact,
+    load_kernel,
+)
+from racket.solver.steps import system_steps
+
+__all__ = [
+    "COMPILE_SECONDS",
+    "DEFAULT_STEPS_PER_CONTACT",
+    "F1_MIN",
+    "Impact",
+    "announced",
+    "impact",
+    "load_kernel",
+    "one_blas_thread",
+    "system_steps",
+]
