@@ -18,6 +18,14 @@ from racket.system import clamped_system, face_system, racket_system, roll_syste
 SUPPORTS = ("free", "clamped-head", "hand-held")
 STRING_PROFILES = ("uniform", "membrane")
 
+STRETCH_MAX = 1e5
+"""Largest :attr:`StringBed.stretch` [1/m^2]: the bed twice as stiff at a 3 mm deflection,
+far beyond any string (a polyester bed at 20 lb, the stiffest case, has about 6e3)."""
+
+BED_LOSS_MAX = 0.3
+"""Largest :attr:`StringBed.loss` [-]: beyond a third, a stiffening bed's unloading curve
+could turn back on itself; strings lose about 5 % (Kawazoe's steel ball, COR 0.97)."""
+
 ADDED_MASS_MAX = 0.2
 """The most mass [kg] :meth:`Racket.with_mass` and :meth:`Racket.with_lead_tape` add at a
 point: **an assumption**, generous on purpose (players add a few grams of lead tape; 200 g
@@ -42,7 +50,13 @@ def added_mass(name: str, value) -> float:
 
 @dataclass(frozen=True)
 class StringBed:
-    """The string plane: a lossless linear spring between the ball and the frame.
+    """The string plane: a spring between the ball and the frame, linear and lossless
+    (the paper's) or stiffening as it deflects and losing a fraction of what it stores.
+
+    Pushed by a force F the bed deflects by w with F = k w (1 + ``stretch`` w**2) while
+    loading (k its stiffness at the point); unloading returns (1 - ``loss``) of the energy
+    it stored, along a curve set back from the loading one by the deflection that leaves
+    that loop's area (:mod:`racket.solver.bed_kernel`).
 
     Parameters
     ----------
@@ -58,12 +72,26 @@ class StringBed:
         How the stiffness varies over the face: ``"uniform"`` (default; ``stiffness``
         everywhere, as in the paper) or ``"membrane"`` (``stiffness`` at the centre, rising
         towards the frame, :mod:`racket.membrane`).
+    stretch : float
+        How fast the bed stiffens as it deflects [1/m^2]: F = k w (1 + stretch w**2); 0
+        (default) for the paper's linear bed.  The strings lengthen as they deflect, so
+        their tension rises with their axial stiffness EA (:mod:`racket.stringing`).
+    loss : float
+        Fraction [-] of the energy stored in the bed that a load and unload dissipates (the
+        strings' hysteresis and the friction between mains and crosses), in [0, 0.3]; 0
+        (default) for the paper's lossless bed.
+    stringing : object or None
+        What the bed was strung with (:class:`racket.stringing.Stringing`), for the
+        outputs' conditions; None for a bed given by its numbers.
     """
 
     stiffness: float
     extent: tuple
     width: float | None = None
     profile: str = "uniform"
+    stretch: float = 0.0
+    loss: float = 0.0
+    stringing: object = None
 
     def __post_init__(self):
         object.__setattr__(self, "stiffness", positive("stiffness", self.stiffness, "N/m"))
@@ -80,8 +108,18 @@ class StringBed:
         if self.width is not None:
             object.__setattr__(self, "width", positive("strings width", self.width, "m"))
         choice("string bed profile", self.profile, STRING_PROFILES)
+        stretch = non_negative("string bed stretch", self.stretch, "1/m^2")
+        object.__setattr__(self, "stretch", in_range("string bed stretch", stretch, 0.0,
+                                                     STRETCH_MAX, "1/m^2"))  # fmt: skip
+        loss = non_negative("string bed loss", self.loss, "")
+        object.__setattr__(self, "loss", in_range("string bed loss", loss, 0.0, BED_LOSS_MAX, ""))
         if self.profile == "membrane":
             bed_radius(self.area)  # refuses a bed too small for the membrane model
+
+    @property
+    def plain(self) -> bool:
+        """True for the paper's bed: linear and lossless (no stretch, no loss)."""
+        return self.stretch == 0.0 and self.loss == 0.0
 
     @property
     def center(self) -> float:

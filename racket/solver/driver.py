@@ -226,6 +226,12 @@ def impact(
             stacklevel=2,
         )
     warn_if_squashed(ball, squashed)
+    if isinstance(ball.law, SineLaw) and not racket.strings.plain:
+        warnings.warn(
+            "the unhappy (sine-law) ball takes the string bed as a linear, lossless spring: "
+            "the bed's stiffening and loss are left out",
+            stacklevel=2,
+        )
     if scalar:
         fields = {
             k: (v if v is None else v[0] if v.ndim > 1 else v[0].item()) for k, v in fields.items()

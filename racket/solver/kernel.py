@@ -52,12 +52,9 @@ import math
 import numpy as np
 from numba import njit
 
-from racket.solver.ball_kernel import (
-    ball_compression,
-    force_coefficients,
-    monotone_force,
-    sine_step,
-)
+from racket.solver.ball_kernel import ball_compression, force_coefficients, sine_step
+from racket.solver.bed_kernel import bed_active, bed_extra
+from racket.solver.contact_kernel import contact_compression, contact_force
 from racket.solver.expm import step_back
 from racket.solver.layout import (
     DAMPING_LOSS,
@@ -125,6 +122,7 @@ def _one_impact(frame, points, ball, controls, out, p):
                 frame.g1[j, r, 0] * points.unit[p, j, 0] + frame.g1[j, r, 1] * points.unit[p, j, 1]
             )
     dt, law, params, sine = controls.dt, ball.law, ball.params, ball.law == SINE
+    bed, inv_ks = ball.bed, points.inv_ks[p]
     record = controls.record and out.history.shape[2] > 1
     s = points.state0[p].copy()
     u, ud = 0.0, points.ball_velocity[p]
@@ -148,7 +146,7 @@ def _one_impact(frame, points, ball, controls, out, p):
     sep_s = s.copy()
     closing = ud - _dot(points.out_v[p], s)
     if record:
-        _record(out.history, points, p, 0, 0.0, 0.0, ud, s)
+        _record(out.history, points, p, 0, 0.0, 0.0, 0.0, ud, s)
     step = 0
     while step < controls.max_steps and step != stop_at:
         # Free step (force going from `force` to 0), then the force at the step's end.
@@ -169,7 +167,8 @@ def _one_impact(frame, points, ball, controls, out, p):
             elif not snapped:
                 residual = max(residual, step_residual)
         else:
-            f_new = monotone_force(law, params, coef, a, z_pred, f_peak, 2.0 * force - f_before)
+            guess = 2.0 * force - f_before
+            f_new = contact_force(law, params, coef, bed, inv_ks, a, z_pred, f_peak, guess)
         # Add the response to the force at the step's end.
         u = u_p + ball.g1[0] * f_new
         ud = ud_p + ball.g1[1] * f_new
@@ -178,7 +177,8 @@ def _one_impact(frame, points, ball, controls, out, p):
             s[j, 1] += gin1[j, 1] * f_new
         tau = 1.0  # fraction of the step at which the contact opened
         if f_new == 0.0 and force > 0.0 and not sine:
-            tau = _opening_fraction(law, params, points.series[p], force, f_peak, z_pred)
+            tau = _opening_fraction(law, params, bed, inv_ks, points.series[p], force, f_peak,
+                                    z_pred)  # fmt: skip
             # The force reached zero at tau dt, not at the step's end: replace the hold
             # (force -> 0 over the step) by the one with the same impulse and first moment
             # as force -> 0 over tau dt then nothing, by superposition.
@@ -201,7 +201,8 @@ def _one_impact(frame, points, ball, controls, out, p):
         step += 1
         if record and step < out.history.shape[2]:
             x_now = x_ball if sine else ball_compression(law, params, force, f_peak)
-            _record(out.history, points, p, step, force, x_now, ud, s)
+            string = string_deflection(bed, inv_ks, force, f_peak)
+            _record(out.history, points, p, step, force, x_now, string, ud, s)
         asymptotic = (
             sine
             and 0.0 < force < controls.force_tol * f_peak
@@ -222,7 +223,7 @@ def _one_impact(frame, points, ball, controls, out, p):
         if stop_at < 0 and force == 0.0 and _dot(points.out_dc[p], s) > ud:
             # Open and separating in the dc motion: over for good once the gap exceeds
             # the largest deflection the remaining vibration can bring to the point.
-            z_open = x_ball if sine else ball_compression(law, params, 0.0, f_peak)
+            z_open = x_ball if sine else contact_compression(law, params, bed, inv_ks, 0.0, f_peak)
             gap = z_open - (u - _dot(out_d, s))
             if gap >= _reach(points.reach_w[p], frame.metric, s):
                 stop_at = step + controls.extra_steps
@@ -245,14 +246,14 @@ def _one_impact(frame, points, ball, controls, out, p):
 
 
 @njit(cache=True)
-def _opening_fraction(law, params, series, force, f_peak, z_pred):
+def _opening_fraction(law, params, bed, inv_ks, series, force, f_peak, z_pred):
     """Fraction of the step at which a monotone-law contact opened: where the approach
-    beyond the ball's residual compression, d = z - g(0), went through zero, from ``force``
-    at the step's start (d = g(force) - g(0) + series force) to the force-free prediction
-    ``z_pred`` at its end, linearly.
+    beyond the residual compression of the ball and bed, d = z - g(0), went through zero,
+    from ``force`` at the step's start (d = g(force) - g(0) + series force) to the
+    force-free prediction ``z_pred`` at its end, linearly.
     """
-    rest = ball_compression(law, params, 0.0, f_peak)
-    d_start = ball_compression(law, params, force, f_peak) - rest + series * force
+    rest = contact_compression(law, params, bed, inv_ks, 0.0, f_peak)
+    d_start = contact_compression(law, params, bed, inv_ks, force, f_peak) - rest + series * force
     d_end = z_pred - rest
     if d_start - d_end <= 0.0:
         return 1.0
@@ -287,14 +288,23 @@ def _reach(reach_w, metric, s):
 
 
 @njit(cache=True)
-def _record(history, points, p, step, force, compression, ball_velocity, s):
+def string_deflection(bed, inv_ks, force, f_peak):
+    """The string bed's deflection [m] at ``force`` after the largest ``f_peak`` [N]."""
+    string = force * inv_ks
+    if bed_active(bed):
+        string += bed_extra(bed, inv_ks, force, f_peak)[0]
+    return string
+
+
+@njit(cache=True)
+def _record(history, points, p, step, force, compression, string, ball_velocity, s):
     """Write one step of impact ``p``'s histories: the force, the ball's compression, the
     strings' deflection, the ball's velocity and the point's (all and dc) from the block
     states ``s``.
     """
     history[H_FORCE, p, step] = force
     history[H_BALL_COMP, p, step] = compression
-    history[H_STRING, p, step] = force * points.inv_ks[p]
+    history[H_STRING, p, step] = string
     history[H_BALL_VEL, p, step] = ball_velocity
     history[H_POINT_VEL, p, step] = _dot(points.out_v[p], s)
     history[H_POINT_VEL_DC, p, step] = _dot(points.out_dc[p], s)

@@ -97,6 +97,9 @@ class BallModel(NamedTuple):
         The law's code: LINEAR, POWER, SINE, GROWING or STIFFENING.
     params : ndarray (4,)
         The law's numbers [SI].
+    bed : ndarray (2,)
+        The string bed's law in series with the ball's: its stretch [1/m^2] and loss [-]
+        (:mod:`racket.solver.bed_kernel`; both 0 for the paper's linear, lossless bed).
     """
 
     trans: np.ndarray
@@ -104,6 +107,7 @@ class BallModel(NamedTuple):
     g1: np.ndarray
     law: int
     params: np.ndarray
+    bed: np.ndarray
 
 
 class Controls(NamedTuple):

@@ -22,14 +22,18 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from racket.solver.ball_kernel import (
-    ball_compression,
-    force_coefficients,
-    monotone_force,
-    sine_step,
-)
+from racket.solver.ball_kernel import ball_compression, force_coefficients, sine_step
+from racket.solver.bed_kernel import bed_active
+from racket.solver.contact_kernel import contact_compression, contact_force
 from racket.solver.expm import step_back
-from racket.solver.kernel import _dot, _opening_fraction, _power, _reach, _record
+from racket.solver.kernel import (
+    _dot,
+    _opening_fraction,
+    _power,
+    _reach,
+    _record,
+    string_deflection,
+)
 from racket.solver.layout import (
     DAMPING_LOSS,
     ENDED,
@@ -89,6 +93,7 @@ def _tile(frame, points, ball, controls, out, ids, w, v, flags, scratch):
     n = ids.size
     nb = frame.trans.shape[0]
     law, params, sine = ball.law, ball.params, ball.law == SINE
+    bed, plain = ball.bed, not bed_active(ball.bed)
     record = controls.record and out.history.shape[2] > 1
     for i in range(n):
         _start(frame, points, ball, out, ids[i], i, w, v, flags, record)
@@ -108,7 +113,7 @@ def _tile(frame, points, ball, controls, out, ids, w, v, flags, scratch):
         _ball_free(t00, t01, t10, t11, g00, g01, u, ud, force, u_p, ud_p, z, n)
         _free_blocks(trans, s0, s1, gin0_0, gin0_1, out_d0, out_d1, force, z, n)
         # The force at the step's end.
-        if law == LINEAR:
+        if law == LINEAR and plain:
             _linear_force(u_p, z, c0, c1, c2, f_peak, f_new, n)
         else:
             for i in range(n):
@@ -119,14 +124,16 @@ def _tile(frame, points, ball, controls, out, ids, w, v, flags, scratch):
                 else:
                     coef = (c0[i], c1[i], c2[i])
                     guess = 2.0 * force[i] - f_before[i]
-                    f_new[i] = monotone_force(law, params, coef, v[A, i], z[i], f_peak[i], guess)
+                    inv_ks = points.inv_ks[flags[IMPACT, i]]
+                    f_new[i] = contact_force(law, params, coef, bed, inv_ks, v[A, i], z[i],
+                                             f_peak[i], guess)  # fmt: skip
         # The response to the force at the step's end.
         _ball_force(g10, g11, u_p, ud_p, f_new, u, ud, tau, n)
         _force_blocks(s0, s1, gin1_0, gin1_1, f_new, n)
         if not sine:
             for i in range(n):  # the contact opened within the step: placed there
                 if f_new[i] == 0.0 and force[i] > 0.0:
-                    _opening(ball, law, params, points.series[flags[IMPACT, i]], w, v, i, nb)
+                    _opening(ball, law, params, points, flags[IMPACT, i], w, v, i, nb)
         _powers(frame.damp_blocks, frame.damp_rows, s0, s1, power, row, n)
         _bookkeep(power, power_prev, damping, force, f_new, f_before, f_peak, need, stop_at,
                   recontacts, dt, tol, n)  # fmt: skip
@@ -185,7 +192,7 @@ def _start(frame, points, ball, out, p, i, w, v, flags, record):
     summary[T_END] = summary[T_CONTACT] = summary[SINE_WORK] = 0.0
     summary[DAMPING_LOSS] = summary[X_END] = 0.0
     if record:
-        _record(out.history, points, p, 0, 0.0, 0.0, ud, s)
+        _record(out.history, points, p, 0, 0.0, 0.0, 0.0, ud, s)
 
 
 @njit(cache=True)
@@ -312,12 +319,13 @@ def _sine_force(k0, controls, out, v, flags, i, step):
 
 
 @njit(cache=True)
-def _opening(ball, law, params, series, w, v, i, nb):
-    """The contact opened within the step: the hold replaced by force -> 0 over tau dt (as
-    :func:`racket.solver.kernel._one_impact`).
+def _opening(ball, law, params, points, p, w, v, i, nb):
+    """The contact of impact ``p`` (slot ``i``) opened within the step: the hold replaced
+    by force -> 0 over tau dt (as :func:`racket.solver.kernel._one_impact`).
     """
     force = v[FORCE, i]
-    tau = _opening_fraction(law, params, series, force, v[F_PEAK_, i], v[Z, i])
+    tau = _opening_fraction(law, params, ball.bed, points.inv_ks[p], points.series[p], force,
+                            v[F_PEAK_, i], v[Z, i])  # fmt: skip
     d0 = force * tau * (2.0 - tau) - force
     d1 = -force * tau * (1.0 - tau)
     v[U, i] += ball.g0[0] * d0 + ball.g1[0] * d1
@@ -342,7 +350,8 @@ def _after_step(frame, points, ball, controls, out, w, v, flags, scratch, i, ste
         _gather(w, i, scratch)
         gathered = True
         x_now = v[X_BALL, i] if sine else ball_compression(law, params, force, v[F_PEAK_, i])
-        _record(out.history, points, p, step, force, x_now, ud, scratch)
+        string = string_deflection(ball.bed, points.inv_ks[p], force, v[F_PEAK_, i])
+        _record(out.history, points, p, step, force, x_now, string, ud, scratch)
     f_peak = v[F_PEAK_, i]
     asymptotic = False
     if sine and 0.0 < force < controls.force_tol * f_peak:
@@ -376,7 +385,11 @@ def _after_step(frame, points, ball, controls, out, w, v, flags, scratch, i, ste
         if _dot(points.out_dc[p], scratch) > ud:
             # Open and separating in the dc motion: over for good once the gap exceeds the
             # largest deflection the remaining vibration can bring to the point.
-            z_open = v[X_BALL, i] if sine else ball_compression(law, params, 0.0, f_peak)
+            z_open = (
+                v[X_BALL, i]
+                if sine
+                else contact_compression(law, params, ball.bed, points.inv_ks[p], 0.0, f_peak)
+            )
             gap = z_open - (v[U, i] - _dot(points.out_d[p], scratch))
             if gap >= _reach(points.reach_w[p], frame.metric, scratch):
                 flags[STOP_AT, i] = step + controls.extra_steps

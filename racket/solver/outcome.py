@@ -79,11 +79,13 @@ class Impact:
         energy in the hand's spring.
     mode_energy : ndarray
         (..., n_bending) energy of each free-free bending mode when the ball leaves [J].
-    energy_initial, ball_energy, racket_energy, ball_loss, damping_loss, energy_residual : \
-float or ndarray
+    energy_initial, ball_energy, racket_energy, ball_loss, string_loss, damping_loss, \
+energy_residual : float or ndarray
         Energy budget [J]: initial kinetic energy = ball_energy + racket_energy (rigid
-        body) + vibration_energy + ball_loss + damping_loss + energy_residual; the residual
-        is the integration error.
+        body) + vibration_energy + ball_loss + string_loss + damping_loss +
+        energy_residual; the residual is the integration error.  string_loss is what the
+        string bed dissipates (its hysteresis and the friction between mains and crosses;
+        0 for the paper's lossless bed).
     closing_energy : float or ndarray
         The ball's kinetic energy in the frame of the racket's swing, m (v1 + v2)^2 / 2 [J]
         (energy_initial for a racket at rest): what the impact has to share out.
@@ -125,6 +127,7 @@ point_velocity_dc_history : ndarray or None
     ball_energy: np.ndarray
     racket_energy: np.ndarray
     ball_loss: np.ndarray
+    string_loss: np.ndarray
     damping_loss: np.ndarray
     energy_residual: np.ndarray
     x_o: np.ndarray
@@ -226,8 +229,16 @@ def outcome(stepper: Stepper, racket, ball, x, y, speed, x_o, outputs, histories
         ball_loss = ball.law.dissipated(summary[:, layout.F_PEAK])
         self_consistent = np.ones(x.size, dtype=bool)
     peak = summary[:, layout.F_PEAK]
+    string_loss = np.zeros(x.size)
+    bed = stepper.ball.bed
+    if bed[1] > 0.0:
+        from racket.solver.bed_kernel import bed_losses  # numba loads on first use
+
+        bed_losses(bed, stepper.points.inv_ks, peak, string_loss)
     damping_loss = summary[:, layout.DAMPING_LOSS]
-    residual = energy_initial - (ball_energy + racket_energy + vibration + ball_loss + damping_loss)
+    residual = energy_initial - (
+        ball_energy + racket_energy + vibration + ball_loss + string_loss + damping_loss
+    )
 
     steps = np.rint(summary[:, layout.T_END] / dt).astype(int)
     used = int(steps.max()) + 1
@@ -262,6 +273,7 @@ def outcome(stepper: Stepper, racket, ball, x, y, speed, x_o, outputs, histories
         ball_energy=ball_energy,
         racket_energy=racket_energy,
         ball_loss=np.asarray(ball_loss, dtype=float),
+        string_loss=string_loss,
         damping_loss=damping_loss,
         energy_residual=residual,
         x_o=x_o,

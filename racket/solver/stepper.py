@@ -142,6 +142,7 @@ class Stepper:
             g1=np.array([dt * dt / 6.0, dt / 2.0]) / -ball.mass,
             law=law[0],
             params=np.array(law[1], dtype=float),
+            bed=bed_law(racket.strings, law[0]),
         )
 
     def run(self, x_o, subset=None, stop_on_snap=False, extra_steps=0, history_steps=0):
@@ -175,3 +176,14 @@ class Stepper:
         )
         run_kernel((self.frame, points, self.ball, controls, out), count)
         return out
+
+
+def bed_law(strings, code: int) -> np.ndarray:
+    """The string bed's law for the kernels (:attr:`racket.solver.layout.BallModel.bed`):
+    its stretch [1/m^2] and loss [-]; a linear, lossless bed for the unhappy ball, whose
+    return mapping takes the strings as a linear spring (:func:`racket.solver.driver.impact`
+    says so when it drops a bed's stretch or loss).
+    """
+    if code == layout.SINE:
+        return np.zeros(2)
+    return np.array([strings.stretch, strings.loss])
