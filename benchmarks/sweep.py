@@ -14,6 +14,8 @@ to the targets, not the absolute times; the load average is printed before and a
   (rigid-body and bending, the strings in series with the residual flexibility of the
   modes left out, as the model has it) with scipy's solve_ivp (RK45, rtol 1e-8) in two
   phases, loading until the compression peaks and unloading until the force vanishes;
+  and a real string bed (stiffening and lossy) against the same bed linear (issue 35's
+  1.3 at most);
 * one position (a new one each call); 1e5 positions in one call and 1e6 impacts through
   ``studies.sweep`` (untraced, then the peak of traced memory in a second run); the unhappy
   ball's 200-point sweep (its Xo search included); the default accuracy against 16 times the
@@ -150,6 +152,29 @@ def _process(args, runs: int = 3, cwd=None) -> float:
     return float(np.median(times))
 
 
+def _real_bed_ratio(runs: int = 15) -> float:
+    """A 200-point sweep of the Pure Drive (2021) and the default ball with a stiffening,
+    lossy string bed (stretch 900 1/m^2, loss 6 %), over the same sweep with the bed linear
+    and lossless: medians of interleaved warm calls.
+    """
+    from racket import default_ball
+
+    real = CATALOG["pure-drive-2021"].racket()
+    real = replace(real, strings=replace(real.strings, stretch=900.0, loss=0.06))
+    plain = replace(real, strings=replace(real.strings, stretch=0.0, loss=0.0))
+    ball, (start, end) = default_ball(), real.strings.extent
+    x = np.linspace(start, end, POINTS + 2)[1:-1]
+    times = {"real": [], "plain": []}
+    for racket in (real, plain):
+        impact(racket, ball, x, 16.5)
+    for _ in range(runs):
+        for name, racket in (("real", real), ("plain", plain)):
+            t0 = time.perf_counter()
+            impact(racket, ball, x, 16.5)
+            times[name].append(time.perf_counter() - t0)
+    return float(np.median(times["real"]) / np.median(times["plain"]))
+
+
 def kernel_table(racket, ball) -> None:
     """The lockstep kernel against the scalar one by batch size (the kernel alone, on the
     threads the batch is worth).
@@ -198,6 +223,8 @@ def main() -> None:
         f"{np.abs(result.e - e_base).max():.1e}"
     )
     _row("  speed-up over the solve_ivp baseline", slow / fast, "x", 5000, better="higher")
+    print(f"{'  a real string bed (issue 35):':<48}")
+    _row("  stiffening, lossy bed / the same bed linear", _real_bed_ratio(), "", 1.3)
     positions = iter(np.linspace(0.0, 0.32, 100_003)[1:])  # a new position each call
     one = _median_time(lambda: impact(racket, ball, next(positions), SPEED), runs=300)
     _row("single position (a new one each call), median", 1e3 * one, "ms", 0.2)

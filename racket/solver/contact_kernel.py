@@ -5,20 +5,22 @@ the ball's compression on its branch (:mod:`racket.solver.ball_kernel`), what th
 to its linear deflection while it stiffens or loses energy (:mod:`racket.solver.bed_kernel`),
 and the compliance a of the bed's linear part, the modes left out and the step.  The sum
 rises with F on every branch, so the force is unique, found by a safeguarded Newton
-iteration.  For the paper's bed (no stretch, no loss) these functions hand over to the
-ball's own (closed forms for a linear ball), so that bed runs exactly as before.
+iteration in the bed's deflection.  For the paper's bed (no stretch, no loss) these
+functions hand over to the ball's own (closed forms for a linear ball), so that bed runs
+exactly as before.
 """
 
 from __future__ import annotations
 
+import math
+
 from numba import njit
 
 from racket.solver.ball_kernel import _branch, ball_compression, monotone_force, unloading_exponent
-from racket.solver.bed_kernel import bed_active, bed_extra, set_back
+from racket.solver.bed_kernel import bed_active, bed_extra, deflection, stored
 from racket.solver.layout import LINEAR
 
 _NEWTON_STEPS = 100
-_BRACKET_DOUBLINGS = 200
 
 
 @njit(cache=True)
@@ -32,10 +34,25 @@ def contact_compression(law, params, bed, inv_ks, f, f_max):
     return x
 
 
+MEMO_ROWS = 5
+"""Rows of a contact's memo (:func:`contact_force`): the largest force they were made for
+[N], the bed's loading deflection [m] and the ball's compression [m] there, the bed's
+unloading set-back [m] (NaN until the contact first unloads from that force) and the ball's
+unloading exponent [-].  A new memo holds -1 in its first row."""
+
+
 @njit(cache=True)
-def contact_force(law, params, coef, bed, inv_ks, a, z_pred, f_max, guess):
+def contact_force(law, params, coef, bed, inv_ks, a, z_pred, f_max, guess, memo, i):
     """Force solving g_ball(F) + h_bed(F) + a F = z_pred, 0 if the contact is open; the
     ball's own solve (:func:`racket.solver.ball_kernel.monotone_force`) for the paper's bed.
+
+    The unknown is the bed's deflection on its loading curve, u, in which the force
+    F = k u (1 + s u**2) and the bed's whole deflection, u + delta (1 - F / F_max) while
+    unloading, are explicit: the equation g_ball(F(u)) + u + delta (1 - F / F_max) +
+    (a - 1/k) F(u) = z_pred then needs no inner solve of the bed's cubic.  What depends
+    only on F_max is kept in the contact's memo (column ``i`` of ``memo``, rows
+    :data:`MEMO_ROWS`): while loading it is the last step's solution, while unloading it
+    stays.
 
     Parameters
     ----------
@@ -52,23 +69,32 @@ def contact_force(law, params, coef, bed, inv_ks, a, z_pred, f_max, guess):
         The contact's compression the step would give without force [m].
     f_max, guess : float
         The largest force so far, and a first guess (the force extrapolated) [N].
+    memo : ndarray (MEMO_ROWS, n)
+        The contacts' memos; column ``i`` is this one's.
     """
     if not bed_active(bed):
         return monotone_force(law, params, coef, a, z_pred, f_max, guess)
-    at_peak = _ball(law, params, f_max, f_max, 1.0)[0] if f_max > 0.0 else 0.0
-    switch = at_peak + bed_extra(bed, inv_ks, f_max, f_max)[0] + a * f_max
-    if z_pred >= switch:  # loading: the unloading exponent plays no part
-        high = max(z_pred / a, 2.0 * f_max)
-        for _ in range(_BRACKET_DOUBLINGS):
-            if _excess(law, params, bed, inv_ks, a, z_pred, high, f_max, 1.0) >= 0.0:
-                break
-            high *= 2.0
-        return _root(law, params, bed, inv_ks, a, z_pred, f_max, high, f_max, 1.0, guess)
-    b = 1.0 if law == LINEAR else unloading_exponent(law, params, f_max)
-    rest = _ball(law, params, 0.0, f_max, b)[0] + set_back(bed, inv_ks, f_max)
-    if z_pred <= rest:
+    k, s = 1.0 / inv_ks, bed[0]
+    rest_of = a - inv_ks  # the compliance beside the bed's: the modes left out, the step
+    if memo[0, i] != f_max:
+        memo[0, i] = f_max
+        memo[1, i] = deflection(k, s, f_max)[0] if f_max > 0.0 else 0.0
+        memo[2, i] = _ball(law, params, f_max, f_max, 1.0)[0] if f_max > 0.0 else 0.0
+        memo[3, i] = math.nan
+    u_max = memo[1, i]
+    guess_u = guess * u_max / f_max if f_max > 0.0 else guess * inv_ks
+    if z_pred >= memo[2, i] + u_max + rest_of * f_max:  # loading: g, u and F all rise
+        f, u = _root(law, params, k, s, rest_of, 0.0, z_pred, u_max, z_pred, f_max, 1.0, guess_u)
+        memo[0, i], memo[1, i], memo[3, i] = f, u, math.nan  # the next step's largest force
+        memo[2, i] = _ball(law, params, f, f, 1.0)[0]
+        return f
+    if math.isnan(memo[3, i]):
+        memo[3, i] = 2.0 * bed[1] * stored(k, s, u_max) / f_max
+        memo[4, i] = 1.0 if law == LINEAR else unloading_exponent(law, params, f_max)
+    delta, b = memo[3, i], memo[4, i]
+    if z_pred <= _ball(law, params, 0.0, f_max, b)[0] + delta:
         return 0.0
-    return _root(law, params, bed, inv_ks, a, z_pred, 0.0, f_max, f_max, b, guess)
+    return _root(law, params, k, s, rest_of, delta, z_pred, 0.0, u_max, f_max, b, guess_u)[0]
 
 
 @njit(cache=True)
@@ -85,31 +111,29 @@ def _ball(law, params, f, f_max, b):
 
 
 @njit(cache=True)
-def _excess(law, params, bed, inv_ks, a, target, f, f_max, b):
-    """g_ball(f) + h_bed(f) + a f - target [m]."""
-    return _ball(law, params, f, f_max, b)[0] + bed_extra(bed, inv_ks, f, f_max)[0] + a * f - target
-
-
-@njit(cache=True)
-def _root(law, params, bed, inv_ks, a, target, f_lo, f_hi, f_max, b, guess):
-    """The force in [f_lo, f_hi] where g_ball + h_bed + a F = target, by safeguarded Newton
-    from ``guess`` (the bracket's middle if outside it).
+def _root(law, params, k, s, rest_of, delta, target, u_lo, u_hi, f_max, b, guess):
+    """The bed's loading-curve deflection u in [u_lo, u_hi] where g_ball(F) + u +
+    delta (1 - F / f_max) + rest_of F = target, F = k u (1 + s u**2), by safeguarded Newton
+    from ``guess`` (the bracket's middle if outside it); returns F and u there.
     """
-    f = guess if f_lo < guess < f_hi else 0.5 * (f_lo + f_hi)
+    u = guess if u_lo < guess < u_hi else 0.5 * (u_lo + u_hi)
+    set_back = delta / f_max if delta > 0.0 else 0.0
     for _ in range(_NEWTON_STEPS):
+        f = k * u * (1.0 + s * u * u)
         g, dg = _ball(law, params, f, f_max, b)
-        h, dh = bed_extra(bed, inv_ks, f, f_max)
-        resid = g + h + a * f - target
+        resid = g + u + delta - set_back * f + rest_of * f - target
         if resid == 0.0:
-            return f
+            return f, u
         if resid < 0.0:
-            f_lo = f
+            u_lo = u
         else:
-            f_hi = f
-        f_new = f - resid / (dg + dh + a)
-        if not (f_lo < f_new < f_hi):
-            f_new = 0.5 * (f_lo + f_hi)
-        if abs(f_new - f) <= 1e-15 * f_new:
-            return f_new
-        f = f_new
-    return f
+            u_hi = u
+        slope = (dg + rest_of - set_back) * k * (1.0 + 3.0 * s * u * u) + 1.0
+        u_new = u - resid / slope
+        if not (u_lo < u_new < u_hi):
+            u_new = 0.5 * (u_lo + u_hi)
+        if abs(u_new - u) <= 1e-15 * u_new:
+            u = u_new
+            break
+        u = u_new
+    return k * u * (1.0 + s * u * u), u

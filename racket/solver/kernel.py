@@ -54,7 +54,7 @@ from numba import njit
 
 from racket.solver.ball_kernel import ball_compression, force_coefficients, sine_step
 from racket.solver.bed_kernel import bed_active, bed_extra
-from racket.solver.contact_kernel import contact_compression, contact_force
+from racket.solver.contact_kernel import MEMO_ROWS, contact_compression, contact_force
 from racket.solver.expm import step_back
 from racket.solver.layout import (
     DAMPING_LOSS,
@@ -123,6 +123,7 @@ def _one_impact(frame, points, ball, controls, out, p):
             )
     dt, law, params, sine = controls.dt, ball.law, ball.params, ball.law == SINE
     bed, inv_ks = ball.bed, points.inv_ks[p]
+    memo = np.full((MEMO_ROWS, 1), -1.0)  # the contact's memo (contact_force)
     record = controls.record and out.history.shape[2] > 1
     s = points.state0[p].copy()
     u, ud = 0.0, points.ball_velocity[p]
@@ -168,7 +169,7 @@ def _one_impact(frame, points, ball, controls, out, p):
                 residual = max(residual, step_residual)
         else:
             guess = 2.0 * force - f_before
-            f_new = contact_force(law, params, coef, bed, inv_ks, a, z_pred, f_peak, guess)
+            f_new = contact_force(law, params, coef, bed, inv_ks, a, z_pred, f_peak, guess, memo, 0)
         # Add the response to the force at the step's end.
         u = u_p + ball.g1[0] * f_new
         ud = ud_p + ball.g1[1] * f_new

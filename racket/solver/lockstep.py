@@ -24,7 +24,7 @@ from numba import njit
 
 from racket.solver.ball_kernel import ball_compression, force_coefficients, sine_step
 from racket.solver.bed_kernel import bed_active
-from racket.solver.contact_kernel import contact_compression, contact_force
+from racket.solver.contact_kernel import MEMO_ROWS, contact_compression, contact_force
 from racket.solver.expm import step_back
 from racket.solver.kernel import (
     _dot,
@@ -78,17 +78,19 @@ def run_lockstep(frame, points, ball, controls, out, start, stop, step):
     nb = frame.trans.shape[0]
     w = np.empty((N_ROWS, nb, TILE))
     v = np.empty((N_SCALARS, TILE))
+    memo = np.empty((MEMO_ROWS, TILE))  # the contacts' memos (contact_force)
     flags = np.empty((N_FLAGS, TILE), dtype=np.int64)
     scratch = np.empty((nb, 2))
     ids = np.arange(start, stop, step)
     tiles = -(-ids.size // TILE)
     size = -(-ids.size // max(tiles, 1))  # tiles of even size: no narrow last one
     for first in range(0, ids.size, size):
-        _tile(frame, points, ball, controls, out, ids[first : first + size], w, v, flags, scratch)
+        _tile(frame, points, ball, controls, out, ids[first : first + size], w, v, flags, scratch,
+              memo)  # fmt: skip
 
 
 @njit(cache=True)
-def _tile(frame, points, ball, controls, out, ids, w, v, flags, scratch):
+def _tile(frame, points, ball, controls, out, ids, w, v, flags, scratch, memo):
     """Impacts ``ids`` (at most TILE) from first touch until each has left for good."""
     n = ids.size
     nb = frame.trans.shape[0]
@@ -97,6 +99,7 @@ def _tile(frame, points, ball, controls, out, ids, w, v, flags, scratch):
     record = controls.record and out.history.shape[2] > 1
     for i in range(n):
         _start(frame, points, ball, out, ids[i], i, w, v, flags, record)
+        memo[0, i] = -1.0
     step = 0
     t00, t01, t10, t11 = ball.trans[0, 0], ball.trans[0, 1], ball.trans[1, 0], ball.trans[1, 1]
     g00, g01, g10, g11 = ball.g0[0], ball.g0[1], ball.g1[0], ball.g1[1]
@@ -126,7 +129,7 @@ def _tile(frame, points, ball, controls, out, ids, w, v, flags, scratch):
                     guess = 2.0 * force[i] - f_before[i]
                     inv_ks = points.inv_ks[flags[IMPACT, i]]
                     f_new[i] = contact_force(law, params, coef, bed, inv_ks, v[A, i], z[i],
-                                             f_peak[i], guess)  # fmt: skip
+                                             f_peak[i], guess, memo, i)  # fmt: skip
         # The response to the force at the step's end.
         _ball_force(g10, g11, u_p, ud_p, f_new, u, ud, tau, n)
         _force_blocks(s0, s1, gin1_0, gin1_1, f_new, n)
@@ -149,7 +152,7 @@ def _tile(frame, points, ball, controls, out, ids, w, v, flags, scratch):
                 if not flags[DONE, i]:
                     _finish(out, v, flags, i, step)
                 n -= 1
-                _move(w, v, flags, n, i, nb)
+                _move(w, v, flags, memo, n, i, nb)
             else:
                 i += 1
     for i in range(n):  # (only if the budget allowed no step at all)
@@ -416,8 +419,10 @@ def _finish(out, v, flags, i, step):
 
 
 @njit(cache=True)
-def _move(w, v, flags, src, dst, nb):
+def _move(w, v, flags, memo, src, dst, nb):
     """Slot ``src``'s impact into slot ``dst``."""
+    for r in range(MEMO_ROWS):
+        memo[r, dst] = memo[r, src]
     for r in range(N_ROWS):
         for j in range(nb):
             w[r, j, dst] = w[r, j, src]
