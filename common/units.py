@@ -19,6 +19,11 @@ GRAVITY = 9.80665
 """Standard gravity [m/s^2] (accelerations are quoted in g; the ITF's 8.165 kg deformation
 load is 80.07 N with it)."""
 
+KP_PER_CM = 100.0 * GRAVITY
+"""One kilopond per centimetre [N/m]: 980.665 N/m (1 kp = 1 kgf = 9.80665 N, the standard
+gravity's weight of 1 kg).  The ERT's "dynamic tension" (DT), a string bed's stiffness, is
+quoted in kp/cm."""
+
 OUNCE = 0.028349523125
 """One ounce (avoirdupois) [kg] (racket weights are quoted in oz)."""
 

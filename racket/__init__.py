@@ -5,7 +5,9 @@ Public API: :class:`Racket`, :class:`StringBed`, :class:`Hand`, :func:`impact` a
 (:func:`default_racket`, the catalogue's Pure Drive 2021, and :func:`default_ball`, the ITF
 type 2 ball), the paper's (:func:`paper_racket`, :func:`paper_ball`), rackets from spec
 sheets (:func:`from_specs`, :func:`string_bed_stiffness`, the :data:`CATALOG` of well-known
-rackets) and the modelled flex test (:func:`flex_test_stiffness`).
+rackets) and the modelled flex test (:func:`flex_test_stiffness`); what a racket is strung
+with (:class:`Stringing` of a :class:`String` of a material of :data:`MATERIALS`, the
+:data:`STRINGS` presets, :func:`stringing` by name).
 """
 
 from common.version import __version__
@@ -24,19 +26,25 @@ from racket.solver import Impact, impact
 from racket.specs import from_specs, string_bed_stiffness
 from racket.specs.catalog import CATALOG
 from racket.specs.stiffness import flex_test_stiffness
+from racket.string_material import MATERIALS
+from racket.stringing import STRINGS, String, Stringing, stringing
 from racket.swing import Swing
 
 __all__ = [
     "CATALOG",
     "DEFAULT_RACKET",
     "GRIPS",
+    "MATERIALS",
+    "STRINGS",
     "SUPPORTS",
     "TENNIS_BALL_MASS",
     "TENNIS_BALL_RADIUS",
     "Hand",
     "Impact",
     "Racket",
+    "String",
     "StringBed",
+    "Stringing",
     "Swing",
     "__version__",
     "default_ball",
@@ -47,4 +55,5 @@ __all__ = [
     "paper_ball",
     "paper_racket",
     "string_bed_stiffness",
+    "stringing",
 ]

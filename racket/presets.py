@@ -7,9 +7,12 @@ the Python API (:func:`default_racket`, :func:`default_ball`), and the paper's.
 string bed over the 0.32 m of the head nearest the tip and of stiffness 4e4 N/m (Sec. III:
 "the spring constant of the strings is typically about 4e4 N/m").  The tennis ball is the
 paper's: 57 g, stiffness 4e4 N/m during compression, COR 0.75 on concrete (Sec. III).
-The default racket is a real one, the catalogue's Babolat Pure Drive (2021)
-(:data:`racket.specs.catalog.CATALOG`), and the default ball the ITF type 2 ball
-(:data:`ball.catalog.DEFAULT_BALL`).
+The paper's string bed stays the paper's: a linear, lossless spring (no stringing).  The
+default racket is a real one, the catalogue's Babolat Pure Drive (2021)
+(:data:`racket.specs.catalog.CATALOG`), strung with fresh polyester 16L, 16x19, at 55 lb
+(an assumption, :data:`racket.specs.catalog.STRUNG`: a bed that stiffens as it deflects and
+loses a little of what it stores, :mod:`racket.stringing`), and the default ball the ITF
+type 2 ball (:data:`ball.catalog.DEFAULT_BALL`).
 """
 
 from __future__ import annotations

@@ -143,7 +143,8 @@ class String:
         return self.material.density * np.pi * self.gauge**2 / 4.0
 
     def describe(self, gauge_too: bool = True) -> str:
-        """ "polyester 1.25 mm" (the material alone if not ``gauge_too``).
+        """The string as the conditions say it, "polyester 1.25 mm" (the material alone if
+        not ``gauge_too``).
 
         Parameters
         ----------

@@ -9,11 +9,17 @@ it comes from.  Two numbers are not on the sheets as the model needs them:
   difference (before the regression every entry assumed :data:`ASSUMED_F1`).
 * ``tension_lb``: a racket is strung to the player's taste; 55 lb is the paper's "typical of
   most rackets" (Sec. VIII).
+
+Nor what a racket is strung with: each entry's :attr:`Entry.strung` is **an assumption**,
+fresh polyester 16L (the commonest string of the TWU string database: 406 polyesters against
+213 nylons and 15 guts) at the sheet's tension, in the racket's own pattern (TWU's racquet table,
+``String Pattern``), so that a catalogue racket has a real string bed (its stretch and loss,
+:mod:`racket.stringing`).
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from racket.racket import Racket
 from racket.specs.fit import from_specs
@@ -32,6 +38,20 @@ _RECORDED = (
     "was not quoted: unverified)"
 )
 PAPER_TENSION = "the paper, Sec. VIII: 55 lb is typical of most rackets"
+_TWU_PATTERN = "TWU racquet table (tests/data/twu_racquets_half.csv), String Pattern of the {}"
+
+STRUNG = dict(string="polyester", gauge="16L", pattern=(16, 19))
+"""What a catalogue racket is strung with unless its entry says otherwise: fresh polyester
+16L, 16x19 (an assumption, see the module docstring)."""
+
+STRUNG_SOURCES = dict(
+    string="an assumption: fresh polyester, the commonest string (TWU string database: 406 "
+    "polyesters, 213 nylons, 15 guts; data/measurements.md sec. 5)",
+    gauge="an assumption: 16L (1.25 mm), polyester's usual gauge",
+    pattern="an assumption: 16x19, the commonest pattern (377 of the 622 rackets of "
+    "tests/data/twu_racquets_half.csv)",
+)
+"""Where each of :data:`STRUNG` comes from."""
 OUNCE = 0.028349523125
 """One ounce [kg] (US spec sheets quote strung weight in oz)."""
 
@@ -51,22 +71,30 @@ class Entry:
         Where each of ``specs`` comes from, by the same keywords.
     notes : str, optional
         Remarks on the numbers.
+    strung : dict, optional
+        The string keywords of :func:`racket.specs.from_specs` (``string``, ``gauge``,
+        ``pattern``): what the racket is strung with; default :data:`STRUNG`.
+    strung_sources : dict, optional
+        Where each of ``strung`` comes from, by the same keywords.
     """
 
     name: str
     specs: dict
     sources: dict
     notes: str = ""
+    strung: dict = field(default_factory=lambda: dict(STRUNG))
+    strung_sources: dict = field(default_factory=lambda: dict(STRUNG_SOURCES))
 
     def racket(self, support: str = "free") -> Racket:
-        """The fitted racket (see :func:`racket.specs.from_specs`).
+        """The fitted racket, strung with :attr:`strung` (see
+        :func:`racket.specs.from_specs`).
 
         Parameters
         ----------
         support : str, optional
             ``"free"``, ``"clamped-head"`` or ``"hand-held"``, as for :class:`~racket.Racket`.
         """
-        return from_specs(support=support, **self.specs)
+        return from_specs(support=support, **self.specs, **self.strung)
 
 
 _TENNISADDICT = (
@@ -97,6 +125,8 @@ CATALOG = {
             tension_lb=PAPER_TENSION,
         ),
         notes="RA 66 strung (68 unstrung) measured by tennisaddict.fr; Babolat quotes 72.",
+        strung_sources=STRUNG_SOURCES
+        | dict(pattern=_TWU_PATTERN.format("Babolat Pure Drive (2021): 16x19")),
     ),
     "pure-drive-2025": Entry(
         name="Babolat Pure Drive (2025)",
@@ -118,6 +148,8 @@ CATALOG = {
             ra=_RECORDED,
             tension_lb=PAPER_TENSION,
         ),
+        strung_sources=STRUNG_SOURCES
+        | dict(pattern=_TWU_PATTERN.format("Pure Drives (2012-2021, every one 16x19)")),
     ),
     "pro-staff-97l-cv": Entry(
         name="Wilson Pro Staff 97L CV",
@@ -139,6 +171,8 @@ CATALOG = {
             ra=_RECORDED,
             tension_lb=PAPER_TENSION,
         ),
+        strung_sources=STRUNG_SOURCES
+        | dict(pattern=_TWU_PATTERN.format("Wilson Pro Staff 97L Countervail CAMO: 16x19")),
     ),
 }
 """Catalogue rackets by preset name."""

@@ -25,6 +25,7 @@ from racket.specs.stiffness import (
     flex_test_stiffness,
     torsional_profile,
 )
+from racket.stringing import stringing
 
 EDGE_FRACTION = 0.02
 """A fitted part within this fraction of its range from an end is reported as at the edge
@@ -157,7 +158,9 @@ def fit_profile(sheet: SpecSheet) -> tuple[Beam, Profile]:
     return beam, profile
 
 
-def from_specs(*, support: str = "free", **specs) -> Racket:
+def from_specs(
+    *, support: str = "free", string=None, gauge=None, pattern=None, state=None, **specs
+) -> Racket:
     """A racket whose mass, balance, swingweight and frame stiffness equal a spec sheet's.
 
     Parameters
@@ -196,6 +199,18 @@ def from_specs(*, support: str = "free", **specs) -> Racket:
     tension_lb, tension_n, string_stiffness_n_m : float
         String tension [lb or N] (membrane model :func:`string_bed_stiffness`), or the
         string-plane stiffness [N/m].  Give one.
+    string : str, optional
+        What the racket is strung with (:func:`racket.stringing.stringing`: a preset such
+        as ``"polyester"``, or ``"MAINS/CROSSES"``): the bed's stiffness then follows from
+        the tension, the pattern and the state, and it gains the string's stretch and loss
+        (with ``string_stiffness_n_m``, that stiffness is kept, as measured).  None
+        (default): the paper's linear, lossless bed.
+    gauge : float or str, optional
+        The string's gauge [m], or a name ("16L"); default the preset's (with ``string``).
+    pattern : str or (int, int), optional
+        Mains x crosses [-], "16x19" (default) (with ``string``).
+    state : str, optional
+        ``"fresh"`` (default) or ``"played"`` (with ``string``).
     support : str
         As in :class:`~racket.Racket` ("free", "clamped-head" or "hand-held").
 
@@ -219,10 +234,19 @@ def from_specs(*, support: str = "free", **specs) -> Racket:
     >>> round(racket.beam.swingweight_kgcm2, 6), round(racket.beam.twistweight_kgcm2, 1)
     (325.0, 14.8)
     """
+    strung = dict(gauge=gauge, pattern=pattern, state=state)
+    if string is None and any(value is not None for value in strung.values()):
+        given = next(name for name, value in strung.items() if value is not None)
+        raise ValueError(f"{given} describes a string: give string too (e.g. 'polyester')")
     sheet = spec_sheet(**specs)
     beam, profile = fit_profile(sheet)
     lay = profile.layout
-    strings = StringBed(
-        sheet.string_stiffness, lay.strings_extent, lay.strings_width, profile="membrane"
-    )
+    if string is None:
+        strings = StringBed(
+            sheet.string_stiffness, lay.strings_extent, lay.strings_width, profile="membrane"
+        )
+    else:
+        strung = stringing(string, gauge, pattern, sheet.tension, state or "fresh")
+        measured = None if sheet.tension is not None else sheet.string_stiffness
+        strings = strung.bed(lay.strings_extent, lay.strings_width, stiffness=measured)
     return Racket(beam, strings, support)

@@ -25,7 +25,9 @@ _HEAD_CELLS = 24  # piecewise-constant cells resolving the hoop's mass along the
 
 def with_tension(racket, tension_n: float):
     """``racket`` strung at ``tension_n`` [N]: its string bed's (centre) stiffness from the
-    membrane model (:func:`string_bed_stiffness`) on its string bed's area.
+    membrane model (:func:`string_bed_stiffness`) on its string bed's area; a bed strung
+    with a :class:`racket.stringing.Stringing` keeps its strings, pattern and state, and its
+    stiffness, stretch and loss follow from them at the new tension.
 
     Parameters
     ----------
@@ -38,8 +40,12 @@ def with_tension(racket, tension_n: float):
     instance("racket", racket, Racket, "a racket.Racket")
     low, high = (tension * LB for tension in TENSION_RANGE_LB)
     tension_n = in_range("tension", tension_n, low, high, "N")
-    stiffness = string_bed_stiffness(tension_n, racket.strings.area)
-    return replace(racket, strings=replace(racket.strings, stiffness=stiffness))
+    bed = racket.strings
+    if bed.stringing is not None:  # its own .bed(): racket.stringing imports this module
+        strung = replace(bed.stringing, tension=tension_n)
+        return replace(racket, strings=strung.bed(bed.extent, bed.width, bed.profile))
+    stiffness = string_bed_stiffness(tension_n, bed.area)
+    return replace(racket, strings=replace(bed, stiffness=stiffness))
 
 
 def string_bed_stiffness(tension_n: float, head_area_m2: float) -> float:
