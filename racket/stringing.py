@@ -12,13 +12,13 @@ return by material (:mod:`racket.string_material`).
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
 from common.checks import INCH_AS_M, KG_AS_N, LB_AS_N, MM_AS_M, in_range, positive, shown, whole
 from common.typechecks import choice
-from common.units import KP_PER_CM, LB
+from common.units import INCH, KP_PER_CM, LB
 from racket.head import HEAD_ASPECT
 from racket.racket import StringBed
 from racket.specs.strings import TENSION_RANGE_LB, string_bed_stiffness
@@ -71,44 +71,64 @@ Ingard, Theoretical Acoustics, 1968, Sec. 5.2, the circular membrane).  The part
 that moves with the ball (:meth:`Stringing.moving_mass`)."""
 
 
-def diameter(value) -> float:
-    """A string's gauge [m] from a name of :data:`GAUGES` ("16L") or a diameter [m] in
-    :data:`GAUGE_RANGE`; ValueError naming the value, with the range and a likely slip of
-    unit (mm or inches typed as m), or the names, otherwise.
+_GAUGE_SLIPS = {
+    "m": (MM_AS_M, INCH_AS_M),
+    "mm": ((1e3, "m typed as mm?", "m"), (1e3 * INCH, "inches typed as mm?", "in")),
+}
+
+
+def diameter(value, name: str = "gauge", unit: str = "m") -> float:
+    """A string's gauge [m] from a name of :data:`GAUGES` ("16L") or a diameter in ``unit``
+    in :data:`GAUGE_RANGE`; ValueError naming ``name`` and the value, with the range and a
+    likely slip of unit (mm or inches typed as m; m or inches as mm), or the names.
 
     Parameters
     ----------
     value : str or float
-        A gauge name, or the diameter [m].
+        A gauge name, or the diameter [``unit``] (a number, or a word that is one).
+    name : str, optional
+        The input's name as the user typed it ("gauge", "--gauge").
+    unit : str, optional
+        ``"m"`` (default) or ``"mm"``.
     """
+    scale = 1e-3 if unit == "mm" else 1.0
     if isinstance(value, str):
         said = value.strip().upper()
-        if said not in GAUGES:
-            raise ValueError(f"unknown gauge {value!r}; gauges: {', '.join(GAUGES)} or a [m]")
-        return GAUGES[said]
+        if said in GAUGES:
+            return GAUGES[said]
+        try:
+            value = float(said)
+        except ValueError:
+            raise ValueError(
+                f"{name} must be a gauge name ({', '.join(GAUGES)}) or a diameter [{unit}], "
+                f"got {value!r}"
+            ) from None
     named = isinstance(value, int | float) and str(value).removesuffix(".0") in GAUGES
-    hint = f" (a gauge name is a word: '{shown(value)}')" if named else ""
-    return in_range("gauge", value, *GAUGE_RANGE, "m", hint, slips=(MM_AS_M, INCH_AS_M))
+    hint = f" (a gauge name is a word: '{shown(value)}')" if named and unit == "m" else ""
+    low, high = (end / scale for end in GAUGE_RANGE)
+    return scale * in_range(name, value, low, high, unit, hint, slips=_GAUGE_SLIPS[unit])
 
 
-def parse_pattern(value) -> tuple[int, int]:
-    """A string pattern (mains, crosses) from "16x19" or a pair; ValueError naming the value,
-    with :data:`PATTERN_RANGE`, otherwise.
+def parse_pattern(value, name: str = "pattern") -> tuple[int, int]:
+    """A string pattern (mains, crosses) from "16x19" or a pair; ValueError naming ``name``
+    and the value, with :data:`PATTERN_RANGE`, otherwise.
 
     Parameters
     ----------
     value : str or (int, int)
         "MAINSxCROSSES" (``"16x19"``) or (mains, crosses) [-].
+    name : str, optional
+        The input's name as the user typed it ("pattern", "--pattern").
     """
     pair = value
     if isinstance(value, str):
         match = re.fullmatch(r"\s*(\d+)\s*[xX*]\s*(\d+)\s*", value)
         pair = (int(match[1]), int(match[2])) if match else None
     if not isinstance(pair, tuple | list) or len(pair) != 2:
-        raise ValueError(f"pattern must be MAINSxCROSSES such as '16x19', got {shown(value)}")
+        raise ValueError(f"{name} must be MAINSxCROSSES such as '16x19', got {shown(value)}")
     (low_m, high_m), (low_c, high_c) = PATTERN_RANGE
-    return whole("pattern mains", pair[0], low_m, high_m), whole(
-        "pattern crosses", pair[1], low_c, high_c
+    return whole(f"{name} mains", pair[0], low_m, high_m), whole(
+        f"{name} crosses", pair[1], low_c, high_c
     )
 
 
@@ -365,15 +385,23 @@ class Stringing:
             k, extent, width, profile, self.stretch(shape.area, stiffness), self.loss, self
         )
 
-    def describe(self) -> str:
-        """Short text for the conditions: "polyester 1.25 mm 16x19 at 55 lb, fresh"."""
+    def describe(self, tension: str | None = None) -> str:
+        """Short text for the conditions: "polyester 1.25 mm 16x19 at 55 lb, fresh".
+
+        Parameters
+        ----------
+        tension : str, optional
+            The tension as the user typed it ("25 kg"), said instead of :attr:`tension`.
+        """
         if not self.hybrid:
             strings = self.mains.describe()
         elif self.mains.gauge == self.crosses.gauge:
             strings = f"{self.mains.describe(False)}/{self.crosses.describe()}"
         else:
             strings = f"{self.mains.describe()}/{self.crosses.describe()}"
-        tension = "" if self.tension is None else f" at {shown(round(self.tension / LB, 2))} lb"
+        if tension is None and self.tension is not None:
+            tension = f"{shown(round(self.tension / LB, 2))} lb"
+        tension = f" at {tension}" if tension else ""
         return f"{strings} {self.pattern[0]}x{self.pattern[1]}{tension}, {self.state}"
 
 
@@ -400,3 +428,48 @@ def stringing(name, gauge=None, pattern=REFERENCE_PATTERN, tension_n=None, state
     mains, crosses = (string(part, gauge) for part in (parts * 2)[:2])
     return Stringing(mains, crosses, REFERENCE_PATTERN if pattern is None else pattern,
                      tension_n, state)  # fmt: skip
+
+
+def restrung(bed: StringBed, string=None, gauge=None, pattern=None, state=None, stiffness=None):
+    """``bed`` strung again: what is given replaces the bed's, the rest is kept (a new
+    ``string`` comes at its own gauge unless ``gauge`` is given).  A bed with no stringing
+    (the paper's spring) gains one only with ``string``, keeping its stiffness; a
+    ``stiffness`` (measured: the ERT's DT x :data:`common.units.KP_PER_CM`) replaces the
+    tension's.  The tension itself is :func:`racket.specs.strings.with_tension`'s.
+
+    Parameters
+    ----------
+    bed : StringBed
+        The bed to restring.
+    string : str, optional
+        A preset (:data:`STRINGS`) or "MAINS/CROSSES".
+    gauge : float or str, optional
+        The gauge [m], or a name ("16L").
+    pattern : str or (int, int), optional
+        Mains x crosses [-].
+    state : str, optional
+        ``"fresh"`` or ``"played"``.
+    stiffness : float, optional
+        The bed's measured stiffness [N/m].
+    """
+    old = bed.stringing
+    if old is None and string is None:
+        for name, value in (("gauge", gauge), ("pattern", pattern), ("state", state)):
+            if value is not None:
+                raise ValueError(
+                    f"{name} describes a string, and this string bed has none (the paper's "
+                    "spring): give the string too, e.g. polyester"
+                )
+        return bed if stiffness is None else replace(bed, stiffness=stiffness)
+    if string is not None:
+        mains = stringing(string, gauge)
+        mains, crosses = mains.mains, mains.crosses
+    else:
+        mains, crosses = (old.mains, old.crosses) if gauge is None else (
+            String(old.mains.material, gauge), String(old.crosses.material, gauge))  # fmt: skip
+    kept = old or Stringing(mains)
+    tension = None if stiffness is not None else kept.tension
+    strung = Stringing(mains, crosses, pattern or kept.pattern, tension, state or kept.state)
+    if stiffness is None and tension is None:  # a measured or a plain bed: its stiffness kept
+        stiffness = bed.stiffness
+    return strung.bed(bed.extent, bed.width, bed.profile, stiffness)

@@ -53,6 +53,9 @@ class BlockSystem:
     hand_coordinate : int or None
         The coordinate of a hand with mass (:func:`held_system`), after the frame's bending
         modes; None without one.  The frame's shapes are 0 there.
+    step_memo : dict
+        The solver's memo of this system's exact steps, by time step
+        (:func:`racket.solver.steps.system_steps`); not part of the system's value.
     """
 
     blocks: np.ndarray

@@ -29,18 +29,20 @@ def speed_text(value, unit: str = "m/s") -> str:
     return f"{said} {unit}"
 
 
-def racket_details(racket, tension_lb: float | None = None) -> dict:
+def racket_details(racket, tension: str | None = None) -> dict:
     """How a racket is held and strung, for :func:`conditions_line`: its ``support``, the
     ``grip`` of a hand-held racket (a preset's name of :data:`racket.GRIPS`, or "own grip")
-    and its ``strings`` ("strings at 55 lb" when the tension was given, else the bed's
-    stiffness in kN/m).
+    and its ``strings``: what it is strung with and its bed's stiffness ("polyester 1.25 mm
+    16x19 at 55 lb, fresh, 30 kN/m"; "strings at 55 lb" or "strings 30 kN/m" for the paper's
+    plain bed).
 
     Parameters
     ----------
     racket : Racket
         The racket.
-    tension_lb : float, optional
-        The tension it was strung at, as typed [lb].
+    tension : str, optional
+        The tension as typed, with its unit ("55 lb", "25 kg", "50, 55 lb"): said instead of
+        the stringing's.
     """
     from racket import GRIPS
 
@@ -48,10 +50,14 @@ def racket_details(racket, tension_lb: float | None = None) -> dict:
     if racket.support == "hand-held":
         names = [name for name, hand in GRIPS.items() if hand == racket.hand]
         grip = f"{names[0]} grip" if names else "own grip"
-    if tension_lb is not None:
-        strings = f"strings at {shown(tension_lb)} lb"
+    stiffness = f"{racket.strings.stiffness / 1e3:.3g} kN/m"
+    strung = racket.strings.stringing
+    if strung is None:
+        strings = f"strings at {tension}" if tension else f"strings {stiffness}"
+    elif tension:
+        strings = f"{strung.describe(tension)}, {stiffness}"
     else:
-        strings = f"strings {racket.strings.stiffness / 1e3:.3g} kN/m"
+        strings = f"{strung.describe()}, {stiffness}"
     return {"support": racket.support, "grip": grip, "strings": strings}
 
 

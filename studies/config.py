@@ -35,8 +35,11 @@ keys are errors)::
     twistweight_kgcm2 = 14      # optional; recoil_weight_kgcm2 also (or for swingweight)
     torsion_hz = 320            # optional: measured first torsion frequency
 
-    [racket.strings]
-    stiffness = 4e4             # N/m
+    [racket.strings]            # each key optional: the others stay the racket's
+    string = "polyester"        # racket.STRINGS, or a hybrid "natural-gut/polyester"
+    gauge = 1.25                # mm, or a name: "16L"; pattern = "16x19"; state = "played"
+    tension_lb = 55             # or tension_kg = 25; or the bed's stiffness itself:
+    stiffness = 4e4             # N/m, or dt_kp_cm = 30 (the ERT's dynamic tension)
     extent = [0.0, 0.32]        # m from the tip
     profile = "membrane"        # or "uniform": stiffness over the face
 
@@ -98,6 +101,8 @@ from racket import (
 from racket.racket import ADDED_MASS_MAX
 from racket.solver import F1_MIN
 from racket.specs.sheet import SPEC_RANGES, SPEC_SLIPS
+from racket.specs.strings import TENSION_RANGE_LB, with_tension
+from studies import string_inputs as inputs  # the string bed as typed
 from studies.sweeps import F1_MAX, STRING_STIFFNESS_RANGE
 
 if sys.version_info >= (3, 11):
@@ -129,6 +134,9 @@ TOML_RANGES = {
     ("racket", "f1"): (F1_MIN, F1_MAX, "Hz", ()),
     **{("racket.specs", key): (*SPEC_RANGES[key], slips) for key, slips in SPEC_SLIPS.items()},
     ("racket.strings", "stiffness"): (*STRING_STIFFNESS_RANGE, "N/m", (slip.KN_AS_N,)),
+    ("racket.strings", "tension_lb"): (*TENSION_RANGE_LB, "lb", (slip.N_AS_LB,)),
+    ("racket.strings", "tension_kg"): (*inputs.TENSION_KG_RANGE, "kg", (inputs.LB_AS_KG,)),
+    ("racket.strings", "dt_kp_cm"): (*inputs.DT_RANGE, "kp/cm", (inputs.N_M_AS_KP_CM,)),
     ("ball", "mass"): (0.001, 1.0, "kg", (slip.GRAMS_AS_KG, slip.OZ_AS_KG)),
     ("ball", "radius"): (*BALL_RADIUS_RANGE, "m", RADIUS_SLIPS),
     ("ball", "x_lim"): (*BALL_RADIUS_RANGE, "m", RADIUS_SLIPS),
@@ -180,7 +188,6 @@ _RACKET_KEYS = {
     "roll_inertia_per_length",
     "torsional_stiffness",
 }
-_STRING_KEYS = {"stiffness", "extent", "profile"}
 _SPEC_KEYS = {
     "length_m",
     "mass_kg",
@@ -336,14 +343,9 @@ def racket_from_table(table: dict) -> Racket:
         beam = replace(beam, damping=damping, n_modes=n_modes)
     beam = beam.with_point_masses(*_list(table, "point_masses", "racket"))
     strings_table = table.get("strings", {})
-    _check_keys(strings_table, _STRING_KEYS, "racket.strings")
+    _check_keys(strings_table, inputs.STRING_KEYS, "racket.strings")
     _check_ranges(strings_table, "racket.strings")
-    strings = replace(
-        base.strings,
-        stiffness=strings_table.get("stiffness", base.strings.stiffness),
-        extent=tuple(strings_table.get("extent", base.strings.extent)),
-        profile=strings_table.get("profile", base.strings.profile),
-    )
+    strings, tension = inputs.strings_from_table(base.strings, strings_table)
     hand_table = table.get("hand", {})
     _check_keys(hand_table, _HAND_KEYS, "racket.hand")
     if "grip" in hand_table and len(hand_table) > 1:
@@ -353,6 +355,8 @@ def racket_from_table(table: dict) -> Racket:
         raise ValueError(f"unknown grip {grip!r}; grips: {', '.join(GRIPS)}")
     hand = GRIPS[grip] if grip else Hand(**hand_table) if hand_table else base.hand
     racket = Racket(beam, strings, table.get("support", base.support), hand)
+    if tension is not None:
+        racket = with_tension(racket, tension)
     for tape in _list(table, "lead_tape", "racket"):
         racket = _with_lead_tape(racket, tape)
     return racket

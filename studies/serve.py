@@ -40,6 +40,7 @@ from common.checks import speed as check_speed
 from common.typechecks import flag
 from common.units import MPH
 from racket import Racket, Swing, impact
+from racket.stringing import restrung
 from studies.arguments import ball_argument, racket_argument
 
 
@@ -302,7 +303,7 @@ def serve_what_if(
     ]
     rows = []
     for k_s in string_stiffness:
-        variant = replace(racket, strings=replace(racket.strings, stiffness=float(k_s)))
+        variant = replace(racket, strings=restrung(racket.strings, stiffness=float(k_s)))
         row = serve_table(variant, ball, position, racket_speed, pivot_from_tip).loc["zero-COR"]
         rows.append({"varied": "strings", "value": float(k_s), **row.to_dict()})
     for k_b in ball_stiffness:

@@ -26,6 +26,7 @@ from racket import SUPPORTS, Racket, Swing
 from racket.solver import F1_MIN
 from racket.specs.sheet import SPEC_RANGES
 from racket.specs.strings import with_tension
+from racket.stringing import restrung
 from racket.swing import check_swung_support
 from racket.swing import equal_effort as same_effort
 from studies.arguments import ball_argument, racket_argument, swing_argument
@@ -125,7 +126,7 @@ def _variant(racket: Racket, string_stiffness=None, tension=None, f1=None, suppo
     strings = (
         racket.strings
         if string_stiffness is None
-        else replace(racket.strings, stiffness=string_stiffness)
+        else restrung(racket.strings, stiffness=string_stiffness)  # a string's stretch follows
     )
     return replace(
         racket, beam=beam, strings=strings, support=racket.support if support is None else support

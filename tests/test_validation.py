@@ -24,23 +24,24 @@ KNOWN_GAPS = {
     "for all grips, fitted to both rackets by least squares",
     "savage-B-tight": "model drop 15.8 % vs 12.3 % (10.3-14.3 %): racket B's tight grip "
     "drops less than A's; one tight grip cannot meet both",
+    **{
+        f"ert-{string}-40": "model 22.2 kp/cm vs the ERT's 28-46 in play: the membrane model, "
+        "in proportion to the tension and set to the seed's 3e4 N/m at 55 lb, meets the ERT "
+        "range from about 53 lb only; a DT measured against the tension would say which is off"
+        for string in ("polyester", "nylon", "multifilament", "natural-gut")
+    },
     # validation
-    "seed-clamped-e": "model 0.901 vs about 0.88 (0.86-0.90): no loss in the strings or the "
-    "clamped frame",
-    "cross-1m-drop-e": "model 0.917 vs 0.837 (0.81-0.87): no loss in the strings or the "
-    "clamped frame",
-    "hamori-drive-polyester-67-forehand": "model 4.51 ms vs 3.8 ms (3.3-4.3)",
-    "hamori-drive-polyester-67-volley": "model 4.65 ms vs 3.75 ms (3.25-4.25)",
-    "hamori-drive-polyester-37-forehand": "model 5.55 ms vs 4.9 ms (4.4-5.4)",
-    "hamori-drive-polyester-37-volley": "model 5.65 ms vs 4.1 ms (3.6-4.6)",
-    "hamori-drive-polyester-37-serve": "model 5.43 ms vs 4.0 ms (3.5-4.5)",
-    "hamori-85-polyester-54-forehand": "model 4.74 ms vs 3.6 ms (3.1-4.1): no string "
-    "material, polyester as soft as gut",
-    "hamori-97-gut-54-volley": "model 4.92 ms vs 4.1 ms (3.6-4.6)",
-    "hamori-97-gut-54-serve": "model 4.65 ms vs 3.7 ms (3.2-4.2)",
-    "twu-pivot-centre": "model 0.47 vs about 0.4 (0.35-0.45)",
-    "twu-pivot-throat": "model 0.41 vs about 0.5 (0.45-0.55)",
-    "typical-throat": "model 0.41 vs 0.50 (0.45-0.55)",
+    "cross-1m-drop-e": "model 0.896 vs 0.837 (0.81-0.87): the strings' loss (5.9 %) took it "
+    "from 0.917; the rest would be the ball's own loss at a drop's low compression on strings "
+    "(no published COR against speed to check it) or the bed's mass, not modelled",
+    "hamori-drive-polyester-67-volley": "model 4.43 ms vs 3.75 ms (3.25-4.25): the volley's "
+    "20 m/s closing speed is an assumption",
+    "hamori-drive-polyester-37-volley": "model 4.96 ms vs 4.1 ms (3.6-4.6): as the 67 lb volley",
+    "hamori-85-polyester-54-forehand": "model 4.18 ms vs 3.6 ms (3.1-4.1): polyester's stretch "
+    "makes it only 0.19 ms shorter than gut in the model, 0.9 ms in Hamori's strokes",
+    "hamori-97-gut-54-volley": "model 4.72 ms vs 4.1 ms (3.6-4.6): as the other volleys",
+    "twu-pivot-throat": "model 0.39 vs about 0.5 (0.45-0.55)",
+    "typical-throat": "model 0.38 vs 0.50 (0.45-0.55)",
 }
 """The comparisons the model is known to miss, and by how much (the measured gap)."""
 

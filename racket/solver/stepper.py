@@ -183,6 +183,13 @@ def bed_law(strings, code: int) -> np.ndarray:
     its stretch [1/m^2] and loss [-]; a linear, lossless bed for the unhappy ball, whose
     return mapping takes the strings as a linear spring (:func:`racket.solver.driver.impact`
     says so when it drops a bed's stretch or loss).
+
+    Parameters
+    ----------
+    strings : racket.StringBed
+        The racket's string bed.
+    code : int
+        The ball law's code (:data:`racket.solver.layout.SINE` ...).
     """
     if code == layout.SINE:
         return np.zeros(2)

@@ -22,7 +22,7 @@ from studies.cli.options import (
     refuse_unused,
     speed_unit,
 )
-from studies.cli.racket_options import add_racket_options, racket_from
+from studies.cli.racket_options import STRING_OPTIONS, add_racket_options, racket_from
 from studies.conditions import speed_text
 from studies.config import load_ball
 from studies.tables import history_table
@@ -168,7 +168,7 @@ def cmd_drop(args) -> int:
 
     check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
     if args.onto == "floor":
-        refuse_unused(args, ("racket", "tension_lb", "string_stiffness", "lead"),
+        refuse_unused(args, ("racket", *STRING_OPTIONS, "lead"),
                       "to a drop onto the floor: add --onto strings or --onto racket")  # fmt: skip
     elif args.onto == "strings":  # the head clamped: the frame does not move
         refuse_unused(args, ("lead",), "to the strings of a clamped head (the frame does not "

@@ -135,7 +135,9 @@ def _strung(args, racket, value):
         from racket.specs.strings import with_tension
 
         return with_tension(racket, _tension(value))
-    return replace(racket, strings=replace(racket.strings, stiffness=value))
+    from racket.stringing import restrung
+
+    return replace(racket, strings=restrung(racket.strings, stiffness=value))
 
 
 def _said(args, value) -> str:

@@ -1,6 +1,8 @@
 """The options that describe the racket, the same on every command that takes one:
-``--racket``, ``--support``, ``--grip``, ``--tension-lb``, ``--string-stiffness`` and
-``--lead GRAMS@CLOCK``; the racket made from them, and the conditions line of a run.
+``--racket``, ``--support``, ``--grip``, what it is strung with (``--string``, ``--gauge``,
+``--pattern``, ``--tension-lb`` or ``--tension-kg``, ``--played``; or the bed's stiffness,
+``--string-stiffness`` or the ERT's ``--string-bed-dt``) and ``--lead GRAMS@CLOCK``; the
+racket made from them, and the conditions line of a run.
 """
 
 from __future__ import annotations
@@ -9,14 +11,26 @@ import re
 from dataclasses import replace
 
 from common.checks import KN_AS_N, in_range, shown
-from racket import DEFAULT_RACKET, GRIPS, SUPPORTS
+from common.units import GRAVITY, KP_PER_CM
+from racket import DEFAULT_RACKET, GRIPS, STRINGS, SUPPORTS
 from racket.racket import ADDED_MASS_MAX
-from studies.cli.options import _Once, _tension, refuse_unused, speed_unit
+from racket.stringing import GAUGE_RANGE, GAUGES, diameter, parse_pattern, restrung, stringing
+from studies.cli.options import _Once, _tension, given, refuse_unused, speed_unit
 from studies.conditions import conditions_line, racket_details
 from studies.config import RACKETS, load_racket
+from studies.string_inputs import DT_RANGE, LB_AS_KG, N_M_AS_KP_CM, TENSION_KG_RANGE
 from studies.sweeps import STRING_STIFFNESS_RANGE
 
 _LEAD = re.compile(r"^\s*(\d+(?:\.\d*)?|\.\d+)\s*(?:g)?\s*@\s*(.+?)\s*$")
+
+STRING_OPTIONS = (
+    "string", "gauge", "pattern", "played", "tension_lb", "tension_kg", "string_stiffness",
+    "string_bed_dt",
+)  # fmt: skip
+"""The options (their ``dest``) that say what a racket is strung with."""
+
+GAUGE_MM = tuple(1e3 * g for g in GAUGE_RANGE)
+"""The gauges ``--gauge`` takes [mm]."""
 
 LEAD_GRAMS = (0.1, 1e3 * ADDED_MASS_MAX)
 """Lead tape per side [g]: from a tenth of a gram (an assumption: less is no tape) to
@@ -28,8 +42,9 @@ def add_racket_options(
 ):
     """The racket's options on the subparser ``p``: ``--racket`` (with ``racket``: compare
     takes several, its own way), ``--support`` and ``--grip`` (with ``support``),
-    ``--tension-lb``, ``--string-stiffness`` and ``--lead``; ``many``: several tensions,
-    stiffnesses and supports (a grid).
+    ``--string``, ``--gauge``, ``--pattern``, ``--played``, ``--tension-lb``,
+    ``--string-stiffness`` (with ``racket``, ``--tension-kg`` and ``--string-bed-dt`` too)
+    and ``--lead``; ``many``: several tensions, stiffnesses and supports (a grid).
     """
     if racket:
         _racket_option(p)
@@ -46,19 +61,59 @@ def add_racket_options(
             "medium grip unless its file says otherwise)",
         )  # fmt: skip
     p.add_argument(
+        "--string", action=_Once, metavar="NAME",
+        help=f"what the racket is strung with: {', '.join(STRINGS)}, or MAINS/CROSSES for a "
+        "hybrid, e.g. natural-gut/polyester (default: the racket's; give one of --string, "
+        "--gauge, --pattern, --played and the others stay the racket's)",
+    )  # fmt: skip
+    p.add_argument(
+        "--gauge", action=_Once, metavar="MM_OR_NAME",
+        help=f"the string's gauge [mm, {GAUGE_MM[0]:g}-{GAUGE_MM[1]:g}], or a name: "
+        f"{', '.join(GAUGES)} (default: the string's own)",
+    )  # fmt: skip
+    p.add_argument(
+        "--pattern", action=_Once, metavar="MxC",
+        help="string pattern, mains x crosses, e.g. 16x19 or 18x20 (default: the racket's)",
+    )  # fmt: skip
+    p.add_argument(
+        "--played", action=_OnceTrue,
+        help="played strings: the tension lost in TWU's impact test (default: fresh)",
+    )  # fmt: skip
+    p.add_argument(
         "--tension-lb", type=float, nargs=nargs, action=_Once, metavar="LB",
         help=f"string tension{'(s)' if many else ''} [lb]: the string bed's stiffness from the "
         "membrane model (default: the racket's)",
     )  # fmt: skip
+    if racket:  # compare labels its rackets by the tension in lb or the stiffness in N/m
+        p.add_argument(
+            "--tension-kg", type=float, nargs=nargs, action=_Once, metavar="KG",
+            help=f"or the tension{'(s)' if many else ''} in kg, as stringing machines show it",
+        )  # fmt: skip
     p.add_argument(
         "--string-stiffness", type=float, nargs=nargs, action=_Once, metavar="N_M",
         help=f"string-bed stiffness{'(es)' if many else ''} [N/m] (default: the racket's)",
     )  # fmt: skip
+    if racket:
+        p.add_argument(
+            "--string-bed-dt", type=float, nargs=nargs, action=_Once, metavar="KP_CM",
+            help="or the measured string-bed stiffness as the ERT's dynamic tension [kp/cm] "
+            "(1 kp/cm = 980.7 N/m; players' beds read 28-46)",
+        )  # fmt: skip
     p.add_argument(
         "--lead", nargs="+", action=_Once, metavar="GRAMS@CLOCK",
         help="lead tape: grams per side at a clock position of the head, e.g. 3@12 (the "
         "tip), 2@3/9 (both sides), 4@6 (the throat)",
     )  # fmt: skip
+
+
+class _OnceTrue(_Once):
+    """A flag (``--played``): True when given, refused twice, its ``given`` said."""
+
+    def __init__(self, option_strings, dest, **kwargs):
+        super().__init__(option_strings, dest, nargs=0, default=False, **kwargs)
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        super().__call__(parser, namespace, True, option_string)
 
 
 def _racket_option(p) -> None:
@@ -72,22 +127,58 @@ def _racket_option(p) -> None:
 
 
 def tensions(args) -> list[float] | None:
-    """``--tension-lb`` values in N (a list), None if not given; not with the stiffness."""
+    """``--tension-lb`` or ``--tension-kg`` values in N (a list), None if not given; one of
+    them, and not with a stiffness (``--string-stiffness``, ``--string-bed-dt``).
+    """
+    typed = given(args, "tension_lb", "tension_kg", "string_stiffness", "string_bed_dt")
+    if len(typed) > 1:
+        raise ValueError(f"give one of {' or '.join(typed)}, not both: each sets the bed's "
+                         "stiffness")  # fmt: skip
+    if getattr(args, "tension_kg", None) is not None:
+        kg = [in_range("--tension-kg", t, *TENSION_KG_RANGE, "kg", slips=(LB_AS_KG,))
+              for t in _many(args.tension_kg)]  # fmt: skip
+        return [t * GRAVITY for t in kg]
     if args.tension_lb is None:
         return None
-    if args.string_stiffness is not None:
-        raise ValueError("give --string-stiffness or --tension-lb, not both")
     return [_tension(t) for t in _many(args.tension_lb)]
 
 
 def stiffnesses(args) -> list[float] | None:
-    """``--string-stiffness`` values [N/m] checked (a list), None if not given."""
+    """``--string-stiffness`` [N/m] or ``--string-bed-dt`` [kp/cm] values in N/m, checked (a
+    list), None if neither was given.
+    """
+    if getattr(args, "string_bed_dt", None) is not None:
+        hint, slips = "; in N/m: --string-stiffness", (N_M_AS_KP_CM,)
+        return [
+            KP_PER_CM * in_range("--string-bed-dt", dt, *DT_RANGE, "kp/cm", hint, slips)
+            for dt in _many(args.string_bed_dt)
+        ]
     if args.string_stiffness is None:
         return None
     return [
         in_range("--string-stiffness", k, *STRING_STIFFNESS_RANGE, "N/m", slips=(KN_AS_N,))
         for k in _many(args.string_stiffness)
     ]
+
+
+def restring(racket, args, stiffness: float | None = None):
+    """``racket`` strung as ``--string``, ``--gauge``, ``--pattern`` and ``--played`` say
+    (:func:`racket.stringing.restrung`: what is given replaces the racket's), with the bed's
+    ``stiffness`` [N/m] if given; each option checked and refused as typed.
+    """
+    gauge = args.gauge and diameter(args.gauge, "--gauge", "mm")
+    pattern = args.pattern and parse_pattern(args.pattern, "--pattern")
+    if args.string is not None:
+        stringing(args.string, gauge)  # refused as typed before any work
+    elif racket.strings.stringing is None:
+        for flag in given(args, "gauge", "pattern", "played"):
+            raise ValueError(
+                f"{flag} describes a string, and this racket's bed is a plain spring with "
+                "none: add --string, e.g. --string polyester"
+            )
+    state = "played" if args.played else None
+    return replace(racket, strings=restrung(racket.strings, args.string, gauge, pattern, state,
+                                            stiffness))  # fmt: skip
 
 
 def _many(value) -> list:
@@ -133,17 +224,15 @@ def racket_from(args, spec: str | None = None, grid: bool = False):
     """
     racket = lead_tape(load_racket(spec or args.racket), args.lead)
     supports = _many(getattr(args, "support", None) or [racket.support])
-    if not grid:
-        racket = replace(racket, support=supports[0])
-        newtons, stiffness = tensions(args), stiffnesses(args)
+    newtons, stiffness = tensions(args), stiffnesses(args)  # checked before any work
+    if grid:
+        racket = restring(racket, args)
+    else:
+        racket = restring(replace(racket, support=supports[0]), args, stiffness and stiffness[0])
         if newtons:
             from racket.specs.strings import with_tension
 
             racket = with_tension(racket, newtons[0])
-        elif stiffness:
-            racket = replace(racket, strings=replace(racket.strings, stiffness=stiffness[0]))
-    else:
-        tensions(args), stiffnesses(args)  # checked before any work
     if getattr(args, "grip", None):
         if "hand-held" not in supports:
             raise ValueError(
@@ -168,9 +257,9 @@ def modes_options(args) -> None:
     """The racket's options that ``modes`` does not take refused in one line: its modes are
     the free frame's, whatever holds or strings it.
     """
-    refuse_unused(args, ("support", "grip", "tension_lb", "string_stiffness"), "to modes (the "
-                  "free frame's modes and mass properties, whatever holds or strings it): "
-                  "racket-impact specs gives the modes held by the hand")  # fmt: skip
+    refuse_unused(args, ("support", "grip", *STRING_OPTIONS), "to modes (the free frame's modes "
+                  "and mass properties, whatever holds or strings it): racket-impact specs "
+                  "gives the modes held by the hand")  # fmt: skip
 
 
 def racket_conditions(
@@ -182,15 +271,31 @@ def racket_conditions(
     :class:`racket.Swing`, said with its head speed); ``each_own``: several rackets, each
     with its own strings and hand unless the options set them.
     """
-    details = racket_details(racket)
+    typed = {
+        unit: ", ".join(shown(v) for v in _many(value))
+        for unit, value in (("lb", getattr(args, "tension_lb", None)),
+                            ("kg", getattr(args, "tension_kg", None)),
+                            ("N/m", getattr(args, "string_stiffness", None)),
+                            ("kp/cm", getattr(args, "string_bed_dt", None)))
+        if value is not None
+    }  # fmt: skip
+    tension = next((f"{v} {u}" for u, v in typed.items() if u in ("lb", "kg")), None)
+    stiffness = next((f"{v} {u}" for u, v in typed.items() if u in ("N/m", "kp/cm")), None)
+    details = racket_details(racket, tension)
+    strung = None if each_own else racket.strings.stringing
     if each_own:
-        details["strings"] = "each its own strings"
+        gauge = args.gauge and args.gauge + (" gauge" if args.gauge.upper() in GAUGES else " mm")
+        restrung_as = [args.string, gauge, args.pattern, "played" if args.played else None]
+        said = ", ".join(word for word in restrung_as if word)
+        details["strings"] = "each its own strings" + (f" but {said}" if said else "")
         details["grip"] = "each its own grip" if details["grip"] else None
-    if getattr(args, "tension_lb", None) is not None:
-        details["strings"] = f"strings at {', '.join(shown(t) for t in _many(args.tension_lb))} lb"
-    if getattr(args, "string_stiffness", None) is not None:
-        typed = ", ".join(shown(k) for k in _many(args.string_stiffness))
-        details["strings"] = f"strings {typed} N/m"
+    if stiffness:  # as typed (several: a grid's), the ERT's DT said as such
+        stiffness = f"DT {stiffness}" if stiffness.endswith("kp/cm") else stiffness
+        details["strings"] = (
+            f"{strung.describe('')}, {stiffness}" if strung else f"strings {stiffness}"
+        )
+    elif tension and (strung is None or "," in tension):  # a grid's: no one stiffness
+        details["strings"] = strung.describe(tension) if strung else f"strings at {tension}"
     supports = getattr(args, "support", None)
     if isinstance(supports, list) and len(supports) > 1:
         details["support"] = " / ".join(supports)

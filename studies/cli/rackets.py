@@ -10,6 +10,7 @@ import textwrap
 
 from beam.beam import MAX_MODES
 from common.checks import M_AS_CM, S_AS_MS, in_range
+from common.units import KP_PER_CM
 from racket.specs.ra import ra_note
 from studies.cli.files import check_outputs, save_plot, say_conditions, write_table
 from studies.cli.options import _ball_arg, _count, _print_table, _speed, _speed_option
@@ -123,6 +124,7 @@ def cmd_specs(args) -> int:
         print()
     print("the racket (with any lead tape, strings and support of the file or the options):")
     _print_table(report.properties, "{:.4g}")
+    print(f"\n{bed_text(racket.strings)}")
     print(
         "\nmodes: free-free, and held by the hand\n(stiffness "
         f"{racket.hand.stiffness:g} N/m, damping {racket.hand.damping:g} N s/m over "
@@ -155,6 +157,28 @@ def cmd_specs(args) -> int:
 
         save_plot(plot_modes(racket, count=count, conditions=conditions), args.plot)
     return 0
+
+
+def bed_text(bed) -> str:
+    """The string bed as ``specs`` prints it: its stiffness [N/m] and the ERT's DT [kp/cm],
+    and, for a strung bed, its stretch, loss and mass (:mod:`racket.stringing`).
+    """
+    said = (
+        f"string bed: {bed.stiffness:.0f} N/m at its centre (ERT dynamic tension "
+        f"{bed.stiffness / KP_PER_CM:.3g} kp/cm)"
+    )
+    strung = bed.stringing
+    if strung is None:
+        said += ", linear and lossless (the paper's spring)" if bed.plain else ""
+        return textwrap.fill(said, WIDTH, subsequent_indent="  ")
+    aspect = (bed.extent[1] - bed.extent[0]) / bed.full_width
+    said += (
+        f"; {strung.describe()}; stretch {bed.stretch:.4g} 1/m^2 ({100 * bed.stretch * 1e-4:.3g} "
+        f"% stiffer at 1 cm); loss {100 * bed.loss:.3g} % of what it stores; strings "
+        f"{1e3 * strung.mass(bed.area, aspect):.3g} g inside the head, "
+        f"{1e3 * strung.moving_mass(bed.area, aspect):.2g} g moving with the ball"
+    )
+    return textwrap.fill(said, WIDTH, subsequent_indent="  ")
 
 
 def add_feel(sub) -> None:

@@ -38,6 +38,9 @@ LABELS = {
     "serve_simulated_m_s": "serve (simulated) [m/s]",
     "serve_simulated_mph": "serve (simulated) [mph]",
     "serve_simulated_kmh": "serve (simulated) [km/h]",
+    "dt_kp_cm": "DT [kp/cm]",
+    "stiffness_kN_m": "stiffness [kN/m]",
+    "stretch_1_m2": "stretch [1/m^2]",
 }
 """Labels of the columns whose names do not read well by :func:`label`'s rule."""
 

@@ -145,13 +145,16 @@ def cmd_sweep(args) -> int:
             executor=executor,
         )
     varying = list(table.columns[len(COLUMNS) :])  # the parameters that vary
-    table = _in_units(table, unit, args.tension_lb is not None)
+    tension_unit = "kg" if getattr(args, "tension_kg", None) is not None else (
+        "lb" if args.tension_lb is not None else None)  # fmt: skip
+    table = _in_units(table, unit, tension_unit)
     suffix = SPEED_SUFFIXES[unit]
     shown = ["position_from_tip_cm", "e", "e_A"]  # the rest: --out
     shown += ["recontacts"] if table["recontacts"].any() else []
     shown += [f"ball_rebound_{suffix}", "vibration_energy_fraction"]
     shown += [f"swing_speed_{suffix}"] if swing is not None else []  # the rebound: exit speed
-    units = {"speed_m_s": f"speed_{suffix}", "tension_N": "tension_lb" if args.tension_lb else None}
+    units = {"speed_m_s": f"speed_{suffix}",
+             "tension_N": f"tension_{tension_unit}" if tension_unit else None}  # fmt: skip
     shown_grid = [units.get(c, c) or c for c in varying]
     _print_table(_every_group_alike(table, varying)[list(dict.fromkeys(shown + shown_grid))])
     _say_recontacts(table)
@@ -235,16 +238,18 @@ def _ends(args, racket) -> tuple[list[float], str]:
     return [end / 100 for end in ends], note
 
 
-def _in_units(table, unit: str, lb: bool):
+def _in_units(table, unit: str, tension_unit: str | None):
     """``table`` with its speeds also in ``unit`` (as the user typed them:
-    :func:`studies.cli.options.in_speed_unit`) and its tensions also in lb (``lb``).
+    :func:`studies.cli.options.in_speed_unit`) and its tensions also in ``tension_unit``
+    ("lb" or "kg", as typed; None: N only).
     """
-    from common.units import LB
+    from common.units import GRAVITY, LB
 
     table = in_speed_unit(table, unit)
-    return (
-        table.assign(tension_lb=table["tension_N"] / LB) if lb and "tension_N" in table else table
-    )
+    if tension_unit is None or "tension_N" not in table:
+        return table
+    size = {"lb": LB, "kg": GRAVITY}[tension_unit]
+    return table.assign(**{f"tension_{tension_unit}": table["tension_N"] / size})
 
 
 def _say_recontacts(table) -> None:

@@ -12,11 +12,12 @@ from functools import cache
 import numpy as np
 import pandas as pd
 
-from ball import BALL_PRESETS, WALL, collide
+from ball import BALL_PRESETS, WALL, Ball, LinearSpring, collide
 from ball.catalog import ITF_DROP_SPEED, TWU_SPEED
-from common.units import GRAVITY
+from common.units import GRAVITY, LB
 from racket import CATALOG, GRIPS, Hand, from_specs, impact
 from racket.specs.ra import f1_from_ra
+from racket.stringing import stringing
 from racket.system import held_mode, held_system
 
 BALL = "itf-type-2"
@@ -31,6 +32,21 @@ DROP_1M_SPEED = math.sqrt(2.0 * GRAVITY * 1.0)
 """Speed [m/s] of a ball dropped from 1 m (4.43 m/s; air drag neglected): Cross's drop onto
 clamped strings, and the low-speed drop assumed for the seed paper's clamped-string e and
 contact time (Cross 2000, Sec. III gives no speed; "low speed")."""
+
+CLAMPED_STRING = "nylon"
+"""The string of the clamped-string drops, whose sources name none: nylon (synthetic gut) at
+its usual gauge, 16x19, **an assumption** (the commonest string before polyester spread in
+the 2000s).  The bed's stiffness is the row's; its stretch and loss follow from the string
+(:meth:`racket.stringing.Stringing.bed`)."""
+
+STEEL_BALL = Ball(mass=0.0571, law=LinearSpring(k=5e7))
+"""Kawazoe's steel ball, "a non-deforming ball": 5e7 N/m, about 1700 times the bed, at the
+tennis ball's mass (**an assumption**: he gives neither; on a head-clamped, massless bed
+the COR depends on neither)."""
+
+STEEL_SPEED = 10.0
+"""Speed [m/s] of the steel ball on the strings (**an assumption**: Kawazoe gives none; on
+a clamped bed the COR hardly depends on it, e**2 = 1 - loss)."""
 
 SEED_BED = 4e4
 """String-plane stiffness [N/m] for the seed paper's clamped-string numbers: its "typically
@@ -107,9 +123,14 @@ HAMORI_RACKETS = {
 }  # fmt: skip
 """Hamori's rackets as spec sheets: the closest row of the TWU table
 (``tests/data/twu_racquets_half.csv``: head size, strung mass, balance, swingweight, free
-frequency; 27 in long), named beside each.  The model has no string material: polyester and
-gut at one tension give the same bed (:func:`racket.specs.strings.string_bed_stiffness`,
-from the pull tension)."""
+frequency; 27 in long; all 16x19), named beside each.  Each row's string is strung fresh at
+its usual gauge (:data:`racket.stringing.STRINGS`; **an assumption**: Hamori names the
+material and the tension only): polyester and gut at one tension give the same stiffness
+(the membrane model, from the tension) but not the same stretch and loss."""
+
+HAMORI_PATTERN = (16, 19)
+"""String pattern of Hamori's rackets: the TWU table's rows named in
+:data:`HAMORI_RACKETS` are all 16x19."""
 
 
 @cache
@@ -130,15 +151,50 @@ def _wall_compression_mm() -> float:
     return 1e3 * float(ball.law.peak_compression(ball.mass, ITF_DROP_SPEED))
 
 
-@cache
-def _clamped(stiffness: float):
-    """The Pure Drive (2021) with its head clamped and a uniform bed of ``stiffness``: the
-    frame does not take part, so any strung racket gives the same numbers.
+def clamped_racket(stiffness: float, string: str = CLAMPED_STRING, tension_n=None):
+    """The Pure Drive (2021) with its head clamped and a uniform bed of ``string`` (a preset
+    of :data:`racket.stringing.STRINGS`) of ``stiffness`` [N/m], or at ``tension_n`` [N]
+    when ``stiffness`` is None: the frame does not take part, so any strung racket gives
+    the same numbers.
+
+    Parameters
+    ----------
+    stiffness : float or None
+        The bed's stiffness [N/m] (its stretch follows from it), or None for the tension's.
+    string : str
+        A preset string (default :data:`CLAMPED_STRING`).
+    tension_n : float or None
+        The string tension [N], with ``stiffness`` None.
     """
     racket = CATALOG["pure-drive-2021"].racket(support="clamped-head")
-    bed = replace(racket.strings, stiffness=stiffness, profile="uniform")
-    racket = replace(racket, strings=bed)
+    strung = stringing(string, tension_n=tension_n)
+    start, end = racket.strings.extent
+    bed = strung.bed((start, end), racket.strings.width, "uniform", stiffness=stiffness)
+    return replace(racket, strings=bed)
+
+
+@cache
+def _clamped(stiffness: float):
+    """The tennis ball dropped 1 m onto :func:`clamped_racket` of ``stiffness``."""
+    racket = clamped_racket(stiffness)
     return impact(racket, _ball(), racket.strings.center, DROP_1M_SPEED)
+
+
+@cache
+def _steel_cor(string: str, tension_lb: float) -> float:
+    """COR of :data:`STEEL_BALL` on :func:`clamped_racket` strung with ``string`` at
+    ``tension_lb``.
+    """
+    racket = clamped_racket(None, string, tension_lb * LB)
+    return float(impact(racket, STEEL_BALL, racket.strings.center, STEEL_SPEED).e)
+
+
+def _dt(string: str, tension_lb: float) -> float:
+    """The ERT's dynamic tension [kp/cm] of the Pure Drive (2021)'s bed strung with
+    ``string`` at ``tension_lb``.
+    """
+    area = CATALOG["pure-drive-2021"].racket().strings.area
+    return stringing(string, tension_n=tension_lb * LB).dt(area)
 
 
 @cache
@@ -166,15 +222,19 @@ def _grabiner_ratio() -> float:
 
 
 @cache
-def _hamori_racket(racket: str, tension_lb: float):
+def hamori_racket(racket: str, string: str, tension_lb: float):
+    """Hamori's ``racket`` (:data:`HAMORI_RACKETS`) strung fresh with ``string`` at
+    ``tension_lb``, hand-held (the medium grip).
+    """
     return from_specs(
-        support="hand-held", length_m=0.6858, tension_lb=tension_lb, **HAMORI_RACKETS[racket][1]
-    )
+        support="hand-held", length_m=0.6858, tension_lb=tension_lb, string=string,
+        pattern=HAMORI_PATTERN, **HAMORI_RACKETS[racket][1],
+    )  # fmt: skip
 
 
-@cache  # (two of Hamori's rows differ only in the string, which the model has not)
-def _hamori_ms(racket: str, tension_lb: float, stroke: str) -> float:
-    r = _hamori_racket(racket, tension_lb)
+@cache
+def _hamori_ms(racket: str, string: str, tension_lb: float, stroke: str) -> float:
+    r = hamori_racket(racket, string, tension_lb)
     return 1e3 * float(impact(r, _ball(), r.strings.center, STROKE_SPEEDS[stroke]).contact_time)
 
 

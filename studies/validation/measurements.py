@@ -8,30 +8,36 @@ import math
 
 from ball import BALL_PRESETS
 from ball.catalog import DROP_COMPRESSION, DROP_CONTACT_TIME
+from racket.stringing import STRINGS
 from studies.validation.comparison import Comparison
 from studies.validation.conditions import (
     BALL,
+    CLAMPED_STRING,
     CROSS_BED,
     DROP_1M_SPEED,
     HAMORI,
     HAMORI_BAND,
     HAMORI_RACKETS,
     SEED_BED,
+    STEEL_SPEED,
     STROKE_SPEEDS,
     STRUNG,
     TWU_SHEET,
     _clamped,
+    _dt,
     _grabiner_ratio,
     _hamori_ms,
     _ra_frequency,
     _ra_groups,
     _savage_drops,
+    _steel_cor,
     _twu_part_1,
     _twu_part_2,
     _typical,
     _wall_compression_mm,
     _wall_contact_ms,
     _wall_cor,
+    hamori_racket,
 )
 
 
@@ -47,7 +53,10 @@ _TWU_2 = "TWU 'Racquet Control' part 2 (own text)"
 _RACQUETTECH = "racquettech.com, 'ball speeds' (own text)"
 _SAVAGE = "Savage, PhD thesis, RMIT 2006, appendix (own text)"
 _ABOUT_E = "assumption: 'about' read as +/-0.05"
+_KAWAZOE = "Kawazoe, kawazoe-lab.com, post 813 (own text)"
+_ERT = "ert300.com, 'most players' DT values' (own text; 1 kp/cm = 980.665 N/m)"
 _TWU_RACKET = f"{1e3 * TWU_SHEET['mass_kg']:g} g {STRUNG}, medium grip"
+_CLAMPED = f"{CLAMPED_STRING} 16x19"
 
 
 def _itf(name: str, label: str) -> Comparison:
@@ -73,13 +82,38 @@ def _savage(label: str, free_hz: float, grip: str, held_hz: float, band) -> Comp
 def _hamori(racket: str, strings: str, tension_lb: float, stroke: str, ms: float):
     model_name = HAMORI_RACKETS[racket][0]
     speed = STROKE_SPEEDS[stroke]
+    string = "natural-gut" if strings == "gut" else strings
+    strung = hamori_racket(racket, string, tension_lb).strings.stringing.describe()
     return Comparison(
         f"hamori-{racket.split()[-1].lower()}-{strings}-{tension_lb:g}-{stroke}",
-        f"dwell time, {racket}, {strings} {tension_lb:g} lb, hand-held, {stroke} [ms]",
-        f"{racket} ({model_name}, TWU sheet), {strings} {tension_lb:g} lb, hand-held, "
+        f"dwell time, {racket}, {strung}, hand-held, {stroke} [ms]",
+        f"{racket} ({model_name}, TWU sheet), {strung} (gauge assumed), hand-held, "
         f"{speed:g} m/s closing (assumed), string centre",
         ms, ms - 1e3 * HAMORI_BAND, ms + 1e3 * HAMORI_BAND, HAMORI, "validation",
-        "assumption: +/-0.5 ms", lambda: _hamori_ms(racket, tension_lb, stroke),
+        "assumption: +/-0.5 ms", lambda: _hamori_ms(racket, string, tension_lb, stroke),
+    )  # fmt: skip
+
+
+def _steel(string: str, tension_lb: float) -> Comparison:
+    return Comparison(
+        f"steel-ball-{string}-{tension_lb:g}",
+        f"COR of a steel ball on head-clamped strings, {string} at {tension_lb:g} lb [-]",
+        f"a rigid ball at {STEEL_SPEED:g} m/s (assumed) on the Pure Drive (2021)'s bed, "
+        f"head clamped, {string} 16x19 at {tension_lb:g} lb, string centre",
+        *_about(0.97, 0.01), _KAWAZOE, "calibration",
+        "assumption: 'about 0.97' read as +/-0.01, 'regardless of type or tension'",
+        lambda: _steel_cor(string, tension_lb),
+    )  # fmt: skip
+
+
+def _ert(string: str, tension_lb: float) -> Comparison:
+    low, high = 28.0, 46.0
+    return Comparison(
+        f"ert-{string}-{tension_lb:g}",
+        f"string-bed stiffness (ERT DT), {string} at {tension_lb:g} lb [kp/cm]",
+        f"the Pure Drive (2021)'s bed (100 in^2), {string} 16x19 at {tension_lb:g} lb, fresh",
+        0.5 * (low + high), low, high, _ERT, "calibration",
+        "the source's 'most players' range, 28-46 kp/cm", lambda: _dt(string, tension_lb),
     )  # fmt: skip
 
 
@@ -136,25 +170,33 @@ def comparisons() -> list[Comparison]:
             )
         ),
         *(_ra(ra) for ra in (60, 66, 72)),
+        *(_steel(string, tension) for string in STRINGS for tension in (40.0, 65.0)),
+        *(_ert(string, tension) for string in STRINGS for tension in (40.0, 65.0)),
         Comparison(
-            "seed-clamped-e", f"e on head-clamped strings, a {SEED_BED / 1e3:g} kN/m bed [-]",
+            "seed-clamped-e",
+            f"e on head-clamped strings, {_CLAMPED}, a {SEED_BED / 1e3:g} kN/m bed [-]",
             f"ITF type 2, {DROP_1M_SPEED:.2f} m/s (low speed, assumed), uniform bed "
-            f"{SEED_BED:.0e} N/m, string centre", *_about(0.88, 0.02), _SEED, "validation",
+            f"{SEED_BED:.0e} N/m, {_CLAMPED} (assumed), string centre", *_about(0.88, 0.02),
+            _SEED, "validation",
             "assumption: 'about 0.88' read as +/-0.02", lambda: float(_clamped(SEED_BED).e),
         ),
         Comparison(
             "cross-1m-drop-e",
-            f"e on head-clamped strings, a {CROSS_BED / 1e3:g} kN/m bed, 1 m drop [-]",
+            f"e on head-clamped strings, {_CLAMPED}, a {CROSS_BED / 1e3:g} kN/m bed, 1 m drop "
+            "[-]",
             f"ITF type 2, {DROP_1M_SPEED:.2f} m/s, uniform bed {CROSS_BED:.0e} N/m, "
-            "string centre", math.sqrt(0.70), math.sqrt(0.65), math.sqrt(0.75), _CROSS_PAGE,
+            f"{_CLAMPED} (assumed), string centre", math.sqrt(0.70), math.sqrt(0.65),
+            math.sqrt(0.75), _CROSS_PAGE,
             "validation", "assumption: bounce 'about 0.70 m' read as 0.65-0.75 m "
             "(e = sqrt(h), derived)", lambda: float(_clamped(CROSS_BED).e),
         ),
         Comparison(
             "strings-contact-time",
-            f"contact time on head-clamped strings, a {SEED_BED / 1e3:g} kN/m bed [ms]",
+            f"contact time on head-clamped strings, {_CLAMPED}, a {SEED_BED / 1e3:g} kN/m bed "
+            "[ms]",
             f"ITF type 2, {DROP_1M_SPEED:.2f} m/s (low speed, assumed), head-clamped, "
-            f"uniform bed {SEED_BED:.0e} N/m", *_about(5.0, 0.5), _SEED + ", citing Cross 1999",
+            f"uniform bed {SEED_BED:.0e} N/m, {_CLAMPED} (assumed)", *_about(5.0, 0.5),
+            _SEED + ", citing Cross 1999",
             "validation", "assumption: 'about 5 ms' read as +/-0.5 ms",
             lambda: 1e3 * float(_clamped(SEED_BED).contact_time),
         ),

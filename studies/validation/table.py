@@ -38,6 +38,7 @@ def validation_table(items: list[Comparison] | None = None) -> pd.DataFrame:
 GROUPS = {
     "the ball on a rigid surface": ("rebound", "concrete"),
     "the ball on clamped strings": ("seed", "cross", "clamped", "strings"),
+    "the string bed (steel ball, ERT)": ("steel", "ert"),
     "the hand": ("savage", "grabiner"),
     "the frame's stiffness (RA)": ("ra",),
     "dwell times in real strokes (Hamori)": ("hamori",),
