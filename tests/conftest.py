@@ -26,6 +26,8 @@ settings.register_profile(
 settings.load_profile("racket-impact")
 
 SOLVER_FREE = {
+    "test_string_options",
+    "test_stringing",
     "test_ball_validation",
     "test_beam",
     "test_bounce",
