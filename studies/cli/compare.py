@@ -82,7 +82,7 @@ def cmd_compare(args) -> int:
         raise ValueError("--equal-effort needs a swing: --swing-speed (or -mph, -kmh)")
     labelled = _labels(names)
     supports = args.support or [None]
-    strings = args.tension_lb or args.string_stiffness or [None]
+    strings = _strings_grid(args)
     variants = len(supports) * len(strings)
     check_impacts(points * len(names) * variants, f"--points {points} x {len(names)} --racket")
     rackets = {}
@@ -91,9 +91,9 @@ def cmd_compare(args) -> int:
         for support in supports:
             for value in strings:
                 racket = base if support is None else replace(base, support=support)
-                racket = _strung(args, racket, value)
+                racket = _strung(args, racket, value[0])
                 extra = [support] if len(supports) > 1 else []
-                extra += [_said(args, value)] if len(strings) > 1 else []
+                extra += [value[1]] if len(strings) > 1 else []
                 rackets[" ".join([label, *extra])] = racket
     for racket in rackets.values():  # the points span each racket's strings
         _check_swing(args, swing, racket, racket.strings.extent)
@@ -123,23 +123,35 @@ def cmd_compare(args) -> int:
     return 0
 
 
+def _strings_grid(args) -> list:
+    """The tensions or stiffnesses to string every racket at, each (value [N or N/m], its
+    label as typed: "58 lb", "26 kg", "3e+04 N/m", "35 kp/cm"); [(None, "")] for none.
+    """
+    from studies.cli.racket_options import stiffnesses, tensions
+
+    typed = {"tension_lb": "lb", "tension_kg": "kg", "string_stiffness": "N/m",
+             "string_bed_dt": "kp/cm"}  # fmt: skip
+    for dest, unit in typed.items():
+        if getattr(args, dest, None) is not None:
+            values = tensions(args) if dest.startswith("tension") else stiffnesses(args)
+            said = [f"{shown(v)} {unit}" for v in getattr(args, dest)]
+            return [((dest.startswith("tension"), v), s) for v, s in zip(values, said, strict=True)]
+    return [((False, None), "")]
+
+
 def _strung(args, racket, value):
-    """``racket`` at the tension [lb] or string stiffness [N/m] ``value`` (None: as it is)."""
+    """``racket`` strung at ``value``, (is a tension, the tension [N] or stiffness [N/m]);
+    as it is for None.
+    """
     from dataclasses import replace
 
-    from studies.cli.options import _tension
-
-    if value is None:
+    tension, number = value
+    if number is None:
         return racket
-    if args.tension_lb is not None:
+    if tension:
         from racket.specs.strings import with_tension
 
-        return with_tension(racket, _tension(value))
+        return with_tension(racket, number)
     from racket.stringing import restrung
 
-    return replace(racket, strings=restrung(racket.strings, stiffness=value))
-
-
-def _said(args, value) -> str:
-    """A tension or a stiffness as a label's suffix."""
-    return f"{shown(value)} lb" if args.tension_lb is not None else f"{shown(value)} N/m"
+    return replace(racket, strings=restrung(racket.strings, stiffness=number))

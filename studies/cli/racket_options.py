@@ -42,9 +42,9 @@ def add_racket_options(
 ):
     """The racket's options on the subparser ``p``: ``--racket`` (with ``racket``: compare
     takes several, its own way), ``--support`` and ``--grip`` (with ``support``),
-    ``--string``, ``--gauge``, ``--pattern``, ``--played``, ``--tension-lb``,
-    ``--string-stiffness`` (with ``racket``, ``--tension-kg`` and ``--string-bed-dt`` too)
-    and ``--lead``; ``many``: several tensions, stiffnesses and supports (a grid).
+    ``--string``, ``--gauge``, ``--pattern``, ``--played``, ``--tension-lb`` or
+    ``--tension-kg``, ``--string-stiffness`` or ``--string-bed-dt``, and ``--lead``;
+    ``many``: several tensions, stiffnesses and supports (a grid).
     """
     if racket:
         _racket_option(p)
@@ -84,21 +84,19 @@ def add_racket_options(
         help=f"string tension{'(s)' if many else ''} [lb]: the string bed's stiffness from the "
         "membrane model (default: the racket's)",
     )  # fmt: skip
-    if racket:  # compare labels its rackets by the tension in lb or the stiffness in N/m
-        p.add_argument(
-            "--tension-kg", type=float, nargs=nargs, action=_Once, metavar="KG",
-            help=f"or the tension{'(s)' if many else ''} in kg, as stringing machines show it",
-        )  # fmt: skip
+    p.add_argument(
+        "--tension-kg", type=float, nargs=nargs, action=_Once, metavar="KG",
+        help=f"or the tension{'(s)' if many else ''} in kg, as stringing machines show it",
+    )  # fmt: skip
     p.add_argument(
         "--string-stiffness", type=float, nargs=nargs, action=_Once, metavar="N_M",
         help=f"string-bed stiffness{'(es)' if many else ''} [N/m] (default: the racket's)",
     )  # fmt: skip
-    if racket:
-        p.add_argument(
-            "--string-bed-dt", type=float, nargs=nargs, action=_Once, metavar="KP_CM",
-            help="or the measured string-bed stiffness as the ERT's dynamic tension [kp/cm] "
-            "(1 kp/cm = 980.7 N/m; players' beds read 28-46)",
-        )  # fmt: skip
+    p.add_argument(
+        "--string-bed-dt", type=float, nargs=nargs, action=_Once, metavar="KP_CM",
+        help="or the measured string-bed stiffness as the ERT's dynamic tension [kp/cm] "
+        "(1 kp/cm = 980.7 N/m; players' beds read 28-46)",
+    )  # fmt: skip
     p.add_argument(
         "--lead", nargs="+", action=_Once, metavar="GRAMS@CLOCK",
         help="lead tape: grams per side at a clock position of the head, e.g. 3@12 (the "
