@@ -27,6 +27,7 @@ from studies.dashboard import HEAD_SPEED_MAX_MPH, MY_SHEET, PageInputs, page_res
 from studies.page_cards import built_sides, error_cards, headline_cards, spots_table
 from studies.page_guard import ERROR_OUTPUT, PageGuard
 from studies.page_inputs import LABELS, LEAD_CLOCKS, STIFFNESS, page_inputs
+from studies.page_strings import STRING_WORDS
 
 DEFAULT_PORT = 8050
 """The page's default port (``mkdocs serve``, the docs, takes 8000)."""
@@ -99,6 +100,8 @@ def _controls():
         ui.input_slider("swing", label["swing"], 20, HEAD_SPEED_MAX_MPH, start.swing_mph, step=1),
         ui.input_slider("ball_speed", label["ball_speed"], 10, 80, start.ball_speed_mph, step=0.1),
         ui.input_slider("tension", label["tension"], 40, 70, start.tension_lb, step=1),
+        ui.input_select("string", label["string"], STRING_WORDS, selected=start.string),
+        ui.input_checkbox("played", label["played"], start.played),
         ui.input_select("ball", label["ball"], list(BALLS), selected=start.ball),
         ui.input_checkbox("at_wrist", label["at_wrist"], start.pivot_cm_from_tip is None),
         ui.panel_conditional(

@@ -1,10 +1,10 @@
 """What the interactive page shows, computed apart from the page (so that it is tested
 without a browser): two rackets, A and B (each a catalogue preset or the spec sheet; lead
-tape by clock position on A, one tension for both), a ball and a swing in; for each, the
-headline numbers a coach reads (serve speed, power at the centre, sweet area, feel, the
-racket's own numbers), the serve speed against the head speed, e_A and the swung exit speed
-along the racket, the face map and the sweet spots out; and B - A.  Every number comes from
-the functions the command line calls (:func:`studies.serve.serve_table`,
+tape by clock position on A; one string and tension for both), a ball and a swing in; for
+each, the headline numbers a coach reads (serve speed, power at the centre, sweet area,
+feel, the racket's own numbers), the serve speed against the head speed, e_A and the swung
+exit speed along the racket, the face map and the sweet spots out; and B - A.  Every number
+comes from the functions the command line calls (:func:`studies.serve.serve_table`,
 :func:`studies.maps.face_map`, ...) with the same defaults (:data:`racket.DEFAULT_RACKET`,
 :data:`ball.DEFAULT_BALL`, :data:`studies.sweeps.BALL_SPEED`), and every output says what it
 was computed for (:func:`page_conditions`).  A racket that cannot be built (an impossible
@@ -22,19 +22,19 @@ import numpy as np
 import pandas as pd
 
 from ball import DEFAULT_BALL
-from common.checks import SPEED_RANGE, in_range
-from common.units import LB, MPH
+from common.checks import FASTEST_HEAD, SPEED_RANGE, in_range
+from common.units import MPH
 from racket import CATALOG, DEFAULT_RACKET, Swing, from_specs, impact
 from racket.feel import hand_feel
 from racket.racket import ADDED_MASS_MAX
 from racket.specs.ra import ra_note
 from racket.specs.sheet import SPEC_RANGES
-from racket.specs.strings import with_tension
 from racket.swing import PIVOT_FROM_TIP_RANGE, equal_effort
 from studies.config import BALLS
 from studies.feel import FEEL_SUPPORT, feel_numbers
 from studies.maps import face_map
 from studies.page_conditions import page_conditions
+from studies.page_strings import OWN_STRINGS, STRING_LABELS, checked_strings, strung
 from studies.serve import serve, serve_table
 from studies.sweeps import BALL_SPEED
 from studies.sweetspots import sweet_spots
@@ -43,22 +43,20 @@ from studies.tables import impact_table
 MY_SHEET = "my spec sheet"
 """The racket choice that fits the page's spec-sheet fields."""
 
-HEAD_SPEED_MAX_MPH = 110.0
-"""The page's fastest racket-head speed [mph] (49.2 m/s): the head speed at which the
-catalogue's rackets serve the fastest recorded serve (:data:`common.checks.FASTEST_STROKE`,
-263.4 km/h, Sam Groth, Busan 2012; Reuters, "Groth fires down fastest recorded serve at
-263kph", 12 May 2012) off the string centre about the wrist with the tennis balls, about
-111-114 mph (:func:`studies.serve.head_speed_for`, measured on this model), rounded down: no
-position of the page's slider serves faster than anyone has (tests/test_page_truth.py).  It
-is below the fastest head speed assumed for any stroke (:data:`common.checks.FASTEST_HEAD`,
-115 mph; a professional's 120 mph serve is hit by the racket's tip at nearly 120 mph, the
-impact point about 22 % slower: popularmechanics.com/adventure/sports/a2072/4221210)."""
+HEAD_SPEED_MAX_MPH = float(np.floor(FASTEST_HEAD / MPH))
+"""The page's fastest racket-head speed [mph] (114): the fastest head speed assumed for any
+stroke (:data:`common.checks.FASTEST_HEAD`) in whole mph, the slider's step.  The catalogue's
+rackets, strung with polyester, serve the fastest recorded serve
+(:data:`common.checks.FASTEST_STROKE`, 263.4 km/h, Sam Groth, Busan 2012; Reuters, "Groth
+fires down fastest recorded serve at 263kph", 12 May 2012) off the string centre about the
+wrist at about 117 mph (:func:`studies.serve.head_speed_for`, measured on this model): no
+position of the slider serves faster than anyone has (tests/test_page_truth.py)."""
 
 LEAD_MAX_G = 1e3 * ADDED_MASS_MAX
 """The most lead tape per side the page takes [g]: what the command line's ``--lead``, the
 TOML's ``lead_tape`` and the API take (:data:`racket.racket.ADDED_MASS_MAX`)."""
 
-HEAD_SPEEDS_MPH = np.arange(20.0, HEAD_SPEED_MAX_MPH + 1.0, 10.0)
+HEAD_SPEEDS_MPH = np.r_[np.arange(20.0, HEAD_SPEED_MAX_MPH, 10.0), HEAD_SPEED_MAX_MPH]
 """Head speeds of the serve-speed curve [mph]: a slow feed to :data:`HEAD_SPEED_MAX_MPH`."""
 
 COMPARED = (
@@ -84,10 +82,11 @@ CONTROL_LABELS = {
     "ball_speed_mph": "Incoming ball speed [mph]",
     "pivot_cm_from_tip": "Swing pivot [cm from the tip]",
     "tension_lb": "Tension, both [lb]",
+    **STRING_LABELS,
     "lead_g": "Lead tape on A, per side [g]",
 }
-"""The speed, pivot, tension and lead controls as the page labels them (its sliders and its
-messages)."""
+"""The speed, pivot, strings, tension and lead controls as the page labels them (its
+sliders, select, box and its messages)."""
 
 _SHEET = tuple(SHEET_FIELDS)
 _FIT_NAMES = {  # how racket.specs names the sheet's fields in its messages
@@ -118,8 +117,11 @@ class PageInputs:
         Its clock position ("12", "3 and 9", ...).
     ball : str
         A ball preset (:data:`studies.config.BALLS`); default the ITF type 2 ball.
+    string, played : str, bool
+        What both rackets are strung with (:mod:`studies.page_strings`: default each
+        racket's own), played (True) or fresh.
     tension_lb : float
-        String tension of both rackets [lb]; default the catalogue's (55 lb).
+        String (reference) tension of both rackets [lb]; default the catalogue's (55 lb).
     ball_speed_mph : float
         Incoming ball speed [mph] (racket at rest, the groundstroke and the feel); default
         :data:`studies.sweeps.BALL_SPEED` (16.5 m/s, TWU's).
@@ -142,6 +144,8 @@ class PageInputs:
     lead_g: float = 0.0
     lead_at: str = "3 and 9"
     ball: str = DEFAULT_BALL
+    string: str = OWN_STRINGS
+    played: bool = False
     tension_lb: float = CATALOG[DEFAULT_RACKET].specs["tension_lb"]
     ball_speed_mph: float = BALL_SPEED / MPH
     swing_mph: float = 70.0
@@ -231,7 +235,7 @@ def page_racket(inputs: PageInputs):
 
 
 def _untaped(inputs: PageInputs, name: str, which: str):
-    """The racket ``name`` (input ``which``) at the controls' tension, before any tape."""
+    """The racket ``name`` (input ``which``) strung as the controls say, before any tape."""
     if name not in [*CATALOG, MY_SHEET]:
         raise ValueError(f"{which} must be one of {[*CATALOG, MY_SHEET]}, got {name!r}")
     sheet = None
@@ -239,16 +243,18 @@ def _untaped(inputs: PageInputs, name: str, which: str):
         low, high, _ = SPEC_RANGES["mass_kg"]  # checked in grams, as the page asks for them
         in_range(SHEET_FIELDS["mass_g"], inputs.mass_g, 1e3 * low, 1e3 * high, "g")
         sheet = tuple(getattr(inputs, k) for k in _SHEET)
-    return _built(name, inputs.tension_lb, sheet)
+    return _built(name, inputs.tension_lb, sheet, *checked_strings(inputs.string, inputs.played))
 
 
 @functools.lru_cache(maxsize=8)
-def _built(name: str, tension_lb: float, sheet: tuple | None):
-    """The racket ``name`` at ``tension_lb`` [lb], from the spec ``sheet`` (mass [g],
-    balance [cm], swingweight [kg cm^2], head size [in^2], f1 [Hz], RA) for
-    :data:`MY_SHEET` (kept: a fit and its modes take a second or two); a refusal of the
-    sheet in the page's words (:func:`said_on_page`).
+def _built(name: str, tension_lb: float, sheet: tuple | None, string: str, played: bool):
+    """The racket ``name`` at ``tension_lb`` [lb], strung with ``string``, fresh or
+    ``played`` (:func:`studies.page_strings.strung`), from the spec ``sheet`` (mass [g],
+    balance [cm], swingweight [kg cm^2], head size [in^2], f1 [Hz], RA) for :data:`MY_SHEET`,
+    else its catalogue sheet (kept: a fit and its modes take a second or two); a refusal of
+    the sheet in the page's words (:func:`said_on_page`).
     """
+    keywords = strung(name, string, played)
     if sheet is not None:
         mass_g, balance_cm, swingweight, head, f1_hz, ra = sheet
         try:
@@ -260,12 +266,13 @@ def _built(name: str, tension_lb: float, sheet: tuple | None):
                 f1_hz=f1_hz,
                 ra=ra,
                 tension_lb=tension_lb,
+                **keywords,
             )
         except ValueError as err:
             raise ValueError(said_on_page(str(err))) from None
     low, high, unit = SPEC_RANGES["tension_lb"]
-    tension = in_range("tension_lb", tension_lb, low, high, unit) * LB
-    return with_tension(CATALOG[name].racket(), tension)
+    tension_lb = in_range("tension_lb", tension_lb, low, high, unit)
+    return from_specs(**(CATALOG[name].specs | {"tension_lb": tension_lb}), **keywords)
 
 
 def said_on_page(message: str) -> str:
@@ -346,6 +353,7 @@ def page_results(inputs: PageInputs, points: int = 61) -> PageResults:
     low, high = (v / MPH for v in SPEED_RANGE)
     in_range(CONTROL_LABELS["ball_speed_mph"], inputs.ball_speed_mph, low, high, "mph")
     in_range(CONTROL_LABELS["tension_lb"], inputs.tension_lb, *SPEC_RANGES["tension_lb"])
+    checked_strings(inputs.string, inputs.played)
     in_range(CONTROL_LABELS["lead_g"], inputs.lead_g, 0.0, LEAD_MAX_G, "g")
     sides, errors = {}, {}
     for side, name, lead_g in (("A", inputs.racket, inputs.lead_g), ("B", inputs.racket_b, 0)):

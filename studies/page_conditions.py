@@ -1,6 +1,6 @@
 """What each output of the interactive page was computed for, one line each, as every table
 and plot of the command line says it (:func:`studies.conditions.conditions_line`): the
-rackets (support, grip, strings), the ball and its speed, the swing.
+rackets (support, grip, what they are strung with), the ball and its speed, the swing.
 """
 
 from __future__ import annotations
@@ -8,7 +8,7 @@ from __future__ import annotations
 from common.checks import shown
 from common.units import MPH
 from racket import Swing
-from studies.conditions import conditions_line
+from studies.conditions import conditions_line, racket_details
 
 
 def page_conditions(inputs, a, b) -> dict:
@@ -34,12 +34,15 @@ def page_conditions(inputs, a, b) -> dict:
         tape = f" with {shown(inputs.lead_g)} g of lead tape per side at {inputs.lead_at}"
     names = {"A": f"A {inputs.racket}{tape}", "B": f"B {inputs.racket_b}"}
     rackets = " and ".join(names[side] for side in built)
+    strung = {side: racket_details(one.racket)["strings"] for side, one in built.items()}
+    strings = next(iter(strung.values()))
+    if len(set(strung.values())) > 1:
+        strings = "; ".join(f"{side} {said}" for side, said in strung.items())
     pivot = None if inputs.pivot_cm_from_tip is None else inputs.pivot_cm_from_tip / 100
     swing = (
         f"swung at {shown(inputs.swing_mph)} mph head speed (the string centre's) "
         f"{Swing(inputs.swing_mph * MPH, pivot).pivot_words()}"
     )
-    strings = f"strings at {shown(inputs.tension_lb)} lb"
     speed = inputs.ball_speed_mph * MPH
 
     def line(who=rackets, at=speed, moving=None, **held):
@@ -58,5 +61,5 @@ def page_conditions(inputs, a, b) -> dict:
     held = {key: built[next(iter(built))].summary.get(f"feel_{key}") for key in ("support", "grip")}
     lines["feel"] = line(moving="at the string centre", **held)
     for side in built:
-        lines[f"face_{side.lower()}"] = line(who=names[side])
+        lines[f"face_{side.lower()}"] = line(who=names[side], strings=strung[side])
     return lines

@@ -13,6 +13,7 @@ from racket import CATALOG
 from racket.swing import WRIST_BEYOND_BUTT
 from studies.config import BALLS
 from studies.dashboard import CONTROL_LABELS, MY_SHEET, SHEET_FIELDS, PageInputs
+from studies.page_strings import PAGE_STRINGS
 
 LEAD_CLOCKS = ("3 and 9", "2 and 10", "12", "6")
 """The lead tape's clock positions the page offers (:meth:`racket.Racket.with_lead_tape`)."""
@@ -35,6 +36,8 @@ LABELS = {
     "swing": CONTROL_LABELS["swing_mph"],
     "ball_speed": CONTROL_LABELS["ball_speed_mph"],
     "tension": CONTROL_LABELS["tension_lb"],
+    "string": CONTROL_LABELS["string"],
+    "played": CONTROL_LABELS["played"],
     "ball": "Ball",
     "at_wrist": f"Pivot at the wrist ({100 * WRIST_BEYOND_BUTT:g} cm beyond the butt)",
     "pivot": CONTROL_LABELS["pivot_cm_from_tip"],
@@ -60,6 +63,13 @@ def _choice(name: str, value, choices) -> str:
     """The choice ``value`` of the control ``name``, one of ``choices``."""
     if not isinstance(value, str) or value not in choices:
         raise ValueError(f"{LABELS[name]} must be one of {list(choices)}, got {_quoted(value)}")
+    return value
+
+
+def _flag(name: str, value) -> bool:
+    """The tick box ``value`` of the control ``name``: true or false."""
+    if not isinstance(value, bool):
+        raise ValueError(f"{LABELS[name]} must be true or false, got {_quoted(value)}")
     return value
 
 
@@ -93,6 +103,7 @@ def page_inputs(raw: dict) -> PageInputs:
         The controls, of the types :class:`studies.dashboard.PageInputs` documents.
     """
     used = ["racket", "racket_b", "lead_g", "lead_at", "swing", "ball_speed", "tension"]
+    used += ["string", "played"]
     used += ["ball", "at_wrist"] + (["pivot"] if raw.get("at_wrist") is False else [])
     on_sheet = MY_SHEET in (raw.get("racket"), raw.get("racket_b"))
     if raw.get("stiffness") is not None:  # "f1" or "ra": also the input it reads
@@ -114,9 +125,7 @@ def page_inputs(raw: dict) -> PageInputs:
             _number(name, raw[name])
     if on_sheet:  # the stiffness not chosen is not given
         sheet[{"f1": "ra", "ra": "f1_hz"}[stiffness]] = None
-    at_wrist = raw["at_wrist"]
-    if not isinstance(at_wrist, bool):
-        raise ValueError(f"{LABELS['at_wrist']} must be true or false, got {_quoted(at_wrist)}")
+    at_wrist = _flag("at_wrist", raw["at_wrist"])
     return PageInputs(
         racket=_choice("racket", raw["racket"], [*CATALOG, MY_SHEET]),
         racket_b=_choice("racket_b", raw["racket_b"], [*CATALOG, MY_SHEET]),
@@ -124,6 +133,8 @@ def page_inputs(raw: dict) -> PageInputs:
         lead_at=_choice("lead_at", raw["lead_at"], LEAD_CLOCKS),
         ball=_choice("ball", raw["ball"], BALLS),
         tension_lb=_number("tension", raw["tension"]),
+        string=_choice("string", raw["string"], PAGE_STRINGS),
+        played=_flag("played", raw["played"]),
         ball_speed_mph=_number("ball_speed", raw["ball_speed"]),
         swing_mph=_number("swing", raw["swing"]),
         pivot_cm_from_tip=None if at_wrist else _number("pivot", raw["pivot"]),

@@ -28,7 +28,7 @@ SENT = {
     "racket": "pure-drive-2021", "racket_b": "pro-staff-97l-cv", "mass_g": 300,
     "balance_cm": 33, "swingweight": 315, "head": 100, "stiffness": "f1", "f1": 150, "ra": 66,
     "lead_g": 0, "lead_at": "3 and 9", "swing": 70, "ball_speed": 36.9084, "tension": 55,
-    "ball": "itf-type-2", "at_wrist": True, "pivot": 74,
+    "string": "own", "played": False, "ball": "itf-type-2", "at_wrist": True, "pivot": 74,
 }  # fmt: skip
 """The page's controls as a browser sends them at the start (the numeric inputs typed)."""
 
@@ -185,9 +185,10 @@ def _served(card: str) -> bool:
 def _fine(name: str, value) -> bool:
     """Whether ``value`` is one the page takes for the control ``name`` (of the page's
     controls with the spec sheet on A, the pivot not at the wrist, f1 chosen): RA unused
-    and left empty or as a number, the wrist box ticked.
+    and left empty or as a number, the wrist box or the played box ticked.
     """
-    return (name == "ra" and value in (None, 1e308)) or (name == "at_wrist" and value is True)
+    ticked = name in ("at_wrist", "played") and value is True
+    return (name == "ra" and value in (None, 1e308)) or ticked
 
 
 def _no_traceback(errors) -> None:

@@ -19,6 +19,7 @@ from common.checks import FASTEST_STROKE
 from common.units import MPH
 from racket import CATALOG, DEFAULT_RACKET, Swing, default_ball, default_racket
 from studies.app import app_ui
+from studies.conditions import racket_details
 from studies.config import BALLS
 from studies.dashboard import (
     HEAD_SPEED_MAX_MPH,
@@ -119,7 +120,8 @@ def test_the_feel_card_is_the_feel_command_s(page):
         )
     html = str(headline_cards(page, PageInputs().swing_mph))
     said = re.search(r'id="card_feel_conditions">([^<]*)<', html)[1]
-    assert "(hand-held, medium grip, strings at 55 lb)" in said
+    strung = racket_details(default_racket())["strings"]  # "polyester ... at 55 lb, ..."
+    assert "(hand-held, medium grip, " in said and strung in said and " at 55 lb" in strung
     shock = re.search(r'id="card_feel_a_0"[^>]*>([^<]*)<', html)[1]
     assert float(shock) == round(feel["feel_shock_g"], 1)
 
@@ -142,10 +144,12 @@ def test_no_head_speed_on_the_page_serves_faster_than_anyone_has():
 
 def test_every_card_names_its_conditions(page):
     html = str(headline_cards(page, PageInputs().swing_mph))
+    strung = [racket_details(r)["strings"] for r in (page.a.racket, page.b.racket)]
+    assert strung[0] == racket_details(default_racket())["strings"]
     for card in CARDS:
         said = re.search(rf'id="{card}_conditions">([^<]*)<', html)[1]
         assert "racket A pure-drive-2021 and B pro-staff-97l-cv" in said
-        assert "strings at 55 lb" in said
+        assert all(s in said and " at 55 lb" in s for s in strung)  # each racket's strings
         if card != "card_racket":
             assert f"ball {DEFAULT_BALL}" in said
     said = page.conditions
