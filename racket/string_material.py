@@ -133,7 +133,7 @@ MATERIALS = {
 """The string materials by name (sources: :data:`MATERIAL_SOURCES`)."""
 
 
-def material_key(name) -> str:
+def material_key(name, argument: str = "string") -> str:
     """The key of :data:`MATERIALS` that ``name`` (a key, a printed name or an alias, any
     case, spaces or hyphens) names; ValueError listing the materials otherwise.
 
@@ -142,12 +142,16 @@ def material_key(name) -> str:
     name : str
         What the user typed: "polyester", "poly", "co-poly", "nylon", "synthetic gut",
         "multifilament", "natural gut", "gut", ...
+    argument : str, optional
+        The argument or option it came from, as the message quotes it.
     """
-    said = str(name).strip().lower().replace("_", "-").replace(" ", "-")
+    if not isinstance(name, str):
+        raise TypeError(f"{argument} must be a string material's name (text), got {name!r}")
+    said = name.strip().lower().replace("_", "-").replace(" ", "-")
     for key, material in MATERIALS.items():
         if said in (key, material.name.replace(" ", "-"), *material.aliases):
             return key
     known = "; ".join(
         key + (f" ({', '.join(m.aliases)})" if m.aliases else "") for key, m in MATERIALS.items()
     )
-    raise ValueError(f"unknown string material {name!r}; materials: {known}")
+    raise ValueError(f"{argument}: unknown string material {name!r}; materials: {known}")

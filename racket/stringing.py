@@ -11,39 +11,25 @@ return by material (:mod:`racket.string_material`).
 
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass, replace
 
 import numpy as np
 
-from common.checks import INCH_AS_M, KG_AS_N, LB_AS_N, MM_AS_M, in_range, positive, shown, whole
+from common.checks import (
+    KG_AS_N,
+    LB_AS_N,
+    finite,
+    in_range,
+    positive,
+    shown,
+)
 from common.typechecks import choice
-from common.units import INCH, KP_PER_CM, LB
+from common.units import KP_PER_CM, LB
 from racket.head import HEAD_ASPECT
 from racket.racket import StringBed
 from racket.specs.strings import TENSION_RANGE_LB, string_bed_stiffness
 from racket.string_material import MATERIALS, Material, material_key
-
-GAUGES = {
-    "15": 1.45e-3, "15L": 1.37e-3, "16": 1.30e-3, "16L": 1.25e-3,
-    "17": 1.20e-3, "17L": 1.15e-3, "18": 1.10e-3, "19": 1.05e-3,
-}  # fmt: skip
-"""Diameter [m] of each gauge name.  The gauges are ranges (Ashaway, S. Crandall, "String
-gauge: the basic choice", ashawayusa.com: 15 1.41-1.49 mm, 15L 1.33-1.41, 16 1.26-1.34,
-17 1.16-1.26, 18 1.06-1.16; Tennis Express, "String Theory, Part II": 19 1.00-1.10 mm);
-each name takes about its range's middle, rounded to the 0.05 mm strings are sold in.  16L
-(1.25 mm) and 17L (1.15 mm) lie between their neighbours: **an assumption** (no chart found
-gives them), as strings labelled 16L are 1.25 mm."""
-
-GAUGE_RANGE = (1.00e-3, 1.50e-3)
-"""The gauges [m] a string may have: 19 to 15 gauge (:data:`GAUGES`)."""
-
-PATTERN_RANGE = ((12, 22), (14, 24))
-"""The mains and crosses [-] a pattern may have: generous around the 16x16 to 18x20 of
-tennis rackets (an assumption)."""
-
-REFERENCE_PATTERN = (16, 19)
-"""The pattern [-] of the membrane model's calibration (the paper's racket: the commonest)."""
+from racket.string_sizes import REFERENCE_PATTERN, diameter, parse_pattern
 
 STATES = ("fresh", "played")
 """A string bed's states: as strung, or "played": after the tension loss of TWU's impact
@@ -71,67 +57,6 @@ Ingard, Theoretical Acoustics, 1968, Sec. 5.2, the circular membrane).  The part
 that moves with the ball (:meth:`Stringing.moving_mass`)."""
 
 
-_GAUGE_SLIPS = {
-    "m": (MM_AS_M, INCH_AS_M),
-    "mm": ((1e3, "m typed as mm?", "m"), (1e3 * INCH, "inches typed as mm?", "in")),
-}
-
-
-def diameter(value, name: str = "gauge", unit: str = "m") -> float:
-    """A string's gauge [m] from a name of :data:`GAUGES` ("16L") or a diameter in ``unit``
-    in :data:`GAUGE_RANGE`; ValueError naming ``name`` and the value, with the range and a
-    likely slip of unit (mm or inches typed as m; m or inches as mm), or the names.
-
-    Parameters
-    ----------
-    value : str or float
-        A gauge name, or the diameter [``unit``] (a number, or a word that is one).
-    name : str, optional
-        The input's name as the user typed it ("gauge", "--gauge").
-    unit : str, optional
-        ``"m"`` (default) or ``"mm"``.
-    """
-    scale = 1e-3 if unit == "mm" else 1.0
-    if isinstance(value, str):
-        said = value.strip().upper()
-        if said in GAUGES:
-            return GAUGES[said]
-        try:
-            value = float(said)
-        except ValueError:
-            raise ValueError(
-                f"{name} must be a gauge name ({', '.join(GAUGES)}) or a diameter [{unit}], "
-                f"got {value!r}"
-            ) from None
-    named = isinstance(value, int | float) and str(value).removesuffix(".0") in GAUGES
-    hint = f" (a gauge name is a word: '{shown(value)}')" if named and unit == "m" else ""
-    low, high = (end / scale for end in GAUGE_RANGE)
-    return scale * in_range(name, value, low, high, unit, hint, slips=_GAUGE_SLIPS[unit])
-
-
-def parse_pattern(value, name: str = "pattern") -> tuple[int, int]:
-    """A string pattern (mains, crosses) from "16x19" or a pair; ValueError naming ``name``
-    and the value, with :data:`PATTERN_RANGE`, otherwise.
-
-    Parameters
-    ----------
-    value : str or (int, int)
-        "MAINSxCROSSES" (``"16x19"``) or (mains, crosses) [-].
-    name : str, optional
-        The input's name as the user typed it ("pattern", "--pattern").
-    """
-    pair = value
-    if isinstance(value, str):
-        match = re.fullmatch(r"\s*(\d+)\s*[xX*]\s*(\d+)\s*", value)
-        pair = (int(match[1]), int(match[2])) if match else None
-    if not isinstance(pair, tuple | list) or len(pair) != 2:
-        raise ValueError(f"{name} must be MAINSxCROSSES such as '16x19', got {shown(value)}")
-    (low_m, high_m), (low_c, high_c) = PATTERN_RANGE
-    return whole(f"{name} mains", pair[0], low_m, high_m), whole(
-        f"{name} crosses", pair[1], low_c, high_c
-    )
-
-
 @dataclass(frozen=True)
 class String:
     """One string: a material and a gauge.
@@ -149,7 +74,8 @@ class String:
 
     def __post_init__(self):
         if not isinstance(self.material, Material):
-            object.__setattr__(self, "material", MATERIALS[material_key(self.material)])
+            key = material_key(self.material, "material")
+            object.__setattr__(self, "material", MATERIALS[key])
         object.__setattr__(self, "gauge", diameter(self.gauge))
 
     @property
@@ -186,8 +112,16 @@ STRINGS = {
 others 16, 1.30 mm; an assumption).  A hybrid is named "MAINS/CROSSES"
 (``"natural-gut/polyester"``; :func:`stringing`)."""
 
+HYBRID = "natural-gut/polyester"
+"""The hybrid offered beside the presets (``racket-impact strings``, the page): natural-gut
+mains, polyester crosses, the classic hybrid (**an assumption**: no survey of hybrids was
+found)."""
 
-def string(name, gauge=None) -> String:
+STRING_CHOICES = (*STRINGS, HYBRID)
+"""The strings offered to compare: every preset of :data:`STRINGS` and :data:`HYBRID`."""
+
+
+def string(name, gauge=None, argument: str = "string") -> String:
     """The preset string ``name`` (:data:`STRINGS`, or a material's alias: "poly", "gut"),
     at ``gauge`` [m or a name] if given.
 
@@ -197,8 +131,10 @@ def string(name, gauge=None) -> String:
         The preset.
     gauge : float or str, optional
         Its gauge [m], or a name ("17"); default the preset's.
+    argument : str, optional
+        The argument or option ``name`` came from, as a message quotes it.
     """
-    preset = STRINGS[material_key(name)]
+    preset = STRINGS[material_key(name, argument)]
     return preset if gauge is None else String(preset.material, gauge)
 
 
@@ -213,7 +149,7 @@ class Stringing:
     crosses : String or str or None
         The crosses' string; None (default) for the mains' (a hybrid has two).
     pattern : (int, int) or str
-        Mains x crosses [-]: (16, 19) (default) or "16x19" (:data:`PATTERN_RANGE`).
+        Mains x crosses [-]: (16, 19) (default) or "16x19" (:data:`racket.string_sizes.PATTERN_RANGE`).
     tension : float or None
         Reference (stringing) tension [N], 20-80 lb; None when the bed's stiffness is
         measured instead (:meth:`bed`'s ``stiffness``).
@@ -228,9 +164,9 @@ class Stringing:
     state: str = "fresh"
 
     def __post_init__(self):
-        mains = self.mains if isinstance(self.mains, String) else string(self.mains)
+        mains = self.mains if isinstance(self.mains, String) else string(self.mains, None, "mains")
         crosses = self.crosses if self.crosses is not None else mains
-        crosses = crosses if isinstance(crosses, String) else string(crosses)
+        crosses = crosses if isinstance(crosses, String) else string(crosses, None, "crosses")
         object.__setattr__(self, "mains", mains)
         object.__setattr__(self, "crosses", crosses)
         object.__setattr__(self, "pattern", parse_pattern(self.pattern))
@@ -405,7 +341,9 @@ class Stringing:
         return f"{strings} {self.pattern[0]}x{self.pattern[1]}{tension}, {self.state}"
 
 
-def stringing(name, gauge=None, pattern=REFERENCE_PATTERN, tension_n=None, state="fresh"):
+def stringing(
+    name, gauge=None, pattern=REFERENCE_PATTERN, tension_n=None, state="fresh", argument="name"
+):
     """A :class:`Stringing` from a preset name (:data:`STRINGS`, or an alias) or a hybrid
     "MAINS/CROSSES" ("natural-gut/polyester").
 
@@ -421,11 +359,17 @@ def stringing(name, gauge=None, pattern=REFERENCE_PATTERN, tension_n=None, state
         Reference tension [N].
     state : str, optional
         ``"fresh"`` or ``"played"``.
+    argument : str, optional
+        The argument or option ``name`` came from, as a message quotes it ("--string").
     """
-    parts = str(name).split("/")
+    if not isinstance(name, str):
+        raise TypeError(f"{argument} must be a string's name (text), got {name!r}")
+    parts = name.split("/")
     if len(parts) > 2:
-        raise ValueError(f"string must be a preset or MAINS/CROSSES, got {name!r}")
-    mains, crosses = (string(part, gauge) for part in (parts * 2)[:2])
+        raise ValueError(f"{argument} must be a preset or MAINS/CROSSES, got {name!r}")
+    if tension_n is not None:
+        tension_n = finite("tension_n", tension_n, "N")
+    mains, crosses = (string(part, gauge, argument) for part in (parts * 2)[:2])
     return Stringing(mains, crosses, REFERENCE_PATTERN if pattern is None else pattern,
                      tension_n, state)  # fmt: skip
 

@@ -7,9 +7,9 @@ checked, said in the page's words, and turned into the keywords with which
 from __future__ import annotations
 
 from common.typechecks import choice, flag
-from racket import CATALOG, STRINGS
+from racket import CATALOG
 from racket.specs.catalog import STRUNG
-from racket.stringing import stringing
+from racket.stringing import STRING_CHOICES, stringing
 
 OWN_STRINGS = "own"
 """The choice that keeps each racket's own strings: a catalogue racket's
@@ -17,12 +17,10 @@ OWN_STRINGS = "own"
 a spec sheet, the catalogue's (:data:`racket.specs.catalog.STRUNG`), so that a spec sheet
 is compared with a catalogue racket on the same strings."""
 
-HYBRID = "natural-gut/polyester"
-"""The page's hybrid: natural-gut mains, polyester crosses (:func:`racket.stringing.stringing`)."""
-
-PAGE_STRINGS = (OWN_STRINGS, *STRINGS, HYBRID)
+PAGE_STRINGS = (OWN_STRINGS, *STRING_CHOICES)
 """The strings the page offers: each racket's own (:data:`OWN_STRINGS`), each preset of
-:data:`racket.STRINGS` and :data:`HYBRID`, a chosen one strung in the racket's own pattern."""
+:data:`racket.STRINGS` and the hybrid (:data:`racket.stringing.STRING_CHOICES`), a chosen
+one strung in the racket's own pattern."""
 
 STRING_LABELS = {
     "string": "Strings, both",

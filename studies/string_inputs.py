@@ -12,7 +12,8 @@ from common.typechecks import choice
 from common.units import GRAVITY, KP_PER_CM, LB
 from racket import StringBed
 from racket.specs.strings import TENSION_RANGE_LB
-from racket.stringing import STATES, diameter, parse_pattern, restrung, stringing
+from racket.string_sizes import diameter, parse_pattern
+from racket.stringing import STATES, restrung, stringing
 from studies.sweeps import STRING_STIFFNESS_RANGE
 
 TENSION_KG_RANGE = tuple(t * LB / GRAVITY for t in TENSION_RANGE_LB)
@@ -63,7 +64,7 @@ def strings_from_table(bed: StringBed, table: dict) -> tuple[StringBed, float | 
     state = table.get("state") and choice(f"{where} state", table["state"], STATES)
     stiffness = table.get("stiffness", KP_PER_CM * table.get("dt_kp_cm", 0.0)) or None
     if "string" in table:
-        stringing(table["string"], gauge)  # refused as typed before any work
+        stringing(table["string"], gauge, argument=f"{where} string")  # refused as typed
     elif bed.stringing is None and (gauge or pattern or state):
         raise ValueError(
             f"{where} gauge, pattern and state describe a string, and this bed is a plain "

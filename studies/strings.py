@@ -18,15 +18,8 @@ from common.checks import speed as check_speed
 from common.typechecks import instance
 from common.units import KP_PER_CM
 from racket import Racket, Swing, impact
-from racket.stringing import STRINGS, restrung
+from racket.stringing import STRING_CHOICES, restrung
 from studies.serve import serve
-
-HYBRID = "natural-gut/polyester"
-"""The hybrid the table shows beside the presets: gut mains, polyester crosses, the
-commonest hybrid (**an assumption**: no survey was found; chosen as the classic one)."""
-
-STRING_CHOICES = (*STRINGS, HYBRID)
-"""The strings :func:`string_table` compares by default."""
 
 
 def string_table(

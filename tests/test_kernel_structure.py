@@ -16,8 +16,8 @@ from ball import (
 )
 from ball.stiffening import StiffeningHysteresis
 from racket import impact, paper_ball, paper_racket
-from racket.solver import driver as solver
 from racket.solver import ball_kernel as kernel
+from racket.solver import driver as solver
 
 LAWS = [
     LinearSpring(4e4),

@@ -17,7 +17,7 @@ from common.units import LB, MPH
 from racket import CATALOG, DEFAULT_RACKET, MATERIALS, STRINGS, default_ball, from_specs, impact
 from racket.specs.catalog import STRUNG
 from racket.string_material import material_key
-from racket.stringing import stringing
+from racket.stringing import HYBRID, stringing
 from studies.app import app_ui
 from studies.conditions import racket_details
 from studies.dashboard import CONTROL_LABELS, MY_SHEET, PageInputs, page_racket, page_results
@@ -25,7 +25,7 @@ from studies.maps import face_map
 from studies.page_cards import headline_cards
 from studies.page_conditions import page_conditions
 from studies.page_inputs import LABELS, page_inputs
-from studies.page_strings import HYBRID, OWN_STRINGS, PAGE_STRINGS, strung
+from studies.page_strings import OWN_STRINGS, PAGE_STRINGS, strung
 from studies.serve import serve_table
 from studies.sweeps import BALL_SPEED, sweep
 

@@ -246,7 +246,7 @@ def test_first_compilation_is_announced_on_stderr(capsys):
     import time
     from types import SimpleNamespace
 
-    from racket import solver
+    from racket.solver import driver as solver
 
     with solver._compile_notice(SimpleNamespace(signatures=[]), after=0.05):
         time.sleep(0.3)  # a compilation in progress

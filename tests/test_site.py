@@ -153,11 +153,11 @@ def test_the_cli_page_shows_every_commands_help(site):
 
 def test_the_input_files_page_names_every_key_law_and_preset():
     from racket import GRIPS
-    from studies import config
+    from studies import config, string_inputs
 
     text = (DOCS / "toml.md").read_text()
     keys = set().union(
-        config._RACKET_KEYS, config._STRING_KEYS, config._SPEC_KEYS, config._LEAD_KEYS,
+        config._RACKET_KEYS, string_inputs.STRING_KEYS, config._SPEC_KEYS, config._LEAD_KEYS,
         config._HAND_KEYS, config._BALL_KEYS,
     )  # fmt: skip
     names = keys | set(config.LAWS) | set(config.RACKETS) | set(config.BALLS) | set(GRIPS)

@@ -107,7 +107,7 @@ def test_rigid_frame_gives_eq20_with_the_roll_term():
     1/m2 = 1/M + b^2/I_cm + y^2/I_roll (Eq. 20 and the roll), e_A = (m2 - m)/(m2 + m)."""
     base = CATALOG["pure-drive-2021"].racket()
     beam = base.beam.with_f1(5000.0).with_torsion_frequency(20000.0)
-    strings = replace(base.strings, stiffness=2e5, profile="uniform")
+    strings = replace(base.strings, stiffness=2e5, profile="uniform", stretch=0.0, loss=0.0)
     racket = Racket(beam, strings)
     ball = Ball(0.057, LinearSpring(2e4), 0.033)
     x = np.array([0.08, 0.17, 0.17, 0.25])

@@ -25,7 +25,8 @@ from racket import (
     stringing,
 )
 from racket.specs.strings import with_tension
-from racket.stringing import GAUGES, MODAL_MASS_RATIO, restrung
+from racket.string_sizes import GAUGES
+from racket.stringing import MODAL_MASS_RATIO, restrung
 
 DATA = Path(__file__).resolve().parent / "data"
 HUNDRED = 100.0 * IN2
@@ -289,7 +290,7 @@ def test_restringing_at_another_tension_keeps_the_strings():
         (lambda: Stringing("poly", tension=55), "lb typed as N? 55 lb would be 244.7 N"),
         (lambda: Stringing("poly", tension=25), "kg typed as N? 25 kg would be 245.2 N"),
         (lambda: Stringing("poly", state="old"), "state must be one of 'fresh', 'played'"),
-        (lambda: stringing("gut/poly/nylon"), "string must be a preset or MAINS/CROSSES"),
+        (lambda: stringing("gut/poly/nylon"), "name must be a preset or MAINS/CROSSES"),
         (lambda: Stringing("poly").stiffness(HUNDRED), "this stringing has no tension"),
         (lambda: from_specs(gauge="16L"), "gauge describes a string: give string too"),
     ],

@@ -8,9 +8,9 @@ import pytest
 
 from common.units import KP_PER_CM
 from racket import default_ball, default_racket, impact, paper_racket
-from racket.stringing import restrung
+from racket.stringing import STRING_CHOICES, restrung
 from studies.cli import main
-from studies.strings import STRING_CHOICES, string_table
+from studies.strings import string_table
 
 
 @pytest.fixture(scope="module")

@@ -142,7 +142,7 @@ def test_the_feel_is_followed_past_the_contact(racket):
 
     from racket.feel import hand_feel
 
-    soft = replace(racket, strings=replace(racket.strings, stiffness=1e4))
+    soft = replace(racket, strings=replace(racket.strings, stiffness=1e4, stretch=0.0, loss=0.0))
     with pytest.raises(ValueError, match=r"duration must be longer than the contact, 7"):
         hand_feel(soft, paper_ball(), racket.strings.center, 20.0, duration=0.005)
 

@@ -21,7 +21,15 @@ MARKER = re.compile(r"^<!-- api-reference: (?P<package>[\w.]+) -->$", re.M)
 
 
 def _target(obj: griffe.Object | griffe.Alias) -> str:
-    return obj.target_path if obj.is_alias else obj.path
+    """Where ``obj`` is defined: an alias followed to its end (``racket.impact`` through
+    ``racket.solver.impact`` to ``racket.solver.driver.impact``), or as far as it resolves.
+    """
+    if not obj.is_alias:
+        return obj.path
+    try:
+        return obj.final_target.path
+    except (griffe.AliasResolutionError, griffe.CyclicAliasError):
+        return obj.target_path
 
 
 def _exported(module: griffe.Module) -> set[str]:

@@ -14,7 +14,8 @@ from common.checks import KN_AS_N, in_range, shown
 from common.units import GRAVITY, KP_PER_CM
 from racket import DEFAULT_RACKET, GRIPS, STRINGS, SUPPORTS
 from racket.racket import ADDED_MASS_MAX
-from racket.stringing import GAUGE_RANGE, GAUGES, diameter, parse_pattern, restrung, stringing
+from racket.string_sizes import GAUGE_RANGE, GAUGES, diameter, parse_pattern
+from racket.stringing import restrung, stringing
 from studies.cli.options import _Once, _tension, given, refuse_unused, speed_unit
 from studies.conditions import conditions_line, racket_details
 from studies.config import RACKETS, load_racket
@@ -167,7 +168,7 @@ def restring(racket, args, stiffness: float | None = None):
     gauge = args.gauge and diameter(args.gauge, "--gauge", "mm")
     pattern = args.pattern and parse_pattern(args.pattern, "--pattern")
     if args.string is not None:
-        stringing(args.string, gauge)  # refused as typed before any work
+        stringing(args.string, gauge, argument="--string")  # refused as typed before any work
     elif racket.strings.stringing is None:
         for flag in given(args, "gauge", "pattern", "played"):
             raise ValueError(

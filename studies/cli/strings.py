@@ -22,7 +22,7 @@ from studies.sweeps import BALL_SPEED
 
 def add_strings(sub) -> None:
     """The ``strings`` subcommand, on the subparsers ``sub``."""
-    from studies.strings import STRING_CHOICES
+    from racket.stringing import STRING_CHOICES
 
     what = ("one racket strung with each string in turn: the bed's stiffness (DT), stretch "
             "and loss, power, dwell time and the serve")  # fmt: skip
@@ -46,7 +46,7 @@ def cmd_strings(args) -> int:
 
     check_outputs(tables=[("--out", args.out)])
     for name in args.strings:
-        stringing(name)  # refused before any work: one line naming it
+        stringing(name, argument="--strings")  # refused before any work: one line naming it
     racket = racket_from(args)
     speed, head = _speed(args, "speed"), _speed(args, "racket_speed")
     unit = speed_unit(args, "racket_speed", "speed")
