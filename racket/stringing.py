@@ -66,7 +66,7 @@ class String:
     material : Material or str
         A :class:`racket.string_material.Material`, or its name or alias ("poly", "gut").
     gauge : float or str
-        Its diameter [m], or a gauge name ("16L"; :data:`GAUGES`).
+        Its diameter [m], or a gauge name ("16L"; :data:`racket.string_sizes.GAUGES`).
     """
 
     material: Material
@@ -149,7 +149,8 @@ class Stringing:
     crosses : String or str or None
         The crosses' string; None (default) for the mains' (a hybrid has two).
     pattern : (int, int) or str
-        Mains x crosses [-]: (16, 19) (default) or "16x19" (:data:`racket.string_sizes.PATTERN_RANGE`).
+        Mains x crosses [-]: (16, 19) (default) or "16x19"
+        (:data:`racket.string_sizes.PATTERN_RANGE`).
     tension : float or None
         Reference (stringing) tension [N], 20-80 lb; None when the bed's stiffness is
         measured instead (:meth:`bed`'s ``stiffness``).
