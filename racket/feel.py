@@ -46,7 +46,8 @@ class HandFeel:
     t : (T,) ndarray
         Time since first contact [s].
     force : (T,) ndarray
-        Contact force on the strings [N] (0 once the ball has left).
+        Force of the strings on the frame [N] (the ball's on the strings, for a massless
+        bed; 0 once the ball has left).
     velocity, acceleration : (T,) ndarray
         Velocity [m/s] and acceleration [m/s^2] of the handle at ``grip`` along the ball's
         path, all of it (the velocity includes the racket and hand drifting away together).
@@ -172,7 +173,9 @@ def hand_feel(
             f"got {1e3 * duration:g} ms"
         )
     dt = hit.t[1] - hit.t[0]
-    force = np.nan_to_num(np.atleast_1d(hit.force), nan=0.0)
+    # the force on the frame (the bed's; its own vibration after the ball has left is not
+    # carried on)
+    force = np.nan_to_num(np.atleast_1d(hit.frame_force), nan=0.0)
     steps = int(np.ceil(duration / dt)) + 1
     force = np.concatenate([force, np.zeros(max(steps - force.size, 0))])[:steps]
     y = None if offset is None else np.atleast_1d(float(offset))

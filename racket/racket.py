@@ -26,6 +26,10 @@ BED_LOSS_MAX = 0.3
 """Largest :attr:`StringBed.loss` [-]: beyond a third, a stiffening bed's unloading curve
 could turn back on itself; strings lose about 5 % (Kawazoe's steel ball, COR 0.97)."""
 
+BED_MASS_MAX = 0.02
+"""Largest :attr:`StringBed.moving_mass` [kg]: the whole of a 20 g string bed moving with
+the ball, beyond any bed (a 16x19 bed weighs 12-20 g, of which about a quarter moves)."""
+
 ADDED_MASS_MAX = 0.2
 """The most mass [kg] :meth:`Racket.with_mass` and :meth:`Racket.with_lead_tape` add at a
 point: **an assumption**, generous on purpose (players add a few grams of lead tape; 200 g
@@ -83,6 +87,13 @@ class StringBed:
     stringing : object or None
         What the bed was strung with (:class:`racket.stringing.Stringing`), for the
         outputs' conditions; None for a bed given by its numbers.
+    moving_mass : float
+        The bed's mass that moves with the ball [kg], in [0, 0.02]: a third body between
+        the ball and the frame, pushed by the ball and pushing the frame through the bed's
+        law (:mod:`racket.solver.bed_mass_kernel`), whose own vibration the ball does not
+        get back; 0 (default) for the paper's massless bed.  The frame keeps the whole
+        strung mass as well (**an assumption**: see
+        :meth:`racket.stringing.Stringing.moving_mass`).
     """
 
     stiffness: float
@@ -92,6 +103,7 @@ class StringBed:
     stretch: float = 0.0
     loss: float = 0.0
     stringing: object = None
+    moving_mass: float = 0.0
 
     def __post_init__(self):
         object.__setattr__(self, "stiffness", positive("stiffness", self.stiffness, "N/m"))
@@ -113,13 +125,17 @@ class StringBed:
                                                      STRETCH_MAX, "1/m^2"))  # fmt: skip
         loss = non_negative("string bed loss", self.loss, "")
         object.__setattr__(self, "loss", in_range("string bed loss", loss, 0.0, BED_LOSS_MAX, ""))
+        mass = non_negative("string bed moving mass", self.moving_mass, "kg")
+        object.__setattr__(self, "moving_mass", in_range("string bed moving mass", mass, 0.0,
+                                                         BED_MASS_MAX, "kg",
+                                                         slips=(GRAMS_AS_KG,)))  # fmt: skip
         if self.profile == "membrane":
             bed_radius(self.area)  # refuses a bed too small for the membrane model
 
     @property
     def plain(self) -> bool:
-        """True for the paper's bed: linear and lossless (no stretch, no loss)."""
-        return self.stretch == 0.0 and self.loss == 0.0
+        """True for the paper's bed: linear, lossless and massless."""
+        return self.stretch == 0.0 and self.loss == 0.0 and self.moving_mass == 0.0
 
     @property
     def center(self) -> float:
@@ -132,6 +148,11 @@ class StringBed:
         if self.width is not None:
             return self.width
         return (self.extent[1] - self.extent[0]) / HEAD_ASPECT
+
+    @property
+    def aspect(self) -> float:
+        """Length over width of the string bed [-]."""
+        return (self.extent[1] - self.extent[0]) / self.full_width
 
     @property
     def area(self) -> float:

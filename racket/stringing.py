@@ -291,7 +291,12 @@ class Stringing:
     def moving_mass(self, area: float, aspect: float = HEAD_ASPECT) -> float:
         """The part of :meth:`mass` that moves with the ball [kg]: the first mode's modal
         mass of a circular membrane for its centre's deflection, :data:`MODAL_MASS_RATIO`
-        (0.27) of the mass.  Reported; the solver does not use it yet.
+        (0.27) of the mass: the bed's :attr:`racket.StringBed.moving_mass`.
+
+        **An assumption**: the frame, whose mass is the strung racket's as measured, keeps
+        it as well, so that it is counted twice (3.6 g of a 300 g racket for polyester 16L
+        16x19 in 100 in^2); taking it out of the frame would need the strings' mass apart
+        from the frame's, which no spec sheet gives.
 
         Parameters
         ----------
@@ -304,7 +309,7 @@ class Stringing:
 
     def bed(self, extent, width=None, profile="membrane", stiffness=None) -> StringBed:
         """The :class:`racket.StringBed` of this stringing over ``extent``: its stiffness,
-        stretch and loss, and ``stringing`` = self.
+        stretch, loss and moving mass, and ``stringing`` = self.
 
         Parameters
         ----------
@@ -321,7 +326,14 @@ class Stringing:
         shape = StringBed(1.0, extent, width, profile)
         k = self.stiffness(shape.area) if stiffness is None else stiffness
         return StringBed(
-            k, extent, width, profile, self.stretch(shape.area, stiffness), self.loss, self
+            k,
+            extent,
+            width,
+            profile,
+            self.stretch(shape.area, stiffness),
+            self.loss,
+            self,
+            moving_mass=self.moving_mass(shape.area, shape.aspect),
         )
 
     def describe(self, tension: str | None = None) -> str:

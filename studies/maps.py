@@ -295,7 +295,7 @@ def face_map(
     >>> from racket import CATALOG, paper_ball
     >>> face = face_map(CATALOG["pure-drive-2021"].racket(), paper_ball())
     >>> face.e_A.shape, round(face.sweet_area_cm2)
-    ((15, 9), 36)
+    ((15, 9), 44)
     """
     racket, ball, swing = racket_argument(racket), ball_argument(ball), swing_argument(swing)
     speed = check_speed("speed", speed)

@@ -137,7 +137,9 @@ def serve_table(
     zero_cor : bool
         Add the rows of the zero-COR twin (:func:`zero_cor_ball` at the peak force of the
         ball's serve at each position; for a sine-law ball the same ball, so the reduction
-        is 0) and the reductions.
+        is 0) and the reductions.  The twin takes the strings as a linear, lossless,
+        massless spring, as any sine-law ball does: on a real bed its reduction is against
+        the ball on that same spring, so that the two differ in the ball alone.
 
     Returns
     -------
@@ -158,18 +160,27 @@ def serve_table(
         )
     swing = Swing(racket_speed, pivot_from_tip)
     rows = [{"ball": "normal", **serve(racket, ball, float(x), swing)} for x in positions]
-    if zero_cor:  # each point's twin as stiff as the ball is in that point's serve
-        rows += [
-            {"ball": "zero-COR", **serve(racket, zero_cor_ball(ball, row["peak_force_N"]),
-                                         row["position_from_tip_m"], swing)}
-            for row in list(rows)
-        ]  # fmt: skip
     table = pd.DataFrame(rows).set_index("ball")
-    if zero_cor:
-        for how in ("eq22", "simulated"):
-            col = f"serve_{how}_m_s"
-            normal = np.tile(table.loc[["normal"], col].to_numpy(), 2)
-            table[f"reduction_{how}_percent"] = 100.0 * (1.0 - table[col].to_numpy() / normal)
+    if not zero_cor:
+        return table
+    # The twin meets the bed a sine-law ball can take, linear, lossless and massless (the
+    # same for the paper's racket), and so, for its reduction, does the real ball.
+    plain = racket
+    if not racket.strings.plain:
+        plain = replace(racket, strings=replace(racket.strings, stretch=0.0, loss=0.0,
+                                                moving_mass=0.0))  # fmt: skip
+        rows = [serve(plain, ball, float(x), swing) for x in positions]
+    twins = pd.DataFrame([  # each point's twin as stiff as the ball is in that point's serve
+        {"ball": "zero-COR", **serve(plain, zero_cor_ball(ball, row["peak_force_N"]),
+                                     row["position_from_tip_m"], swing)}
+        for row in rows
+    ]).set_index("ball")  # fmt: skip
+    table = pd.concat([table, twins])
+    for how in ("eq22", "simulated"):
+        col = f"serve_{how}_m_s"
+        reference = np.array([row[col] for row in rows])  # the ball on the twin's bed
+        reduced = 100.0 * (1.0 - twins[col].to_numpy() / reference)
+        table[f"reduction_{how}_percent"] = np.concatenate([np.zeros(len(rows)), reduced])
     return table
 
 

@@ -50,7 +50,8 @@ def string_table(
     pandas.DataFrame
         One row per string: ``string`` (material and gauge; the pattern, tension and state
         are the racket's), ``dt_kp_cm``, ``stiffness_kN_m``, ``stretch_1_m2``,
-        ``loss_percent``, ``bed_mass_g``, ``e``, ``e_A``, ``dwell_ms``, ``serve_m_s`` and
+        ``loss_percent``, ``bed_mass_g``, ``moving_mass_g`` (the strings inside the
+        head, and the part moving with the ball), ``e``, ``e_A``, ``dwell_ms``, ``serve_m_s`` and
         ``serve_ratio`` (the serve over the head speed).
     """
     instance("racket", racket, Racket, "a racket.Racket")
@@ -81,7 +82,8 @@ def _row(racket: Racket, ball: Ball, speed: float, head_speed: float) -> dict:
         "stiffness_kN_m": bed.stiffness / 1e3,
         "stretch_1_m2": bed.stretch,
         "loss_percent": 100.0 * bed.loss,
-        "bed_mass_g": 1e3 * bed.stringing.mass(bed.area),
+        "bed_mass_g": 1e3 * bed.stringing.mass(bed.area, bed.aspect),
+        "moving_mass_g": 1e3 * bed.moving_mass,
         "e": hit.e,
         "e_A": hit.e_A,
         "dwell_ms": 1e3 * hit.contact_time,

@@ -89,7 +89,9 @@ def test_the_vibration_is_least_near_the_node_of_the_first_mode():
     node = HELD.beam.modes.nodes(1)[0]
     tip, throat = HELD.strings.extent
     vibration = {x: hand_feel(HELD, BALL, x, BALL_SPEED).vibration for x in (node, tip, throat)}
-    assert vibration[node] < 0.5 * min(vibration[tip], vibration[throat])
+    # (a third less than at either end: the string bed's own vibration, some 450 Hz, reaches
+    # the frame's higher modes, which have no node there; half without the bed's mass)
+    assert vibration[node] < 0.75 * min(vibration[tip], vibration[throat])
 
 
 def test_the_page_and_the_command_report_the_same_feel(capsys):

@@ -15,6 +15,10 @@ from racket.system import free_system, held_mode, held_system
 
 BALL = paper_ball()
 RACKET = CATALOG["pure-drive-2021"].racket()  # 321 g, 33 cm, 325 kg cm^2, f1 150 Hz
+RESIDUAL = 5e-5
+"""The energy budget's residual at the default step, of the energy [-]: the string bed's
+mass and the ball make a mode of about 1 kHz, some 70 steps of the default (second order,
+``tests/test_bed_mass.py``); 1e-5 on a massless bed."""
 
 
 def _rebound_change(hand, positions, speed=20.0):
@@ -30,7 +34,7 @@ def test_rebound_at_string_centre_within_one_percent_and_the_tip_difference():
     for tip, c in zip(tips, change, strict=False):
         print(f"  {100 * c:+.3f} % at {100 * tip:.3g} cm from the tip")
     assert abs(change[-1]) < 0.01
-    assert np.abs(held.energy_residual / held.energy_initial).max() < 1e-5
+    assert np.abs(held.energy_residual / held.energy_initial).max() < RESIDUAL
 
 
 @pytest.mark.parametrize("scale", [0.1, 0.3, 3.0])
@@ -109,7 +113,7 @@ def test_hand_held_invariants(position, stiffness, damping):
     r = impact(held, BALL, position, 15.0)
     assert 0.0 <= r.e <= 1.0
     assert -1.0 < r.e_A <= r.e  # the racket recoils: the ball's rebound is below e
-    assert abs(r.energy_residual) < 1e-5 * r.energy_initial
+    assert abs(r.energy_residual) < RESIDUAL * r.energy_initial
     assert r.damping_loss >= 0.0 and r.vibration_energy >= 0.0
 
 
@@ -153,7 +157,7 @@ def test_free_and_medium_grip_rebound_alike_as_grabiner_measured():
     held = impact(replace(RACKET, support="hand-held"), ball, centre, 10.62)
     assert RACKET.hand == GRIPS["medium"]  # the default hand
     assert held.e == pytest.approx(free.e, rel=0.01)
-    assert abs(held.energy_residual) < 1e-5 * held.energy_initial
+    assert abs(held.energy_residual) < RESIDUAL * held.energy_initial
 
 
 def test_a_hand_mass_must_be_positive():

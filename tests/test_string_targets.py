@@ -18,6 +18,7 @@ from studies.validation.conditions import (
     STEEL_SPEED,
     _hamori_ms,
     clamped_racket,
+    steel_ball_racket,
 )
 
 
@@ -37,6 +38,7 @@ def test_a_steel_ball_comes_back_at_0_97_from_every_string_and_tension(string, t
     bed = racket.strings
     strung = replace(bed.stringing, state=state)
     racket = replace(racket, strings=strung.bed(bed.extent, bed.width, "uniform"))
+    racket = steel_ball_racket(racket)
     hit = impact(racket, STEEL_BALL, racket.strings.center, STEEL_SPEED)
     assert 0.96 <= hit.e <= 0.98
 
@@ -50,6 +52,7 @@ def test_the_steel_ball_calibration_holds_at_every_gauge(gauge):
     gauged = type(strung.mains)(strung.mains.material, GAUGES[gauge])
     strung = replace(strung, mains=gauged, crosses=gauged)
     racket = replace(racket, strings=strung.bed(bed.extent, bed.width, "uniform"))
+    racket = steel_ball_racket(racket)
     assert 0.96 <= impact(racket, STEEL_BALL, racket.strings.center, STEEL_SPEED).e <= 0.98
 
 
@@ -57,8 +60,9 @@ def test_the_clamped_rows_at_the_seeds_conditions_agree(table):
     assert 0.85 <= table.loc["seed-clamped-e", "model"] <= 0.90
 
 
-@pytest.mark.xfail(strict=True, reason="model 0.896 vs [0.80, 0.87]: the strings' loss took it "
-                   "from 0.917; see tests/test_validation.py KNOWN_GAPS")  # fmt: skip
+@pytest.mark.xfail(strict=True, reason="model 0.876 vs [0.80, 0.87]: the strings' loss and "
+                   "the bed's mass took it from 0.917; see tests/test_validation.py "
+                   "KNOWN_GAPS")  # fmt: skip
 def test_the_1_m_drop_onto_clamped_strings_agrees(table):
     assert 0.80 <= table.loc["cross-1m-drop-e", "model"] <= 0.87
 
@@ -67,8 +71,10 @@ def _hamori_rows(table):
     return table[table.index.str.startswith("hamori-")]
 
 
-@pytest.mark.xfail(strict=True, reason="8 of 12 in their bands: the three volleys (their 20 m/s "
-                   "closing speed assumed) and the Pro Staff 85's polyester")  # fmt: skip
+@pytest.mark.xfail(strict=True, reason="6 of 12 in their bands (8 without the bed's mass, which "
+                   "lengthens every contact by 0.2-0.5 ms): the three volleys (their 20 m/s "
+                   "closing speed assumed), the Pro Staff 85's polyester, the AeroPro Drive's "
+                   "67 lb forehand and the Pro Staff 97's serve")  # fmt: skip
 def test_at_least_10_of_hamoris_12_dwell_times_agree(table):
     rows = _hamori_rows(table)
     assert len(rows) == 12
@@ -84,17 +90,18 @@ def test_hamoris_pairs_come_out_in_order(table):
     assert poly < gut and low > high
 
 
-@pytest.mark.xfail(strict=True, reason="model 0.19 ms vs 0.9 +/- 0.4 ms: at one tension the "
-                   "two beds differ in stretch (EA) and loss only")  # fmt: skip
+@pytest.mark.xfail(strict=True, reason="model 0.20 ms vs 0.9 +/- 0.4 ms: at one tension the "
+                   "two beds differ in stretch (EA), loss and mass only")  # fmt: skip
 def test_polyester_is_shorter_than_gut_by_hamoris_0_9_ms():
     poly = _hamori_ms("Wilson Pro Staff 85", "polyester", 54.0, "forehand")
     gut = _hamori_ms("Wilson Pro Staff 85", "natural-gut", 54.0, "forehand")
     assert gut - poly == pytest.approx(0.9, abs=0.4)
 
 
-@pytest.mark.xfail(strict=True, reason="model 0.36 ms vs 1.1 +/- 0.4 ms: the stretch (from EA, "
+@pytest.mark.xfail(strict=True, reason="model 0.57 ms vs 1.1 +/- 0.4 ms: the stretch (from EA, "
                    "not the tension) makes the tension matter less at a forehand's deflection "
-                   "(1.04 ms with a linear bed)")  # fmt: skip
+                   "(1.04 ms with a linear, massless bed; 0.36 ms without the bed's "
+                   "mass)")  # fmt: skip
 def test_37_lb_is_longer_than_67_lb_by_hamoris_1_1_ms():
     low = _hamori_ms("Babolat AeroPro Drive", "polyester", 37.0, "forehand")
     high = _hamori_ms("Babolat AeroPro Drive", "polyester", 67.0, "forehand")
@@ -112,8 +119,9 @@ def test_no_calibration_row_was_lost_and_validation_gained(table):
     assert len(validation) == 26 and validation["agrees"].sum() > 13
 
 
-@pytest.mark.xfail(strict=True, reason="19 of 26 agree (13 before): Cross's 1 m drop, three "
-                   "volleys, the Pro Staff 85's polyester and two throats")  # fmt: skip
+@pytest.mark.xfail(strict=True, reason="17 of 26 agree (13 before the real bed, 19 without "
+                   "its mass): Cross's 1 m drop, six of Hamori's dwell times and two "
+                   "throats")  # fmt: skip
 def test_at_least_22_of_26_validation_rows_agree(table):
     validation = table[table["kind"] == "validation"]
     assert validation["agrees"].sum() >= 22

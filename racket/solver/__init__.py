@@ -22,9 +22,14 @@ tile together), :mod:`~racket.solver.ball_kernel` (the force solve of each law),
 :mod:`~racket.solver.expm` (the blocks' exact steps), :mod:`~racket.solver.dispatch`
 (threads), :mod:`~racket.solver.outcome` and :mod:`~racket.solver.budget` (e, e_A and the
 energy budget at separation) and :mod:`~racket.solver.unhappy_search` (the unhappy ball's
-self-consistent Xo).
+self-consistent Xo).  :mod:`~racket.solver.cache_stamp` drops numba's on-disk cache when
+any of these files has changed (numba alone would notice a change in a kernel's own file
+only).
 """
 
+from pathlib import Path
+
+from racket.solver.cache_stamp import drop_stale_cache
 from racket.solver.dispatch import COMPILE_SECONDS, announced, one_blas_thread
 from racket.solver.driver import (
     DEFAULT_STEPS_PER_CONTACT,
@@ -34,6 +39,8 @@ from racket.solver.driver import (
     load_kernel,
 )
 from racket.solver.steps import system_steps
+
+drop_stale_cache(Path(__file__).parent)  # before any kernel loads its cache (they load lazily)
 
 __all__ = [
     "COMPILE_SECONDS",

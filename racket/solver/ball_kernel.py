@@ -137,12 +137,22 @@ def monotone_force(law, params, coef, a, z_pred, f_max, guess):
         if f >= f_max:
             return f
         return max((z_pred - f_max * coef[2]) * coef[1], 0.0)  # unloading line
-    switch = (_loading(law, params, f_max)[0] if f_max > 0.0 else 0.0) + a * f_max
-    if z_pred >= switch:  # loading: b plays no part
+    top = _loading(law, params, f_max)[0] if f_max > 0.0 else 0.0
+    return branch_force(law, params, a, z_pred, f_max, guess, top, math.nan)
+
+
+@njit(cache=True)
+def branch_force(law, params, a, z_pred, f_max, guess, top, b):
+    """:func:`monotone_force` for a power law, given its compression ``top`` [m] at the
+    largest force ``f_max`` and its unloading exponent ``b`` there (NaN: worked out here),
+    which a caller may keep from step to step.
+    """
+    if z_pred >= top + a * f_max:  # loading: b plays no part
         return _branch_force(z_pred, a, f_max, z_pred / a, f_max, law, params, 1.0, guess)
     if z_pred <= 0.0:
         return 0.0
-    b = unloading_exponent(law, params, f_max)
+    if math.isnan(b):
+        b = unloading_exponent(law, params, f_max)
     return _branch_force(z_pred, a, 0.0, f_max, f_max, law, params, b, guess)
 
 

@@ -13,13 +13,19 @@ from numba import njit
 
 # Columns of the per-impact result of :func:`split`.
 V_CM, OMEGA, ROLL_RATE, V2_DC, V2_TOTAL, RACKET_ENERGY, VIBRATION = range(7)
-ENERGY_INITIAL, BALL_ENERGY, E, E_A, E_VAN_ZANDT, CLOSING_ENERGY = range(7, 13)
-N_COLUMNS = 13
+ENERGY_INITIAL, BALL_ENERGY, E, E_A, E_VAN_ZANDT, CLOSING_ENERGY, STRING_VIBRATION = range(7, 14)
+N_COLUMNS = 14
 
 
 @njit(cache=True)
-def split(state, basis, stiffness, rigid, phi, x, y, frame, omega, ball, swing_qd, out, modes):
+def split(state, basis, stiffness, rigid, phi, x, y, frame, omega, ball, swing_qd, bed, out,
+          modes):  # fmt: skip
     """Fill ``out`` (P, N_COLUMNS) and ``modes`` (P, n_bending) from the block states.
+
+    A string bed with a mass (``bed``) is part of the racket: the dc motion is the frame's
+    and the bed mass's together, as one rigid body once the bed's own vibration has died
+    (their momenta kept), and what the bed holds beyond moving with it (its kinetic and
+    elastic energy, less its share of the one body's) is the strings' vibration.
 
     Parameters
     ----------
@@ -47,8 +53,11 @@ def split(state, basis, stiffness, rigid, phi, x, y, frame, omega, ball, swing_q
         the ball's speed before [m/s].
     swing_qd : ndarray (P, 2)
         Rigid-mode velocities of the swing before the impact [sqrt(kg) m/s].
+    bed : ndarray (P, 4)
+        The bed's moving mass [kg] (0: massless), its velocity when the ball left [m/s],
+        the energy it would then give back [J] and its velocity before the impact [m/s].
     out, modes : ndarray
-        Filled: the columns V_CM ... CLOSING_ENERGY [SI], each bending mode's energy [J].
+        Filled: the columns V_CM ... STRING_VIBRATION [SI], each bending mode's energy [J].
     """
     n = stiffness.shape[0]
     count = state.shape[0]
@@ -75,6 +84,24 @@ def split(state, basis, stiffness, rigid, phi, x, y, frame, omega, ball, swing_q
             v2_dc = v2_dc + y[p] * roll_rate
             racket_energy += rigid2 * rigid2
         racket_energy *= 0.5
+        frame_energy = racket_energy  # the frame's rigid-body energy
+        m_s, bed_vel = bed[p, 0], bed[p, 1]
+        if m_s > 0.0 and n:  # frame and bed as one body: their momenta kept
+            lever = com - x[p]
+            inverse = 1.0 / root_mass**2 + lever * lever / root_inertia**2
+            if root_roll > 0.0:
+                inverse += y[p] * y[p] / root_roll**2
+            share = m_s * inverse
+            v2_dc = (v2_dc + share * bed_vel) / (1.0 + share)
+            pull = m_s * (v2_dc - bed_vel)
+            v_cm -= pull / root_mass**2
+            spin -= pull * lever / root_inertia**2
+            if root_roll > 0.0:
+                roll_rate -= pull * y[p] / root_roll**2
+            racket_energy = 0.5 * (
+                (root_mass * v_cm) ** 2 + (root_inertia * spin) ** 2
+                + (root_roll * roll_rate) ** 2 + m_s * v2_dc * v2_dc
+            )  # fmt: skip
         v2_total, mechanical = 0.0, 0.0
         for i in range(n):
             total = 0.0
@@ -92,8 +119,10 @@ def split(state, basis, stiffness, rigid, phi, x, y, frame, omega, ball, swing_q
         row[V_CM], row[OMEGA], row[ROLL_RATE] = v_cm, spin, roll_rate
         row[V2_DC], row[V2_TOTAL] = v2_dc, v2_total
         row[RACKET_ENERGY] = racket_energy
-        row[VIBRATION] = 0.5 * mechanical - racket_energy
-        row[ENERGY_INITIAL] = 0.5 * mass * speed**2 + 0.5 * swing
+        bed_energy = 0.5 * m_s * bed_vel * bed_vel + bed[p, 2]
+        row[VIBRATION] = 0.5 * mechanical - frame_energy
+        row[STRING_VIBRATION] = frame_energy + bed_energy - racket_energy
+        row[ENERGY_INITIAL] = 0.5 * mass * speed**2 + 0.5 * swing + 0.5 * m_s * bed[p, 3] ** 2
         row[BALL_ENERGY] = 0.5 * mass * after**2
         row[E] = (v2_dc - after) / closing
         row[E_A] = (-after - (closing - speed)) / closing  # (V1 - v2) / (v1 + v2)

@@ -228,8 +228,8 @@ def impact(
     warn_if_squashed(ball, squashed)
     if isinstance(ball.law, SineLaw) and not racket.strings.plain:
         warnings.warn(
-            "the unhappy (sine-law) ball takes the string bed as a linear, lossless spring: "
-            "the bed's stiffening and loss are left out",
+            "the unhappy (sine-law) ball takes the string bed as a linear, lossless, massless "
+            "spring: the bed's stiffening, loss and mass are left out",
             stacklevel=2,
         )
     if scalar:

@@ -54,15 +54,27 @@ from numba import njit
 
 from racket.solver.ball_kernel import ball_compression, force_coefficients, sine_step
 from racket.solver.bed_kernel import bed_active, bed_extra
+from racket.solver.bed_mass_kernel import (
+    BED_MEMO_ROWS,
+    bed_deflection,
+    bed_elastic,
+    bed_gap,
+    massed_forces,
+    opening_fraction,
+)
 from racket.solver.contact_kernel import MEMO_ROWS, contact_compression, contact_force
 from racket.solver.expm import step_back
 from racket.solver.layout import (
+    BED_ELASTIC,
+    BED_PEAK,
+    BED_VEL,
     DAMPING_LOSS,
     ENDED,
     F_PEAK,
     H_BALL_COMP,
     H_BALL_VEL,
     H_FORCE,
+    H_FRAME_FORCE,
     H_POINT_VEL,
     H_POINT_VEL_DC,
     H_STRING,
@@ -123,7 +135,7 @@ def _one_impact(frame, points, ball, controls, out, p):
             )
     dt, law, params, sine = controls.dt, ball.law, ball.params, ball.law == SINE
     bed, inv_ks = ball.bed, points.inv_ks[p]
-    memo = np.full((MEMO_ROWS, 1), -1.0)  # the contact's memo (contact_force)
+    memo = np.full((max(MEMO_ROWS, BED_MEMO_ROWS), 1), -1.0)  # the contact's memo
     record = controls.record and out.history.shape[2] > 1
     s = points.state0[p].copy()
     u, ud = 0.0, points.ball_velocity[p]
@@ -135,6 +147,19 @@ def _one_impact(frame, points, ball, controls, out, p):
         c += out_d[j, 0] * gin1[j, 0] + out_d[j, 1] * gin1[j, 1]
     a = points.series[p] + c
     coef = force_coefficients(law, params, a)
+    # A bed with a mass (racket.solver.bed_mass_kernel): the ball's own compliance, the
+    # bed's series one (the frame's step and the modes left out) and the coupling h.
+    massed = bed[2] > 0.0 and not sine
+    q, qd, f2, f2_before, f2_peak = 0.0, 0.0, 0.0, 0.0, 0.0
+    h, a1, comp, k_bed, coef1 = 0.0, a, 0.0, 0.0, coef
+    if massed:
+        h = dt * dt / (6.0 * bed[2])
+        a1 = -ball.g1[0] + h
+        coef1 = force_coefficients(law, params, a1)
+        comp = h + (points.series[p] - inv_ks) + _frame_compliance(out_d, gin1)
+        k_bed = 1.0 / inv_ks
+        q, qd = _dot(out_d, s), _dot(points.out_v[p], s)  # the bed moves with the frame
+        memo[3, 0] = 0.0
     force, f_before, f_peak, x_ball, snapped = 0.0, 0.0, 0.0, 0.0, False
     residual = -math.inf
     damping_loss, sine_work = 0.0, 0.0
@@ -144,16 +169,30 @@ def _one_impact(frame, points, ball, controls, out, p):
     # The state when the ball last left (force back to zero).
     sep_step, sep_u, sep_ud, sep_x = 0, u, ud, 0.0
     sep_damping, sep_work, sep_contact = 0.0, 0.0, 0.0
+    sep_bed_vel, sep_elastic, sep_f2_peak = qd, 0.0, 0.0
     sep_s = s.copy()
     closing = ud - _dot(points.out_v[p], s)
     if record:
-        _record(out.history, points, p, 0, 0.0, 0.0, 0.0, ud, s)
+        _record(out.history, points, p, 0, 0.0, 0.0, 0.0, ud, s, 0.0)
     step = 0
     while step < controls.max_steps and step != stop_at:
         # Free step (force going from `force` to 0), then the force at the step's end.
         u_p = ball.trans[0, 0] * u + ball.trans[0, 1] * ud + ball.g0[0] * force
         ud_p = ball.trans[1, 0] * u + ball.trans[1, 1] * ud + ball.g0[1] * force
-        z_pred = u_p - _free_step(trans, gin0, out_d, s, force)
+        f_new, f2_new = 0.0, 0.0
+        if massed:
+            y_p = _free_step(trans, gin0, out_d, s, f2)
+            q_p = q + dt * qd + 2.0 * h * (force - f2)
+            qd_p = qd + 0.5 * dt * (force - f2) / bed[2]
+            z_pred = u_p - q_p
+            f_new, f2_new = massed_forces(law, params, coef1, a1, bed, k_bed, comp, h, z_pred,
+                                          q_p - y_p, f_peak, f2_peak, 2.0 * force - f_before,
+                                          2.0 * f2 - f2_before, memo, 0)  # fmt: skip
+            z_pred += h * (2.0 * f2 - f2_before)  # the ball's, with no force of its own
+            q = q_p + h * (f_new - f2_new)
+            qd = qd_p + 0.5 * dt * (f_new - f2_new) / bed[2]
+        else:
+            z_pred = u_p - _free_step(trans, gin0, out_d, s, force)
         if sine:
             x_before = x_ball
             f_new, x_ball, step_residual = sine_step(
@@ -167,17 +206,26 @@ def _one_impact(frame, points, ball, controls, out, p):
                     break
             elif not snapped:
                 residual = max(residual, step_residual)
-        else:
+        elif not massed:
             guess = 2.0 * force - f_before
             f_new = contact_force(law, params, coef, bed, inv_ks, a, z_pred, f_peak, guess, memo, 0)
         # Add the response to the force at the step's end.
         u = u_p + ball.g1[0] * f_new
         ud = ud_p + ball.g1[1] * f_new
+        f_frame = f2_new if massed else f_new
         for j in range(nb):
-            s[j, 0] += gin1[j, 0] * f_new
-            s[j, 1] += gin1[j, 1] * f_new
+            s[j, 0] += gin1[j, 0] * f_frame
+            s[j, 1] += gin1[j, 1] * f_frame
         tau = 1.0  # fraction of the step at which the contact opened
-        if f_new == 0.0 and force > 0.0 and not sine:
+        if f_new == 0.0 and force > 0.0 and massed:
+            tau = opening_fraction(law, params, force, f_peak, z_pred)
+            d0 = force * tau * (2.0 - tau) - force
+            d1 = -force * tau * (1.0 - tau)
+            u += ball.g0[0] * d0 + ball.g1[0] * d1
+            ud += ball.g0[1] * d0 + ball.g1[1] * d1
+            q += 2.0 * h * d0 + h * d1  # the bed mass felt the ball's force alone
+            qd += 0.5 * dt * (d0 + d1) / bed[2]
+        elif f_new == 0.0 and force > 0.0 and not sine:
             tau = _opening_fraction(law, params, bed, inv_ks, points.series[p], force, f_peak,
                                     z_pred)  # fmt: skip
             # The force reached zero at tau dt, not at the step's end: replace the hold
@@ -199,11 +247,17 @@ def _one_impact(frame, points, ball, controls, out, p):
         left = f_new == 0.0 and force > 0.0
         f_before, force = force, f_new
         f_peak = max(f_peak, force)
+        f2_before, f2 = f2, f2_new
+        f2_peak = max(f2_peak, f2)
         step += 1
         if record and step < out.history.shape[2]:
             x_now = x_ball if sine else ball_compression(law, params, force, f_peak)
-            string = string_deflection(bed, inv_ks, force, f_peak)
-            _record(out.history, points, p, step, force, x_now, string, ud, s)
+            if massed:
+                string = bed_deflection(bed, k_bed, memo, 0, f2, f2_peak)
+            else:
+                string = string_deflection(bed, inv_ks, force, f_peak)
+            _record(out.history, points, p, step, force, x_now, string, ud, s,
+                    f2 if massed else force)  # fmt: skip
         asymptotic = (
             sine
             and 0.0 < force < controls.force_tol * f_peak
@@ -217,14 +271,29 @@ def _one_impact(frame, points, ball, controls, out, p):
             sep_contact = (step - 1 + tau) * dt if left and not sine else (step - 1) * dt
             if asymptotic:
                 sep_contact = step * dt
-            step_back(frame.blocks, s, back, sep_s)
+            if massed:  # the bed still pushes the frame: the step's end for all but the ball
+                sep_damping = damping_loss
+                sep_s[:] = s
+                sep_bed_vel, sep_f2_peak = qd, f2_peak
+                sep_elastic = (
+                    bed_elastic(bed, k_bed, memo, 0, f2, f2_peak)
+                    + 0.5 * (points.series[p] - inv_ks) * f2 * f2
+                )  # and the modes left out (fmt: skip)
+            else:
+                step_back(frame.blocks, s, back, sep_s)
         if asymptotic:
             stop_at = step  # common speed approached asymptotically (no fold)
             break
         if stop_at < 0 and force == 0.0 and _dot(points.out_dc[p], s) > ud:
             # Open and separating in the dc motion: over for good once the gap exceeds
             # the largest deflection the remaining vibration can bring to the point.
-            z_open = x_ball if sine else contact_compression(law, params, bed, inv_ks, 0.0, f_peak)
+            if massed:
+                z_open = bed_gap(law, params, bed, k_bed, memo, 0, f_peak, f2, f2_peak,
+                                 qd - _dot(points.out_v[p], s))  # fmt: skip
+            elif sine:
+                z_open = x_ball
+            else:
+                z_open = contact_compression(law, params, bed, inv_ks, 0.0, f_peak)
             gap = z_open - (u - _dot(out_d, s))
             if gap >= _reach(points.reach_w[p], frame.metric, s):
                 stop_at = step + controls.extra_steps
@@ -244,6 +313,9 @@ def _one_impact(frame, points, ball, controls, out, p):
     summary[SNAP_RESIDUAL] = residual
     summary[X_END] = sep_x
     summary[RECONTACTS] = max(recontacts, 0)
+    summary[BED_VEL] = sep_bed_vel
+    summary[BED_ELASTIC] = sep_elastic
+    summary[BED_PEAK] = sep_f2_peak
 
 
 @njit(cache=True)
@@ -277,6 +349,15 @@ def _free_step(trans, gin0, out_d, s, force):
 
 
 @njit(cache=True)
+def _frame_compliance(out_d, gin1):
+    """The point's displacement per unit force at the step's end [m/N]."""
+    c = 0.0
+    for j in range(out_d.shape[0]):
+        c += out_d[j, 0] * gin1[j, 0] + out_d[j, 1] * gin1[j, 1]
+    return c
+
+
+@njit(cache=True)
 def _reach(reach_w, metric, s):
     """The largest displacement the blocks' remaining vibration can bring to the point."""
     reach = 0.0
@@ -298,10 +379,11 @@ def string_deflection(bed, inv_ks, force, f_peak):
 
 
 @njit(cache=True)
-def _record(history, points, p, step, force, compression, string, ball_velocity, s):
+def _record(history, points, p, step, force, compression, string, ball_velocity, s,
+            frame_force):  # fmt: skip
     """Write one step of impact ``p``'s histories: the force, the ball's compression, the
-    strings' deflection, the ball's velocity and the point's (all and dc) from the block
-    states ``s``.
+    strings' deflection, the ball's velocity, the point's (all and dc) from the block
+    states ``s``, and the force on the frame (the bed's, with a mass; the ball's without).
     """
     history[H_FORCE, p, step] = force
     history[H_BALL_COMP, p, step] = compression
@@ -309,6 +391,7 @@ def _record(history, points, p, step, force, compression, string, ball_velocity,
     history[H_BALL_VEL, p, step] = ball_velocity
     history[H_POINT_VEL, p, step] = _dot(points.out_v[p], s)
     history[H_POINT_VEL_DC, p, step] = _dot(points.out_dc[p], s)
+    history[H_FRAME_FORCE, p, step] = frame_force
 
 
 @njit(cache=True)

@@ -97,9 +97,10 @@ class BallModel(NamedTuple):
         The law's code: LINEAR, POWER, SINE, GROWING or STIFFENING.
     params : ndarray (4,)
         The law's numbers [SI].
-    bed : ndarray (2,)
-        The string bed's law in series with the ball's: its stretch [1/m^2] and loss [-]
-        (:mod:`racket.solver.bed_kernel`; both 0 for the paper's linear, lossless bed).
+    bed : ndarray (3,)
+        The string bed's law: its stretch [1/m^2], loss [-] and moving mass [kg]
+        (:mod:`racket.solver.bed_kernel`, :mod:`racket.solver.bed_mass_kernel`; all 0 for the
+        paper's linear, lossless, massless bed, in series with the ball).
     """
 
     trans: np.ndarray
@@ -177,9 +178,18 @@ class Outputs(NamedTuple):
     SNAP_RESIDUAL,
     X_END,
     RECONTACTS,
-) = range(10)
-N_SUMMARY = 10
+    BED_VEL,
+    BED_ELASTIC,
+    BED_PEAK,
+) = range(13)
+N_SUMMARY = 13
+"""The summary's columns: when the ball left [s], the contact's duration [s], the largest
+force [N], the unhappy ball's work [J], the damping's loss [J], whether it snapped, whether
+it ended, the snap residual [m], the unhappy ball's compression at the end [m], the
+re-contacts, and for a bed with a mass its velocity [m/s], the energy it would give back
+(and the modes left out, pushed by it, would) [J] and its largest force [N] (0 for a
+massless bed)."""
 
 # Rows of the history array.
-H_FORCE, H_BALL_COMP, H_STRING, H_BALL_VEL, H_POINT_VEL, H_POINT_VEL_DC = range(6)
-N_HISTORY = 6
+H_FORCE, H_BALL_COMP, H_STRING, H_BALL_VEL, H_POINT_VEL, H_POINT_VEL_DC, H_FRAME_FORCE = range(7)
+N_HISTORY = 7

@@ -25,6 +25,7 @@ _HISTORY_ROWS = {
     "ball_velocity": layout.H_BALL_VEL,
     "point_velocity": layout.H_POINT_VEL,
     "point_velocity_dc_history": layout.H_POINT_VEL_DC,
+    "frame_force": layout.H_FRAME_FORCE,
 }
 """Impact attribute of each history row of the kernel."""
 
@@ -55,11 +56,14 @@ class Impact:
         COR [-] with the vibration at separation wrongly included (Sec. VII).
     effective_mass : float or ndarray
         Racket effective mass at the impact point [kg] (Eq. 20, with y^2 / I_roll off the
-        axis; for the free racket, also quoted for a hand-held one; inf clamped).
+        axis, plus the string bed's moving mass, which sits at the point; for the free
+        racket, also quoted for a hand-held one; inf clamped).
     ball_rebound : float or ndarray
         V1, the ball's speed after, away from the strings [m/s] (its exit speed).
     v_cm : float or ndarray
-        Racket centre-of-mass velocity after [m/s] (along the ball's incoming path).
+        Racket centre-of-mass velocity after [m/s] (along the ball's incoming path; with a
+        string bed's mass, the velocity at the frame's centre of mass of frame and bed moving
+        as one body).
     omega : float or ndarray
         Racket angular velocity after [rad/s]; the point at x moves at v_cm + (x_cm - x)
         omega.
@@ -77,13 +81,17 @@ class Impact:
         The racket's mechanical energy beyond its rigid-body kinetic energy when the ball
         leaves [J]: the bending (and torsion) modes, and for a hand-held racket also the
         energy in the hand's spring.
+    string_vibration : float or ndarray
+        The string bed's own vibration when the ball leaves [J]: its moving mass's kinetic
+        and elastic energy beyond moving with the racket (0 for a massless bed), energy the
+        ball does not get back.
     mode_energy : ndarray
         (..., n_bending) energy of each free-free bending mode when the ball leaves [J].
     energy_initial, ball_energy, racket_energy, ball_loss, string_loss, damping_loss, \
 energy_residual : float or ndarray
         Energy budget [J]: initial kinetic energy = ball_energy + racket_energy (rigid
-        body) + vibration_energy + ball_loss + string_loss + damping_loss +
-        energy_residual; the residual is the integration error.  string_loss is what the
+        body) + vibration_energy + string_vibration + ball_loss + string_loss + damping_loss
+        + energy_residual; the residual is the integration error.  string_loss is what the
         string bed dissipates (its hysteresis and the friction between mains and crosses;
         0 for the paper's lossless bed).
     closing_energy : float or ndarray
@@ -103,6 +111,9 @@ point_velocity_dc_history : ndarray or None
         (..., T) histories [N, m, m, m/s, m/s, m/s] (NaN after the ball has left; None
         unless ``histories``); the impact point's velocity is split into its dc part and
         the rest (ac = total - dc).
+    frame_force : ndarray or None
+        (..., T) history of the force on the frame [N]: the string bed's push, which for a
+        bed with a mass differs from the ball's ``force`` (the same without).
     """
 
     position: np.ndarray
@@ -121,6 +132,7 @@ point_velocity_dc_history : ndarray or None
     contact_time: np.ndarray
     peak_force: np.ndarray
     vibration_energy: np.ndarray
+    string_vibration: np.ndarray
     mode_energy: np.ndarray
     energy_initial: np.ndarray
     closing_energy: np.ndarray
@@ -140,6 +152,7 @@ point_velocity_dc_history : ndarray or None
     ball_velocity: np.ndarray
     point_velocity: np.ndarray
     point_velocity_dc_history: np.ndarray
+    frame_force: np.ndarray
 
     @property
     def point_velocity_ac_history(self) -> np.ndarray:
@@ -203,6 +216,12 @@ def outcome(stepper: Stepper, racket, ball, x, y, speed, x_o, outputs, histories
         ]
     )
     motion = np.column_stack([out_ball[:, 1], closing, np.full(x.size, speed)])
+    m_s = stepper.ball.bed[2]
+    bed = np.zeros((x.size, 4))
+    if m_s > 0.0:  # a bed with a mass, moving with the frame's point before
+        before = np.einsum("pjr,pjr->p", stepper.points.out_v, stepper.points.state0)
+        bed = np.column_stack([np.full(x.size, m_s), summary[:, layout.BED_VEL],
+                               summary[:, layout.BED_ELASTIC], before])  # fmt: skip
     split = np.empty((x.size, budget.N_COLUMNS))
     mode_energy = np.empty((x.size, max(min(n, modes.count) - 2, 0)))
     budget.split(
@@ -217,10 +236,12 @@ def outcome(stepper: Stepper, racket, ball, x, y, speed, x_o, outputs, histories
         modes.omega,
         motion,
         stepper.swing_qd,
+        bed,
         split,
         mode_energy,
     )
     racket_energy, vibration = split[:, budget.RACKET_ENERGY], split[:, budget.VIBRATION]
+    string_vibration = split[:, budget.STRING_VIBRATION]
     energy_initial, ball_energy = split[:, budget.ENERGY_INITIAL], split[:, budget.BALL_ENERGY]
     if code == layout.SINE:
         ball_loss = summary[:, layout.SINE_WORK]  # X never decreases: all work on it is lost
@@ -230,15 +251,17 @@ def outcome(stepper: Stepper, racket, ball, x, y, speed, x_o, outputs, histories
         self_consistent = np.ones(x.size, dtype=bool)
     peak = summary[:, layout.F_PEAK]
     string_loss = np.zeros(x.size)
-    bed = stepper.ball.bed
-    if bed[1] > 0.0:
+    bed_law = stepper.ball.bed
+    if bed_law[1] > 0.0:
         from racket.solver.bed_kernel import bed_losses  # numba loads on first use
 
-        bed_losses(bed, stepper.points.inv_ks, peak, string_loss)
+        bed_peak = summary[:, layout.BED_PEAK] if m_s > 0.0 else peak
+        bed_losses(bed_law, stepper.points.inv_ks, bed_peak, string_loss)
     damping_loss = summary[:, layout.DAMPING_LOSS]
     residual = energy_initial - (
-        ball_energy + racket_energy + vibration + ball_loss + string_loss + damping_loss
-    )
+        ball_energy + racket_energy + vibration + string_vibration + ball_loss + string_loss
+        + damping_loss
+    )  # fmt: skip
 
     steps = np.rint(summary[:, layout.T_END] / dt).astype(int)
     used = int(steps.max()) + 1
@@ -250,7 +273,8 @@ def outcome(stepper: Stepper, racket, ball, x, y, speed, x_o, outputs, histories
 
     m_eff = np.full(x.size, np.inf)
     if n:
-        m_eff = racket.beam.effective_mass(x, y if stepper.face else None)
+        # (with the string bed's moving mass, which moves with the point)
+        m_eff = racket.beam.effective_mass(x, y if stepper.face else None) + m_s
     fields = dict(
         position=x,
         offset=y,
@@ -267,6 +291,7 @@ def outcome(stepper: Stepper, racket, ball, x, y, speed, x_o, outputs, histories
         contact_time=summary[:, layout.T_CONTACT],
         peak_force=summary[:, layout.F_PEAK],
         vibration_energy=vibration,
+        string_vibration=string_vibration,
         mode_energy=mode_energy,
         energy_initial=energy_initial,
         closing_energy=split[:, budget.CLOSING_ENERGY],

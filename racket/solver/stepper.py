@@ -180,9 +180,9 @@ class Stepper:
 
 def bed_law(strings, code: int) -> np.ndarray:
     """The string bed's law for the kernels (:attr:`racket.solver.layout.BallModel.bed`):
-    its stretch [1/m^2] and loss [-]; a linear, lossless bed for the unhappy ball, whose
-    return mapping takes the strings as a linear spring (:func:`racket.solver.driver.impact`
-    says so when it drops a bed's stretch or loss).
+    its stretch [1/m^2], loss [-] and moving mass [kg]; a linear, lossless, massless bed for
+    the unhappy ball, whose return mapping takes the strings as a linear spring
+    (:func:`racket.solver.driver.impact` says so when it drops a bed's stretch, loss or mass).
 
     Parameters
     ----------
@@ -192,5 +192,5 @@ def bed_law(strings, code: int) -> np.ndarray:
         The ball law's code (:data:`racket.solver.layout.SINE` ...).
     """
     if code == layout.SINE:
-        return np.zeros(2)
-    return np.array([strings.stretch, strings.loss])
+        return np.zeros(3)
+    return np.array([strings.stretch, strings.loss, strings.moving_mass])

@@ -171,12 +171,11 @@ def bed_text(bed) -> str:
     if strung is None:
         said += ", linear and lossless (the paper's spring)" if bed.plain else ""
         return textwrap.fill(said, WIDTH, subsequent_indent="  ")
-    aspect = (bed.extent[1] - bed.extent[0]) / bed.full_width
     said += (
         f"; {strung.describe()}; stretch {bed.stretch:.4g} 1/m^2 ({100 * bed.stretch * 1e-4:.3g} "
         f"% stiffer at 1 cm); loss {100 * bed.loss:.3g} % of what it stores; strings "
-        f"{1e3 * strung.mass(bed.area, aspect):.3g} g inside the head, "
-        f"{1e3 * strung.moving_mass(bed.area, aspect):.2g} g moving with the ball"
+        f"{1e3 * strung.mass(bed.area, bed.aspect):.3g} g inside the head, "
+        f"{1e3 * bed.moving_mass:.2g} g moving with the ball"
     )
     return textwrap.fill(said, WIDTH, subsequent_indent="  ")
 

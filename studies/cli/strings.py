@@ -54,7 +54,10 @@ def cmd_strings(args) -> int:
                    f"{speed_text(head, unit)}")  # fmt: skip
     table = in_speed_unit(string_table(racket, load_ball(args.ball), speed, head, args.strings),
                           unit)  # fmt: skip
-    _print_table(table if unit == "m/s" else table.drop(columns="serve_m_s"))  # in the unit typed
+    # printed: the bed by its DT and moving mass (its stiffness in kN/m and the strings' whole
+    # mass are in --out), the serve in the unit typed
+    hidden = ["stiffness_kN_m", "bed_mass_g"] + (["serve_m_s"] if unit != "m/s" else [])
+    _print_table(table.drop(columns=hidden))
     if args.out:
         write_table(table, args.out)
     return 0

@@ -1,0 +1,217 @@
+"""The string bed's moving mass, as the compiled time-steppers solve it: a third body between
+the ball and the frame.
+
+A bed with a mass m_s (:attr:`racket.StringBed.moving_mass`) is a point mass at the impact
+point, at q (along the ball's path, as the ball's u), between two contacts: the ball pushes
+it with F1 = F_ball(u - q), and it pushes the frame with F2, the bed's law at its deflection
+w = q - y (y the frame's point, with the static correction of the modes left out).  The
+ball and the bed mass are free masses, stepped exactly for forces varying linearly over the
+step, as the frame's blocks are; at the step's end
+
+    g_ball(F1) + a1 F1 = X0 + h F2          (the ball's compression)
+    w_bed(F2) + (h + c_f) F2 = R0 + h F1    (the bed's deflection)
+
+with X0 and R0 what the step would give without either force at its end, h = dt**2 /
+(6 m_s), a1 the ball's and the bed mass's step compliance, and c_f the frame's step
+compliance plus the modes left out.  Each equation alone rises with its force (the ball's
+:func:`racket.solver.ball_kernel.monotone_force`, the bed's :func:`bed_force`); the two are
+coupled only through h, some 1e-4 of either compliance at the default step, so one sweep
+(the ball's from the bed's force extrapolated, then the bed's) solves them to a third order
+in the step (:func:`massed_forces`).
+
+The bed's law is :mod:`racket.solver.bed_kernel`'s, written in u, its deflection on the
+loading curve: F(u) = k u (1 + s u**2), and w = u + delta clip(1 - F / F_max, 0, 1), delta
+the unloading curve's set-back after the largest force F_max.  Loading (u above its largest)
+w = u; unloading, the set-back curve; beyond its set-back (u < 0) the bed pulls back,
+losslessly, about the set it took (w = u + delta, F < 0), as a membrane does on either side.
+A contact that never loads past F_max retraces its unloading curve, so it loses nothing more.
+"""
+
+from __future__ import annotations
+
+import math
+
+from numba import njit
+
+from racket.solver.ball_kernel import (
+    _loading,
+    ball_compression,
+    branch_force,
+    monotone_force,
+    unloading_exponent,
+)
+from racket.solver.bed_kernel import deflection, stored
+from racket.solver.layout import LINEAR
+
+BED_MEMO_ROWS = 7
+"""Rows of a massed bed's memo: the bed's largest force F_max it was made for [N], its
+loading deflection u there [m], its set-back delta [m] and its last solution's u [m]; the
+ball's largest force it was made for [N], its compression there [m] and its unloading
+exponent (NaN until needed).  A new memo holds -1 in rows 0 and 4, 0 in row 3."""
+
+_NEWTON_STEPS = 100
+
+
+@njit(cache=True)
+def _remember(k, s, loss, f_max, memo, i):
+    """Column ``i`` of ``memo`` made for ``f_max``: the loading deflection there and the
+    set-back (see :data:`BED_MEMO_ROWS`).
+    """
+    if memo[0, i] != f_max:
+        memo[0, i] = f_max
+        u_max = deflection(k, s, f_max)[0] if f_max > 0.0 else 0.0
+        memo[1, i] = u_max
+        memo[2, i] = 2.0 * loss * stored(k, s, u_max) / f_max if f_max > 0.0 else 0.0
+
+
+@njit(cache=True)
+def bed_force(k, s, loss, comp, z, f_max, memo, i):
+    """The bed's force F [N] and loading-curve deflection u [m] where w_bed(F) + comp F = z.
+
+    Parameters
+    ----------
+    k, s, loss : float
+        The bed's stiffness at the point [N/m], stretch [1/m^2] and loss [-].
+    comp : float
+        Compliance in series with the bed [m/N] (the step's and the frame's).
+    z : float
+        What the bed's deflection and the series compliance's take up [m].
+    f_max : float
+        The bed's largest force so far [N].
+    memo : ndarray (BED_MEMO_ROWS, n)
+        The beds' memos; column ``i`` is this one's (its last solution is the Newton guess).
+    """
+    _remember(k, s, loss, f_max, memo, i)
+    u_max, delta = memo[1, i], memo[2, i]
+    if z >= u_max + comp * f_max:  # loading: w = u
+        lo, hi, set_back, shift = u_max, max(z, u_max), 0.0, 0.0
+    elif z >= delta:  # unloading (or reloading) along the set-back curve
+        lo, hi, set_back, shift = 0.0, u_max, delta / f_max, delta
+    else:  # beyond the set-back: pulling back about it
+        lo, hi, set_back, shift = z - delta, 0.0, 0.0, delta
+    guess = memo[3, i]
+    u = guess if lo < guess < hi else 0.5 * (lo + hi)
+    for _ in range(_NEWTON_STEPS):
+        f = k * u * (1.0 + s * u * u)
+        resid = u + shift - set_back * f + comp * f - z
+        if resid == 0.0:
+            break
+        if resid < 0.0:
+            lo = u
+        else:
+            hi = u
+        u_new = u - resid / (1.0 + (comp - set_back) * k * (1.0 + 3.0 * s * u * u))
+        newton = lo < u_new < hi
+        if not newton:
+            u_new = 0.5 * (lo + hi)
+        # a Newton step this small leaves the next one at round-off (quadratic convergence);
+        # the scale is the bed's largest deflection, as u goes through 0 beyond its set-back
+        step, scale = abs(u_new - u), abs(u_new) + u_max
+        u = u_new
+        if step <= 1e-15 * scale or (newton and step <= 1e-7 * scale):
+            break
+    memo[3, i] = u
+    return k * u * (1.0 + s * u * u), u
+
+
+@njit(cache=True)
+def massed_forces(law, params, coef, a1, bed, k, comp, h, x0, r0, f1_max, f2_max, guess, f2_guess,
+                  memo, i):  # fmt: skip
+    """The ball's force F1 and the bed's F2 [N] at the step's end (see the module docstring):
+    the ball's from the bed's force extrapolated, then the bed's from the ball's.
+
+    The equations are coupled through h alone, some 1e-4 of the compliances beside it, so
+    one sweep leaves the ball's equation off by h times the extrapolation's error in F2
+    (about 1e-13 m at the default step), a third order in the step.
+
+    Parameters
+    ----------
+    law, params, coef : int, ndarray, tuple
+        The ball's law, its numbers and its force coefficients for ``a1``.
+    a1 : float
+        The ball's and the bed mass's step compliance [m/N].
+    bed : ndarray (3,)
+        The bed's stretch [1/m^2], loss [-] and moving mass [kg].
+    k, comp, h : float
+        The bed's stiffness at the point [N/m], the compliance in series with it [m/N] (the
+        step's h and the frame's), and h [m/N].
+    x0, r0 : float
+        The ball's compression and the bed's deflection with neither force at the end [m].
+    f1_max, f2_max, guess, f2_guess : float
+        The ball's and the bed's largest forces, and the ball's and the bed's forces
+        extrapolated from the last two steps [N].
+    memo : ndarray (BED_MEMO_ROWS, n)
+        The beds' memos (column ``i``).
+    """
+    f1 = _ball_force(law, params, coef, a1, x0 + h * f2_guess, f1_max, guess, memo, i)
+    return f1, bed_force(k, bed[0], bed[1], comp, r0 + h * f1, f2_max, memo, i)[0]
+
+
+@njit(cache=True)
+def _ball_force(law, params, coef, a, z, f_max, guess, memo, i):
+    """The ball's force solving g_ball(F) + a F = z, as
+    :func:`racket.solver.ball_kernel.monotone_force`, keeping what depends on its largest
+    force alone in rows 4-6 of column ``i`` of ``memo`` (:data:`BED_MEMO_ROWS`).
+    """
+    if law == LINEAR:
+        return monotone_force(law, params, coef, a, z, f_max, guess)
+    if memo[4, i] != f_max:
+        memo[4, i] = f_max
+        memo[5, i] = _loading(law, params, f_max)[0] if f_max > 0.0 else 0.0
+        memo[6, i] = math.nan
+    if math.isnan(memo[6, i]) and 0.0 < z < memo[5, i] + a * f_max:  # unloading
+        memo[6, i] = unloading_exponent(law, params, f_max)
+    return branch_force(law, params, a, z, f_max, guess, memo[5, i], memo[6, i])
+
+
+@njit(cache=True)
+def bed_elastic(bed, k, memo, i, f2, f2_max):
+    """Energy [J] the bed would give back from its last solution (force ``f2`` [N], largest
+    ``f2_max`` [N]) to its set; its loss, loss W(u_max), is counted once loaded
+    (:func:`racket.solver.bed_kernel.bed_dissipated`).
+    """
+    _remember(k, bed[0], bed[1], f2_max, memo, i)
+    u, delta = memo[3, i], memo[2, i]
+    if u <= 0.0 or f2_max <= 0.0:
+        return stored(k, bed[0], abs(u))
+    return stored(k, bed[0], u) - 0.5 * delta * f2 * f2 / f2_max
+
+
+@njit(cache=True)
+def bed_deflection(bed, k, memo, i, f2, f2_max):
+    """The bed's deflection w [m] at its last solution (force ``f2`` [N], largest ``f2_max``
+    [N]).
+    """
+    _remember(k, bed[0], bed[1], f2_max, memo, i)
+    u, delta = memo[3, i], memo[2, i]
+    if u < 0.0 or f2_max <= 0.0:
+        return u + delta
+    return u + delta * max(1.0 - f2 / f2_max, 0.0)
+
+
+@njit(cache=True)
+def bed_gap(law, params, bed, k, memo, i, f1_max, f2, f2_max, relative_speed):
+    """How far [m] the ball's compression is from closing the contact again beyond the
+    frame's point, at the bed's nearest reach: the ball's residual compression and the
+    bed's set, less the amplitude its energy (kinetic, at ``relative_speed`` [m/s] to the
+    frame, and elastic) can swing it towards the ball (the bed is at least as stiff as k
+    either side of its set).
+    """
+    energy = 0.5 * bed[2] * relative_speed * relative_speed
+    energy += bed_elastic(bed, k, memo, i, f2, f2_max)
+    rest = ball_compression(law, params, 0.0, f1_max)
+    return rest + memo[2, i] - math.sqrt(2.0 * max(energy, 0.0) / k)
+
+
+@njit(cache=True)
+def opening_fraction(law, params, f1, f1_max, x_end):
+    """Fraction of the step at which the ball left the bed: where its compression beyond
+    its residual one went through zero, from the step's start (force ``f1``) to ``x_end``
+    (the compression with no force at the end), linearly.
+    """
+    rest = ball_compression(law, params, 0.0, f1_max)
+    d_start = ball_compression(law, params, f1, f1_max) - rest
+    d_end = x_end - rest
+    if d_start - d_end <= 0.0:
+        return 1.0
+    return min(max(d_start / (d_start - d_end), 0.0), 1.0)

@@ -1,0 +1,145 @@
+"""The string bed's moving mass (issue 35): a third body between the ball and the frame.
+
+Checked against the closed form of a linear ball on a linear bed with a mass on a clamped
+frame (two masses, two springs: modal superposition until the contact force first returns
+to zero), by its convergence order over step sizes, for momentum and energy on free and
+hand-held rackets, for the two kernels' agreement bit for bit, and for the outcome not
+depending on when the stepping stops.
+"""
+
+from dataclasses import replace
+
+import numpy as np
+import pytest
+
+from ball import Ball, LinearSpring
+from racket import CATALOG, StringBed, impact
+from racket.solver.dispatch import lockstep_from
+from studies.validation.conditions import _ball, clamped_racket
+
+BALL = _ball()
+STRUNG = CATALOG["pure-drive-2021"].racket()
+HELD = CATALOG["pure-drive-2021"].racket(support="hand-held")
+
+
+def _clamped_linear(k_bed, mass):
+    """The head-clamped racket with a uniform, linear, lossless bed of ``mass``."""
+    racket = clamped_racket(k_bed)
+    bed = StringBed(k_bed, racket.strings.extent, racket.strings.width, "uniform",
+                    moving_mass=mass)  # fmt: skip
+    return replace(racket, strings=bed)
+
+
+def _two_mass_closed_form(m, k1, m_s, k2, v, horizon=0.03):
+    """Ball (m) on a spring k1 that only pushes, onto a bed mass (m_s) on a spring k2 to the
+    ground, the ball arriving at v: e and the contact time to its last separation (the bed
+    may catch the ball again), phase by phase, each exact (the exponential of the linear
+    system in contact or apart), the contact's opening and closing found by bisection.
+    """
+    from scipy.linalg import expm
+
+    def system(k):
+        return np.array([[0, 1, 0, 0], [-k / m, 0, k / m, 0], [0, 0, 0, 1],
+                         [k / m_s, 0, -(k + k2) / m_s, 0]], dtype=float)  # fmt: skip
+
+    state, t, left, contact = np.array([0.0, v, 0.0, 0.0]), 0.0, 0.0, 0.0
+    touching = True
+    step = 1e-6
+    while t < horizon:
+        a = system(k1 if touching else 0.0)
+        move = expm(a * step)
+        nxt = move @ state
+        gap_now, gap_next = state[0] - state[2], nxt[0] - nxt[2]
+        opened = touching and gap_next <= 0.0 < gap_now
+        if opened or (not touching and gap_next > 0.0 >= gap_now):
+            lo, hi = 0.0, step
+            for _ in range(60):
+                mid = 0.5 * (lo + hi)
+                s = expm(a * mid) @ state
+                if (s[0] - s[2] > 0.0) == touching:
+                    lo = mid
+                else:
+                    hi = mid
+            state, t = expm(a * hi) @ state, t + hi
+            if touching:
+                left, contact = state[1], t
+            touching = not touching
+            continue
+        state, t = nxt, t + step
+    return -left / v, contact
+
+
+def test_a_linear_ball_on_a_linear_bed_with_a_mass_matches_two_masses_in_closed_form():
+    m, k1, k2, m_s, v = 0.057, 1.2e5, 3e4, 0.004, 10.0
+    e, contact = _two_mass_closed_form(m, k1, m_s, k2, v)
+    racket = _clamped_linear(k2, m_s)
+    ball = Ball(mass=m, law=LinearSpring(k=k1))
+    errors = []
+    steps = (300, 600, 1200, 2400)
+    for n in steps:
+        r = impact(racket, ball, racket.strings.center, v, steps_per_contact=n)
+        errors.append(abs(r.e - e))
+        assert r.contact_time == pytest.approx(contact, rel=2e-3)
+    assert errors[-1] < 1e-5  # (the bed catches the ball once more: one re-contact)
+    order = -np.polyfit(np.log(steps), np.log(errors), 1)[0]
+    assert order > 1.8  # second order, as the massless bed
+    # the mass costs the ball: on a massless bed the same ball comes back with e = 1
+    assert e < 0.99
+
+
+def test_momentum_is_kept_and_the_energy_budget_closes_with_a_bed_mass():
+    assert STRUNG.strings.moving_mass > 0.0
+    x = np.linspace(STRUNG.strings.extent[0] + 0.03, STRUNG.strings.extent[1] - 0.03, 9)
+    r = impact(STRUNG, BALL, x, 30.0)
+    # the ball's momentum went to the frame and the bed mass, moving as one (dc) body
+    m, m_s = BALL.mass, STRUNG.strings.moving_mass
+    frame = STRUNG.beam.modes.mass
+    lost = m * (30.0 + r.ball_rebound)
+    gained = frame * r.v_cm + m_s * r.point_velocity_dc
+    assert np.abs(gained / lost - 1.0).max() < 1e-9
+    assert np.abs(r.energy_residual / r.energy_initial).max() < 1e-4
+    for racket in (STRUNG, HELD):
+        fine = impact(racket, BALL, x, 30.0, steps_per_contact=1200)
+        assert np.abs(fine.energy_residual / fine.energy_initial).max() < 1e-5
+
+
+@pytest.mark.parametrize("racket", [STRUNG, HELD], ids=["free", "hand-held"])
+def test_the_two_kernels_agree_bit_for_bit_with_a_bed_mass(racket):
+    x = np.linspace(racket.strings.extent[0] + 0.02, racket.strings.extent[1] - 0.02, 70)
+    y = np.linspace(-0.05, 0.05, 70)
+    swing = 10.0 if racket.support == "free" else 0.0
+    with lockstep_from(10**9):
+        scalar = impact(racket, BALL, x, 25.0, offset=y, swing_speed=swing)
+    with lockstep_from(1):
+        lockstep = impact(racket, BALL, x, 25.0, offset=y, swing_speed=swing)
+    for name in ("e", "e_A", "contact_time", "peak_force", "vibration_energy", "string_loss",
+                 "energy_residual", "recontacts"):  # fmt: skip
+        assert np.array_equal(getattr(scalar, name), getattr(lockstep, name)), name
+
+
+def test_the_outcome_does_not_depend_on_when_stepping_stops_with_a_bed_mass():
+    x = np.linspace(HELD.strings.extent[0] + 0.02, HELD.strings.extent[1] - 0.02, 7)
+    now = impact(HELD, BALL, x, 20.0)
+    later = impact(HELD, BALL, x, 20.0, watch_after=2e-3)
+    for field in ("e", "e_A", "vibration_energy", "contact_time", "string_loss"):
+        a, b = getattr(now, field), getattr(later, field)
+        assert np.abs(a - b).max() <= 1e-9 * np.abs(a).max(), field
+    assert np.array_equal(now.recontacts, later.recontacts)
+
+
+def test_a_lighter_bed_tends_to_the_massless_one():
+    racket = clamped_racket(3e4)
+    centre = racket.strings.center
+    massless = impact(replace(racket, strings=replace(racket.strings, moving_mass=0.0)),
+                      BALL, centre, 10.0).e  # fmt: skip
+    gaps = []
+    for m in (4e-3, 1e-3, 2.5e-4):
+        lighter = replace(racket, strings=replace(racket.strings, moving_mass=m))
+        gaps.append(abs(impact(lighter, BALL, centre, 10.0).e - massless))
+    assert gaps[0] > gaps[1] > gaps[2]
+    assert gaps[2] < 0.25 * gaps[0]
+
+
+def test_a_bed_mass_in_grams_typed_as_kg_is_refused_with_the_hint():
+    with pytest.raises(ValueError, match=r"string bed moving mass.*g"):
+        StringBed(3e4, (0.0, 0.3), moving_mass=3.6)
