@@ -83,7 +83,8 @@ def bed_force(k, s, loss, comp, z, f_max, memo, i):
     """
     _remember(k, s, loss, f_max, memo, i)
     u_max, delta = memo[1, i], memo[2, i]
-    if z >= u_max + comp * f_max:  # loading: w = u
+    loading = z >= u_max + comp * f_max
+    if loading:  # w = u
         lo, hi, set_back, shift = u_max, max(z, u_max), 0.0, 0.0
     elif z >= delta:  # unloading (or reloading) along the set-back curve
         lo, hi, set_back, shift = 0.0, u_max, delta / f_max, delta
@@ -111,7 +112,10 @@ def bed_force(k, s, loss, comp, z, f_max, memo, i):
         if step <= 1e-15 * scale or (newton and step <= 1e-7 * scale):
             break
     memo[3, i] = u
-    return k * u * (1.0 + s * u * u), u
+    f = k * u * (1.0 + s * u * u)
+    if loading and f > 0.0:  # the memo made for the largest force this sets
+        memo[0, i], memo[1, i], memo[2, i] = f, u, 2.0 * loss * stored(k, s, u) / f
+    return f, u
 
 
 @njit(cache=True)
@@ -159,9 +163,13 @@ def _ball_force(law, params, coef, a, z, f_max, guess, memo, i):
         memo[4, i] = f_max
         memo[5, i] = _loading(law, params, f_max)[0] if f_max > 0.0 else 0.0
         memo[6, i] = math.nan
-    if math.isnan(memo[6, i]) and 0.0 < z < memo[5, i] + a * f_max:  # unloading
+    switch = memo[5, i] + a * f_max
+    if math.isnan(memo[6, i]) and 0.0 < z < switch:  # unloading
         memo[6, i] = unloading_exponent(law, params, f_max)
-    return branch_force(law, params, a, z, f_max, guess, memo[5, i], memo[6, i])
+    f = branch_force(law, params, a, z, f_max, guess, memo[5, i], memo[6, i])
+    if z >= switch and f > 0.0:  # loading: the memo made for the largest force this sets
+        memo[4, i], memo[5, i], memo[6, i] = f, z - a * f, math.nan
+    return f
 
 
 @njit(cache=True)

@@ -156,7 +156,7 @@ def _one_impact(frame, points, ball, controls, out, p):
         h = dt * dt / (6.0 * bed[2])
         a1 = -ball.g1[0] + h
         coef1 = force_coefficients(law, params, a1)
-        comp = h + (points.series[p] - inv_ks) + _frame_compliance(out_d, gin1)
+        comp = h + (points.series[p] - inv_ks) + _dot(out_d, gin1)
         k_bed = 1.0 / inv_ks
         q, qd = _dot(out_d, s), _dot(points.out_v[p], s)  # the bed moves with the frame
         memo[3, 0] = 0.0
@@ -346,15 +346,6 @@ def _free_step(trans, gin0, out_d, s, force):
         s[j, 1] = s1
         z += out_d[j, 0] * s0 + out_d[j, 1] * s1
     return z
-
-
-@njit(cache=True)
-def _frame_compliance(out_d, gin1):
-    """The point's displacement per unit force at the step's end [m/N]."""
-    c = 0.0
-    for j in range(out_d.shape[0]):
-        c += out_d[j, 0] * gin1[j, 0] + out_d[j, 1] * gin1[j, 1]
-    return c
 
 
 @njit(cache=True)

@@ -22,7 +22,6 @@ from racket.solver.contact_kernel import contact_compression
 from racket.solver.expm import step_back
 from racket.solver.kernel import (
     _dot,
-    _frame_compliance,
     _opening_fraction,
     _power,
     _reach,
@@ -127,9 +126,7 @@ def start_slot(frame, points, ball, out, p, i, w, v, flags, record, h):
         coef1 = force_coefficients(ball.law, ball.params, a1)
         v[A1, i], v[C1_0, i], v[C1_1, i], v[C1_2, i] = a1, coef1[0], coef1[1], coef1[2]
         v[COMP, i] = (
-            h
-            + (points.series[p] - points.inv_ks[p])
-            + _frame_compliance(out_d, w[GIN1_0 : GIN1_1 + 1, :, i].T)
+            h + (points.series[p] - points.inv_ks[p]) + _dot(out_d, w[GIN1_0 : GIN1_1 + 1, :, i].T)
         )
         v[Q, i], v[QD, i] = _dot(out_d, s), _dot(points.out_v[p], s)
     v[U, i], v[UD, i], v[FORCE, i], v[F_BEFORE, i], v[F_PEAK_, i] = 0.0, ud, 0.0, 0.0, 0.0
