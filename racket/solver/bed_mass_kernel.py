@@ -198,17 +198,19 @@ def bed_deflection(bed, k, memo, i, f2, f2_max):
 
 
 @njit(cache=True)
-def bed_gap(law, params, bed, k, memo, i, f1_max, f2, f2_max, relative_speed):
+def bed_gap(law, params, bed, k, residual, memo, i, f1_max, f2, f2_max, relative_speed):
     """How far [m] the ball's compression is from closing the contact again beyond the
     frame's point, at the bed's nearest reach: the ball's residual compression and the
     bed's set, less the amplitude its energy (kinetic, at ``relative_speed`` [m/s] to the
-    frame, and elastic) can swing it towards the ball (the bed is at least as stiff as k
-    either side of its set).
+    frame, and elastic, with the modes left out, ``residual`` [m/N] in series with it) can
+    swing it towards the ball (the bed is at least as stiff as k either side of its set, so
+    the spring behind it at least as stiff as 1 / (1/k + residual)).  The frame's vibration
+    can feed the bed more; the kernels watch some steps longer for that.
     """
-    energy = 0.5 * bed[2] * relative_speed * relative_speed
+    energy = 0.5 * bed[2] * relative_speed * relative_speed + 0.5 * residual * f2 * f2
     energy += bed_elastic(bed, k, memo, i, f2, f2_max)
     rest = ball_compression(law, params, 0.0, f1_max)
-    return rest + memo[2, i] - math.sqrt(2.0 * max(energy, 0.0) / k)
+    return rest + memo[2, i] - math.sqrt(2.0 * max(energy, 0.0) * (1.0 / k + residual))
 
 
 @njit(cache=True)

@@ -251,8 +251,9 @@ def after_step(frame, points, ball, controls, out, w, v, flags, scratch, i, step
             # Open and separating in the dc motion: over for good once the gap exceeds the
             # largest deflection the remaining vibration can bring to the point.
             if massed:
-                z_open = bed_gap(law, params, bed, 1.0 / points.inv_ks[p], memo, i, f_peak,
-                                 v[F2, i], v[F2_PEAK, i],
+                residual = points.series[p] - points.inv_ks[p]
+                z_open = bed_gap(law, params, bed, 1.0 / points.inv_ks[p], residual, memo, i,
+                                 f_peak, v[F2, i], v[F2_PEAK, i],
                                  v[QD, i] - _dot(points.out_v[p], scratch))  # fmt: skip
             elif sine:
                 z_open = v[X_BALL, i]
