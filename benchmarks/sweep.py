@@ -15,7 +15,8 @@ to the targets, not the absolute times; the load average is printed before and a
   modes left out, as the model has it) with scipy's solve_ivp (RK45, rtol 1e-8) in two
   phases, loading until the compression peaks and unloading until the force vanishes;
   and a real string bed (stiffening and lossy) against the same bed linear (issue 35's
-  1.3 at most);
+  1.3 at most); and the same sweep of oblique impacts of a spinning ball against head-on
+  (issue 36's 1.5 at most);
 * one position (a new one each call); 1e5 positions in one call and 1e6 impacts through
   ``studies.sweep`` (untraced, then the peak of traced memory in a second run); the unhappy
   ball's 200-point sweep (its Xo search included); the default accuracy against 16 times the
@@ -175,6 +176,33 @@ def _real_bed_ratio(runs: int = 15) -> float:
     return float(np.median(times["real"]) / np.median(times["plain"]))
 
 
+def _oblique_ratio(runs: int = 15) -> float:
+    """A 200-point sweep of oblique impacts (issue 36: 8 m/s along the face, 3 m/s across,
+    300 rad/s of backspin, on the Pure Drive's sliding mains) over the same sweep head-on:
+    medians of interleaved warm calls.
+    """
+    from racket import default_ball, oblique_impact
+
+    racket, ball = CATALOG["pure-drive-2021"].racket(), default_ball()
+    start, end = racket.strings.extent
+    x = np.linspace(start, end, POINTS + 2)[1:-1]
+    calls = {
+        "oblique": lambda: oblique_impact(
+            racket, ball, x, 16.5, slip_velocity=(8.0, 3.0), spin=(0.0, -300.0, 0.0)
+        ),
+        "head-on": lambda: impact(racket, ball, x, 16.5),
+    }
+    times = {name: [] for name in calls}
+    for call in calls.values():
+        call()
+    for _ in range(runs):
+        for name, call in calls.items():
+            t0 = time.perf_counter()
+            call()
+            times[name].append(time.perf_counter() - t0)
+    return float(np.median(times["oblique"]) / np.median(times["head-on"]))
+
+
 def kernel_table(racket, ball) -> None:
     """The lockstep kernel against the scalar one by batch size (the kernel alone, on the
     threads the batch is worth).
@@ -225,6 +253,7 @@ def main() -> None:
     _row("  speed-up over the solve_ivp baseline", slow / fast, "x", 5000, better="higher")
     print(f"{'  a real string bed (issue 35):':<48}")
     _row("  real bed (stiffening, lossy, massed) / linear", _real_bed_ratio(), "", 1.3)
+    _row("  oblique, spinning / head-on (issue 36)", _oblique_ratio(), "", 1.5)
     positions = iter(np.linspace(0.0, 0.32, 100_003)[1:])  # a new position each call
     one = _median_time(lambda: impact(racket, ball, next(positions), SPEED), runs=300)
     _row("single position (a new one each call), median", 1e3 * one, "ms", 0.2)

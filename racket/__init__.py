@@ -7,7 +7,9 @@ type 2 ball), the paper's (:func:`paper_racket`, :func:`paper_ball`), rackets fr
 sheets (:func:`from_specs`, :func:`string_bed_stiffness`, the :data:`CATALOG` of well-known
 rackets) and the modelled flex test (:func:`flex_test_stiffness`); what a racket is strung
 with (:class:`Stringing` of a :class:`String` of a material of :data:`MATERIALS`, the
-:data:`STRINGS` presets, :func:`stringing` by name).
+:data:`STRINGS` presets, :func:`stringing` by name); spin (issue 36): a :class:`Stroke`
+(the :data:`STROKES` presets) and :func:`hit`, the ball's flight after it; a spinning ball
+meeting the strings obliquely, :func:`oblique_impact`.
 """
 
 from common.version import __version__
@@ -22,12 +24,13 @@ from racket.presets import (
     paper_racket,
 )
 from racket.racket import SUPPORTS, Racket, StringBed
-from racket.solver import Impact, impact
+from racket.solver import Impact, ObliqueImpact, StrokeImpact, hit, impact, oblique_impact
 from racket.specs import from_specs, string_bed_stiffness
 from racket.specs.catalog import CATALOG
 from racket.specs.stiffness import flex_test_stiffness
 from racket.string_material import MATERIALS
 from racket.stringing import STRINGS, String, Stringing, stringing
+from racket.stroke import STROKES, Stroke
 from racket.swing import Swing
 
 __all__ = [
@@ -36,22 +39,28 @@ __all__ = [
     "GRIPS",
     "MATERIALS",
     "STRINGS",
+    "STROKES",
     "SUPPORTS",
     "TENNIS_BALL_MASS",
     "TENNIS_BALL_RADIUS",
     "Hand",
     "Impact",
+    "ObliqueImpact",
     "Racket",
     "String",
     "StringBed",
     "Stringing",
+    "Stroke",
+    "StrokeImpact",
     "Swing",
     "__version__",
     "default_ball",
     "default_racket",
     "flex_test_stiffness",
     "from_specs",
+    "hit",
     "impact",
+    "oblique_impact",
     "paper_ball",
     "paper_racket",
     "string_bed_stiffness",

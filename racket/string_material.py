@@ -60,6 +60,8 @@ class Material:
         String-string coefficient of friction [-] (TWU, median).
     density : float
         Density of the material [kg/m^3].
+    ball_friction : float
+        String-ball coefficient of friction [-] (TWU, median).
     """
 
     name: str
@@ -70,11 +72,12 @@ class Material:
     tension_loss: float
     friction: float
     density: float
+    ball_friction: float
 
     def __post_init__(self):
         positive(f"{self.name} twu_stiffness", self.twu_stiffness, "N/m")
         in_range(f"{self.name} reference_gauge", self.reference_gauge, 1e-3, 1.5e-3, "m")
-        for fraction in ("energy_return", "tension_loss", "friction"):
+        for fraction in ("energy_return", "tension_loss", "friction", "ball_friction"):
             in_range(f"{self.name} {fraction}", getattr(self, fraction), 0.0, 1.0)
         positive(f"{self.name} density", self.density, "kg/m^3")
 
@@ -101,6 +104,7 @@ MATERIAL_SOURCES = {
     "energy_return": _TWU + ": 89.7 / 94.7 / 96.6 %",
     "tension_loss": _TWU + ": 44.8 / 21.7 / 15.3 % in TWU's impact test",
     "friction": _TWU + ": string-string COF 0.086 / 0.108 / 0.149",
+    "ball_friction": _TWU + ": string-ball COF 0.444 / 0.425 / 0.417",
     "density": (
         f"polyester (co-poly): {_PET}, an assumption that co-poly is PET's; nylon and "
         f"multifilament: {_PA66}; natural gut: an assumption, 1300 kg/m^3 (1250-1350, "
@@ -117,19 +121,19 @@ MATERIAL_SOURCES = {
 MATERIALS = {
     "polyester": Material(
         "polyester", ("poly", "co-poly", "copoly", "co-polyester"), 200.0 * LB_PER_IN,
-        1.25e-3, 0.897, 0.448, 0.086, 1380.0,
+        1.25e-3, 0.897, 0.448, 0.086, 1380.0, 0.444,
     ),
     "nylon": Material(
         "nylon", ("synthetic-gut", "syn-gut", "synthetic"), 157.0 * LB_PER_IN,
-        1.30e-3, 0.947, 0.217, 0.108, 1140.0,
+        1.30e-3, 0.947, 0.217, 0.108, 1140.0, 0.425,
     ),
     "multifilament": Material(
         "multifilament", ("multi",), 157.0 * LB_PER_IN,
-        1.30e-3, 0.947, 0.217, 0.108, 1140.0,
+        1.30e-3, 0.947, 0.217, 0.108, 1140.0, 0.425,
     ),
     "natural-gut": Material(
         "natural gut", ("gut",), 94.0 * LB_PER_IN,
-        1.30e-3, 0.966, 0.153, 0.149, 1300.0,
+        1.30e-3, 0.966, 0.153, 0.149, 1300.0, 0.417,
     ),
 }  # fmt: skip
 """The string materials by name (sources: :data:`MATERIAL_SOURCES`)."""

@@ -7,6 +7,9 @@ hits it, and never the other way round (``tests/test_structure.py`` keeps the mo
 importing it).  Its public face is small:
 
 * :func:`impact` and its :class:`Impact` result;
+* :func:`oblique_impact` (:class:`ObliqueImpact`), a spinning ball meeting the strings
+  obliquely, and :func:`hit` (:class:`StrokeImpact`), a stroke and the ball's flight after
+  (issue 36);
 * :func:`load_kernel`, to compile the kernels before the first impact;
 * :data:`F1_MIN` and :data:`DEFAULT_STEPS_PER_CONTACT`, the solver's limits and default
   resolution;
@@ -22,7 +25,9 @@ tile together), :mod:`~racket.solver.ball_kernel` (the force solve of each law),
 :mod:`~racket.solver.expm` (the blocks' exact steps), :mod:`~racket.solver.dispatch`
 (threads), :mod:`~racket.solver.outcome` and :mod:`~racket.solver.budget` (e, e_A and the
 energy budget at separation) and :mod:`~racket.solver.unhappy_search` (the unhappy ball's
-self-consistent Xo).  :mod:`~racket.solver.cache_stamp` drops numba's on-disk cache when
+self-consistent Xo); :mod:`~racket.solver.oblique` and :mod:`~racket.solver.stroke_hit`
+(the tangential contact on the strings, :mod:`ball.grip`, driven by the head-on force
+history).  :mod:`~racket.solver.cache_stamp` drops numba's on-disk cache when
 any of these files has changed (numba alone would notice a change in a kernel's own file
 only).
 """
@@ -38,7 +43,9 @@ from racket.solver.driver import (
     impact,
     load_kernel,
 )
+from racket.solver.oblique import ObliqueImpact, oblique_impact
 from racket.solver.steps import system_steps
+from racket.solver.stroke_hit import StrokeImpact, hit
 
 drop_stale_cache(Path(__file__).parent)  # before any kernel loads its cache (they load lazily)
 
@@ -47,9 +54,13 @@ __all__ = [
     "DEFAULT_STEPS_PER_CONTACT",
     "F1_MIN",
     "Impact",
+    "ObliqueImpact",
+    "StrokeImpact",
     "announced",
+    "hit",
     "impact",
     "load_kernel",
+    "oblique_impact",
     "one_blas_thread",
     "system_steps",
 ]

@@ -94,6 +94,23 @@ def one_blas_thread():
         yield
 
 
+def run_rows(run, args, count: int) -> None:
+    """Run ``run(*args, start, stop, step)`` (a compiled function that releases the GIL,
+    e.g. :func:`ball.grip.grip_kernel`) over ``count`` rows on as many threads as they are
+    worth (:data:`IMPACTS_PER_THREAD` each at least).
+
+    Parameters
+    ----------
+    run : callable
+        The function.
+    args : tuple
+        Its arguments before the slice.
+    count : int
+        Rows [-].
+    """
+    _run_on_threads(run, args, count, max(1, min(pool_size(), count // IMPACTS_PER_THREAD)))
+
+
 def _run_on_threads(run, args, count: int, threads: int):
     """Run ``run(*args, start, stop, step)`` (a kernel, which releases the GIL) over the
     ``count`` impacts on ``threads`` threads (this one and ``threads - 1`` of the kernels'

@@ -45,7 +45,12 @@ from racket.racket import Racket
 from racket.solver import layout
 from racket.solver.dispatch import IMPACTS_PER_THREAD, LOCKSTEP_MIN, one_blas_thread, pool_size
 from racket.solver.dispatch import compile_notice as _compile_notice  # noqa: F401  (kept importable here)
-from racket.solver.outcome import SELF_CONSISTENT_TOL, Impact, outcome  # noqa: F401  (as above)
+from racket.solver.outcome import (  # noqa: F401  (as above)
+    SELF_CONSISTENT_TOL,
+    Impact,
+    history_bound,
+    outcome,
+)
 from racket.solver.stepper import Stepper as _Stepper
 from racket.solver.stepper import contact_time_scale
 from racket.solver.unhappy_search import SCAN_RATIO, unhappy_x_o  # noqa: F401  (as above)
@@ -93,7 +98,7 @@ def impact(
     pivot: float | None = None,
     steps_per_contact: int | None = None,
     watch_after: float = 0.0,
-    histories: bool = False,
+    histories: bool | str = False,
 ) -> Impact:
     """A ball hits the racket head-on at ``position``, normal to the string plane.
 
@@ -131,9 +136,12 @@ def impact(
         Extra time [s], in [0, 1], to keep stepping after the solver has decided that the
         ball has left for good, watching for another contact; the outcome does not depend
         on it unless that decision was wrong.
-    histories : bool
-        Also return the histories (force, compressions, velocities against time; the
-        impacts then run twice, the second time recording); None otherwise.
+    histories : bool or str
+        ``"force"``: also return the force's history alone (recorded in the run itself:
+        what :func:`racket.oblique_impact` needs, at a small cost).  True: also return the
+        histories (force, compressions, velocities against time; recorded in the run
+        itself when they fit in :data:`racket.solver.outcome.HISTORY_MEMORY`, else the
+        impacts run twice, the second time recording); None otherwise.
 
     Returns
     -------
@@ -161,7 +169,8 @@ def impact(
     """
     instance("racket", racket, Racket, "a racket.Racket")
     instance("ball", ball, Ball, "a ball.Ball")
-    histories = flag("histories", histories)
+    if histories != "force":
+        histories = flag("histories", histories)
     scalar = np.ndim(position) == 0 and np.ndim(offset) == 0
     x, y = racket.check_points(position, offset)
     speed = check_speed("speed", speed, allow_zero=True)
@@ -297,7 +306,10 @@ def _solve(
     if stepper.code == layout.SINE:
         x_o = unhappy_x_o(racket, ball, x, y, speed, swing_speed, pivot, stepper)
     extra_steps = round(watch_after / stepper.dt)
-    outputs = stepper.run(x_o, extra_steps=extra_steps)
+    record = history_bound(stepper, x.size, extra_steps) if histories else 0
+    force_only = histories == "force"
+    outputs = stepper.run(x_o, extra_steps=extra_steps, history_steps=record,
+                          force_only=force_only)  # fmt: skip
     ended = outputs.summary[:, layout.ENDED]
     if not np.all(ended):
         raise RuntimeError(

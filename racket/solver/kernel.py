@@ -252,7 +252,9 @@ def _one_impact(frame, points, ball, controls, out, p):
         f2_before, f2 = f2, f2_new
         f2_peak = max(f2_peak, f2)
         step += 1
-        if record and step < out.history.shape[2]:
+        if record and step < out.history.shape[2] and out.history.shape[0] == 1:
+            out.history[H_FORCE, p, step] = force  # the force's history alone
+        elif record and step < out.history.shape[2]:
             x_now = x_ball if sine else ball_compression(law, params, force, f_peak)
             if massed:
                 string = bed_deflection(bed, k_bed, memo, 0, f2, f2_peak)
@@ -376,9 +378,12 @@ def _record(history, points, p, step, force, compression, string, ball_velocity,
             frame_force):  # fmt: skip
     """Write one step of impact ``p``'s histories: the force, the ball's compression, the
     strings' deflection, the ball's velocity, the point's (all and dc) from the block
-    states ``s``, and the force on the frame (the bed's, with a mass; the ball's without).
+    states ``s``, and the force on the frame (the bed's, with a mass; the ball's without);
+    the force alone into a history of one row.
     """
     history[H_FORCE, p, step] = force
+    if history.shape[0] == 1:
+        return
     history[H_BALL_COMP, p, step] = compression
     history[H_STRING, p, step] = string
     history[H_BALL_VEL, p, step] = ball_velocity

@@ -25,7 +25,7 @@ from numba import njit
 from racket.solver.bed_kernel import bed_active
 from racket.solver.bed_mass_kernel import BED_MEMO_ROWS
 from racket.solver.contact_kernel import MEMO_ROWS, contact_force
-from racket.solver.layout import LINEAR, SINE
+from racket.solver.layout import H_FORCE, LINEAR, SINE
 from racket.solver.lockstep_slot import (
     after_step,
     finish,
@@ -107,6 +107,7 @@ def _tile(frame, points, ball, controls, out, ids, w, v, flags, scratch, memo):
     bed, plain = ball.bed, not bed_active(ball.bed)
     massed = bed[2] > 0.0 and not sine
     record = controls.record and out.history.shape[2] > 1
+    full = record and out.history.shape[0] > 1  # every history, or the force's alone
     dt = controls.dt
     h = dt * dt / (6.0 * bed[2]) if massed else 0.0
     for i in range(n):
@@ -165,8 +166,12 @@ def _tile(frame, points, ball, controls, out, ids, w, v, flags, scratch, memo):
         _bookkeep(power, power_prev, damping, force, f_new, f_before, f_peak, need, stop_at,
                   recontacts, dt, tol, n)  # fmt: skip
         step += 1
+        if record and not full and step < out.history.shape[2]:
+            for i in range(n):
+                if not flags[DONE, i]:
+                    out.history[H_FORCE, flags[IMPACT, i], step] = force[i]
         for i in range(n):
-            if (record or need[i] != 0.0) and not flags[DONE, i]:
+            if (full or need[i] != 0.0) and not flags[DONE, i]:
                 left = force[i] == 0.0 and f_before[i] > 0.0
                 after_step(frame, points, ball, controls, out, w, v, flags, scratch, i, step, left,
                             memo)  # fmt: skip

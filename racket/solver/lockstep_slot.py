@@ -35,6 +35,7 @@ from racket.solver.layout import (
     DAMPING_LOSS,
     ENDED,
     F_PEAK,
+    H_FORCE,
     RECONTACTS,
     SINE,
     SINE_WORK,
@@ -197,7 +198,9 @@ def after_step(frame, points, ball, controls, out, w, v, flags, scratch, i, step
     force, ud = v[FORCE, i], v[UD, i]
     record = controls.record and out.history.shape[2] > 1
     gathered = False
-    if record and step < out.history.shape[2]:
+    if record and step < out.history.shape[2] and out.history.shape[0] == 1:
+        out.history[H_FORCE, p, step] = force  # the force's history alone
+    elif record and step < out.history.shape[2]:
         gather(w, i, scratch)
         gathered = True
         x_now = v[X_BALL, i] if sine else ball_compression(law, params, force, v[F_PEAK_, i])

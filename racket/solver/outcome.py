@@ -164,9 +164,34 @@ point_velocity_dc_history : ndarray or None
         return self.point_velocity - self.point_velocity_dc_history
 
 
+HISTORY_MEMORY = 64e6
+"""Bytes the first run may record histories into before it knows how long they are
+(:func:`history_bound`); beyond, the histories come from a second run."""
+
+
+def history_bound(stepper: Stepper, count: int, extra_steps: int) -> int:
+    """Steps [-] the first run records, when histories are asked for: three contacts' worth
+    at the stiffest spot and the extra steps (a contact at the bed's centre is about 1.5
+    times as long; a later catch by the frame may need more, and then the histories come
+    from a second run), or 0 when that would take more than :data:`HISTORY_MEMORY`.
+
+    Parameters
+    ----------
+    stepper : Stepper
+        The kernel's inputs.
+    count : int
+        Impacts in the run [-].
+    extra_steps : int
+        Steps [-] the run goes on after each ball has left for good.
+    """
+    steps = 3 * stepper.steps_per_contact + extra_steps
+    return steps if 8 * layout.N_HISTORY * count * steps <= HISTORY_MEMORY else 0
+
+
 def outcome(stepper: Stepper, racket, ball, x, y, speed, x_o, outputs, histories, extra_steps):
     """The Impact's fields from the kernel's outputs, and the ball's largest compression
-    (``compression``); the histories (if asked for) from a second run, recording.
+    (``compression``); the histories (if asked for) from the run's own record when it
+    recorded long enough (:func:`history_bound`), else from a second run, recording.
 
     Parameters
     ----------
@@ -184,8 +209,8 @@ def outcome(stepper: Stepper, racket, ball, x, y, speed, x_o, outputs, histories
         The unhappy ball's Xo [m] per impact (NaN for other laws).
     outputs : racket.solver.layout.Outputs
         What :meth:`Stepper.run` returned.
-    histories : bool
-        Also the histories against time.
+    histories : bool or str
+        Also the histories against time (``"force"``: the force's alone).
     extra_steps : int
         Steps [-] the run went on after each ball had left for good.
 
@@ -195,7 +220,7 @@ def outcome(stepper: Stepper, racket, ball, x, y, speed, x_o, outputs, histories
         The fields (a dict of arrays over the impacts) and the histories' times [s] (None
         without histories).
     """
-    out_ball, out_state, summary, _ = outputs
+    out_ball, out_state, summary, recorded = outputs
     closing, dt, modes, system = stepper.closing, stepper.dt, stepper.modes, stepper.system
     code = stepper.code
     n = system.count
@@ -267,9 +292,15 @@ def outcome(stepper: Stepper, racket, ball, x, y, speed, x_o, outputs, histories
     used = int(steps.max()) + 1
     history = dict.fromkeys(_HISTORY_ROWS)
     if histories:
-        hist = stepper.run(x_o, extra_steps=extra_steps, history_steps=used)[3]
+        force_only = histories == "force"
+        if recorded.shape[2] >= used and recorded.shape[1] == x.size:
+            hist = recorded[:, :, :used].copy()
+        else:
+            hist = stepper.run(x_o, extra_steps=extra_steps, history_steps=used,
+                               force_only=force_only)[3]  # fmt: skip
         hist[:, np.arange(used)[None, :] > steps[:, None]] = np.nan  # after the ball left
-        history = {name: hist[row] for name, row in _HISTORY_ROWS.items()}
+        rows = {"force": layout.H_FORCE} if force_only else _HISTORY_ROWS
+        history.update({name: hist[row] for name, row in rows.items()})
 
     m_eff = np.full(x.size, np.inf)
     if n:

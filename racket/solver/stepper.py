@@ -145,11 +145,12 @@ class Stepper:
             bed=bed_law(racket.strings, law[0]),
         )
 
-    def run(self, x_o, subset=None, stop_on_snap=False, extra_steps=0, history_steps=0):
+    def run(self, x_o, subset=None, stop_on_snap=False, extra_steps=0, history_steps=0,
+            force_only=False):  # fmt: skip
         """Run the impacts (all, or those indexed by ``subset``) with Xo ``x_o`` [m] per
         impact run; returns the kernel's :class:`~racket.solver.layout.Outputs` (ball, block
         states, summary, history), the history over the first ``history_steps`` steps
-        (none if 0).
+        (none if 0; the force's alone, one row, if ``force_only``).
         """
         points = self.points
         if subset is not None:
@@ -171,7 +172,9 @@ class Stepper:
             state=np.zeros((count, nb, 2)),
             summary=np.zeros((count, layout.N_SUMMARY)),
             history=np.zeros(
-                (layout.N_HISTORY, count, history_steps) if history_steps else (1, 1, 1)
+                (1 if force_only else layout.N_HISTORY, count, history_steps)
+                if history_steps
+                else (1, 1, 1)
             ),
         )
         run_kernel((self.frame, points, self.ball, controls, out), count)

@@ -1,7 +1,7 @@
 """The ``racket-impact`` command line.
 
-Subcommands: ``paper``, ``sweep``, ``serve``, ``collide``, ``modes``, ``specs``, ``compare``,
-``strings`` and more (``racket-impact --help``).
+Subcommands: ``paper``, ``sweep``, ``serve``, ``stroke``, ``collide``, ``modes``, ``specs``,
+``compare``, ``strings`` and more (``racket-impact --help``).
 Rackets and balls are presets or TOML files (:mod:`studies.config`).  Tables go to CSV,
 JSON or Parquet by the file's extension, plots to PNG, SVG or PDF.  Bad input prints one
 line naming the problem and exits with status 2.
@@ -20,7 +20,19 @@ from pathlib import Path
 
 from ball import DEFAULT_BALL
 from common.version import __version__
-from studies.cli import app, balls, compare, face, paper, rackets, serve, strings, sweep, validate
+from studies.cli import (
+    app,
+    balls,
+    compare,
+    face,
+    paper,
+    rackets,
+    serve,
+    strings,
+    stroke,
+    sweep,
+    validate,
+)
 from studies.cli.app import cmd_app
 from studies.cli.balls import cmd_ball, cmd_collide, cmd_drop
 from studies.cli.compare import cmd_compare
@@ -33,6 +45,7 @@ from studies.cli.rackets import cmd_feel, cmd_modes, cmd_specs
 from studies.cli.runner import _reader_may_go, _start
 from studies.cli.serve import cmd_serve
 from studies.cli.strings import cmd_strings
+from studies.cli.stroke import cmd_stroke
 from studies.cli.sweep import cmd_sweep
 from studies.cli.validate import cmd_validate
 from studies.outputs import interrupted
@@ -54,6 +67,7 @@ __all__ = [
     "cmd_serve",
     "cmd_specs",
     "cmd_strings",
+    "cmd_stroke",
     "cmd_sweep",
     "cmd_sweetspots",
     "cmd_validate",
@@ -65,7 +79,7 @@ __all__ = [
 
 TABLE_COMMANDS = (
     "sweep", "map", "serve", "collide", "ball", "modes", "specs", "feel", "sweetspots", "compare",
-    "validate", "drop", "strings",
+    "validate", "drop", "strings", "stroke",
 )  # fmt: skip
 """The commands that write tables (with sidecars): the only ones ``rerun`` replays."""
 
@@ -152,7 +166,7 @@ def build_parser(parser_class=_Parser) -> argparse.ArgumentParser:
         paper.add_paper, sweep.add_sweep, face.add_map, serve.add_serve, balls.add_collide,
         balls.add_drop, balls.add_ball, rackets.add_modes, rackets.add_specs, app.add_app,
         add_rerun, rackets.add_feel, face.add_sweetspots, compare.add_compare,
-        validate.add_validate, strings.add_strings,
+        validate.add_validate, strings.add_strings, stroke.add_stroke,
     ):  # fmt: skip
         add(sub)
     return parser

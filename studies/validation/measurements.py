@@ -39,6 +39,7 @@ from studies.validation.conditions import (
     _wall_cor,
     hamori_racket,
 )
+from studies.validation.spin_rows import spin_comparisons
 
 
 def _about(value: float, half: float) -> tuple[float, float, float]:
@@ -269,5 +270,6 @@ def comparisons() -> list[Comparison]:
             )
             for i, where, value in ((0, "tip", 0.1), (1, "centre", 0.45), (2, "throat", 0.50))
         ),
+        *spin_comparisons(),
     ]  # fmt: skip
     return items

@@ -43,6 +43,10 @@ GROUPS = {
     "the frame's stiffness (RA)": ("ra",),
     "dwell times in real strokes (Hamori)": ("hamori",),
     "power over the face (e_A)": ("twu", "typical"),
+    "oblique bounces without spin (Cross)": ("bounce",),
+    "spin off the strings (TWU)": ("spin",),
+    "strokes in play": ("stroke",),
+    "courts (ITF pace)": ("court",),
 }
 """The comparisons by what they test: group -> the first words of their names."""
 

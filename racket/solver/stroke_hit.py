@@ -1,0 +1,122 @@
+"""A stroke hit (issue 36): a :class:`racket.stroke.Stroke` resolved on the face, the oblique
+impact at its closing speed in the frame of the racket's own motion (the swing superposes:
+the racket's velocity before is added back), and the ball's flight after.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ball.bodies import Ball
+from racket.bed_sideways import BedSideways
+from racket.racket import Racket
+from racket.solver.oblique import ObliqueImpact, oblique_impact
+from racket.stroke import Flight, Stroke
+
+
+@dataclass(frozen=True)
+class StrokeImpact:
+    """Outcome of :func:`hit`.
+
+    Attributes
+    ----------
+    stroke : Stroke
+        The stroke.
+    position : float
+        The impact point [m from the tip].
+    oblique : ObliqueImpact
+        The impact on the face, in the frame of the racket's motion before.
+    flight : Flight
+        The ball after: speed, launch angle, spin and its split.
+    """
+
+    stroke: Stroke
+    position: float
+    oblique: ObliqueImpact
+    flight: Flight
+
+    @property
+    def contact_time(self) -> float:
+        """Duration of the contact [s]."""
+        return float(self.oblique.normal.contact_time)
+
+    @property
+    def slid_throughout(self) -> bool:
+        """True when the ball slid on the strings for the whole contact (it never gripped)."""
+        return bool(self.oblique.grip.slid_throughout[0])
+
+    @property
+    def racket_share(self) -> float:
+        """The part [-] of the ball's speed away from the face that the racket's own speed
+        gave it: (1 + e_A) v2 / ((1 + e_A) v2 + e_A v1), Eq. 22's split, with v1 and v2 the
+        ball's and the racket's speeds along the normal before (1 for a ball at rest).
+        """
+        frame = self.stroke.face_frame()
+        e_a = float(self.oblique.normal.e_A)
+        racket = (1.0 + e_a) * frame.racket_normal_speed
+        return racket / (racket + e_a * frame.ball_normal_speed)
+
+
+def hit(
+    stroke: Stroke,
+    racket: Racket,
+    ball: Ball,
+    position: float | None = None,
+    *,
+    side: BedSideways | None = None,
+) -> StrokeImpact:
+    """The ball's flight after ``stroke`` with ``racket`` at ``position``.
+
+    The impact runs in the frame of the racket point's velocity before (the racket at rest,
+    the ball closing at the stroke's closing speed, sliding and spinning as the face sees
+    it); its answer, relative to that frame, is turned back into the world's
+    (:meth:`racket.stroke.Stroke.to_world`).
+
+    Parameters
+    ----------
+    stroke : Stroke
+        The stroke.
+    racket : Racket
+        The racket (free or hand-held; a clamped head cannot swing).
+    ball : Ball
+        The ball.
+    position : float, optional
+        The impact point [m from the tip]; default the string bed's centre.
+    side : BedSideways, optional
+        The bed sideways (default: the racket's bed's, :func:`racket.bed_sideways.sideways`).
+
+    Returns
+    -------
+    StrokeImpact
+    """
+    if racket.support == "clamped-head":
+        raise ValueError("a stroke needs a racket that moves: support 'free' or 'hand-held'")
+    position = racket.strings.center if position is None else float(position)
+    frame = stroke.face_frame()
+    oblique = oblique_impact(
+        racket, ball, position, frame.closing_speed, slip_velocity=frame.slip_velocity,
+        spin=frame.spin, side=side,
+    )  # fmt: skip
+    velocity = oblique.velocity[0]
+    flight = stroke.to_world(velocity[:2], velocity[2], oblique.spin[0])
+    return StrokeImpact(stroke, position, oblique, flight)
+
+
+def spin_and_speed(strokes, racket: Racket, ball: Ball, position=None) -> np.ndarray:
+    """Speed [m/s], launch angle [rad], topspin, sidespin and spin rate [rad/s] after each
+    stroke: (n, 5), one :func:`hit` each (each has its own closing speed).
+
+    Parameters
+    ----------
+    strokes : sequence of Stroke
+        The strokes.
+    racket, ball, position
+        As :func:`hit`.
+    """
+    rows = []
+    for stroke in strokes:
+        f = hit(stroke, racket, ball, position).flight
+        rows.append([f.speed, f.launch_angle, f.topspin, f.sidespin, f.spin_rate])
+    return np.array(rows).reshape(-1, 5)

@@ -1,0 +1,237 @@
+"""``racket-impact stroke`` (issue 36): the presets printed in two tables within 100 columns,
+the unit typed is the unit answered, a stroke of one's own and a grid of its angles, every bad
+input refused in one line naming the option before any impact, the table and its sidecar
+written together (or nothing), the plot, and the same numbers from the command line and from
+:mod:`studies.stroke` (one truth).  The runs are shared by the tests (module-scope fixtures),
+in this process."""
+
+import contextlib
+import io
+import json
+import math
+
+import matplotlib
+import pandas as pd
+import pytest
+
+matplotlib.use("Agg")
+
+from common.units import KMH, MPH
+from racket import DEFAULT_RACKET, STROKES, default_ball, default_racket
+from racket.stroke import RPM
+from studies.cli import main
+from studies.cli.show import WIDTH
+
+
+def _main(argv) -> tuple[int, str, str]:
+    """``main(argv)``'s status, stdout and stderr (the parser's own exits as their status)."""
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        try:
+            status = main(list(argv))
+        except SystemExit as done:
+            status = done.code
+    return status, out.getvalue(), err.getvalue()
+
+
+@pytest.fixture(scope="module")
+def presets(tmp_path_factory):
+    """``racket-impact stroke`` for every preset, with its table and plot."""
+    folder = tmp_path_factory.mktemp("presets")
+    table, plot = folder / "strokes.json", folder / "strokes.png"
+    status, out, err = _main(["stroke", "--out", str(table), "--plot", str(plot)])
+    assert status == 0, err
+    return {"out": out, "table": table, "plot": plot, "folder": folder}
+
+
+@pytest.fixture(scope="module")
+def own(tmp_path_factory):
+    """A stroke of one's own over two paths and two faces, typed in mph and km/h."""
+    table = tmp_path_factory.mktemp("own") / "own.csv"
+    argv = ["stroke", "--head-speed-mph", "50", "--path", "10", "20", "--face", "2", "6",
+            "--ball-speed-kmh", "72", "--topspin", "1500", "--out", str(table)]  # fmt: skip
+    status, out, err = _main(argv)
+    assert status == 0, err
+    return {"out": out, "table": pd.read_csv(table)}
+
+
+def test_the_presets_print_within_100_columns_each_header_with_its_unit(presets):
+    lines = presets["out"].splitlines()
+    assert lines[0].startswith(f"racket {DEFAULT_RACKET} (free, ")
+    header = " ".join(line.strip() for line in lines[:3])
+    assert "ball itf-type-2" in header and "(the string centre)" in header
+    assert "mains sliding on dry crosses" in header
+    assert not [line for line in lines if len(line) > WIDTH]
+    for name in STROKES:
+        assert sum(line.startswith(f"{name} ") for line in lines) == 2  # strokes, ball after
+    for unit in ("[m/s]", "[deg]", "[rpm]", "[ms]", "[-]", "slid or", "gripped"):
+        assert unit in presets["out"]
+    assert "not shown" not in presets["out"] and "[mph]" not in presets["out"]
+
+
+def test_the_table_and_its_sidecar_are_written_with_the_conditions(presets):
+    rows = json.loads(presets["table"].read_text())
+    assert [row["stroke"] for row in rows] == list(STROKES)
+    sidecar = json.loads(presets["table"].with_name("strokes.json.meta.json").read_text())
+    assert sidecar["command"][0] == "stroke"
+    said = " ".join(presets["out"].split("\n  "))  # the header line, unwrapped
+    assert sidecar["conditions"] in said and "ball-string friction" in sidecar["conditions"]
+    for row in rows:
+        assert row["contact"] in ("slid", "gripped") and 0.0 < row["racket_share"] <= 1.0
+        assert 1.0 < row["contact_time_ms"] < 10.0 and row["spin_rpm"] >= 0.0
+
+
+def test_the_plot_is_written(presets):
+    data = presets["plot"].read_bytes()
+    assert data.startswith(b"\x89PNG") and len(data) > 10_000
+
+
+def test_the_command_line_and_python_give_the_same_numbers(presets):
+    from studies.stroke import stroke_table
+
+    cli = pd.read_json(presets["table"])
+    api = stroke_table(STROKES, default_racket(), default_ball())
+    assert list(cli.columns) == list(api.columns)
+    for column in ("exit_speed_m_s", "launch_deg", "spin_rpm", "topspin_rpm", "sidespin_rpm",
+                   "contact_time_ms", "racket_share"):  # fmt: skip
+        spin = abs(api[column]).max() * 1e-7 if column.endswith("rpm") else 0.0  # cancels
+        assert cli[column].to_numpy() == pytest.approx(
+            api[column].to_numpy(), rel=1e-8, abs=spin
+        ), column  # (BLAS threads)
+    assert list(cli["contact"]) == list(api["contact"])
+    first = STROKES["flat-serve"]
+    assert api["head_speed_m_s"].iloc[0] == first.head_speed
+    assert api["face_deg"].iloc[0] == pytest.approx(math.degrees(first.face_angle))
+
+
+def test_a_stroke_of_ones_own_over_its_angles_in_the_units_typed(own):
+    from studies.stroke import sweep_angles
+
+    table, out = own["table"], own["out"]
+    assert list(table["stroke"]) == ["own stroke"] * 4
+    assert list(zip(table["path_deg"], table["face_deg"], strict=True)) == [
+        (10, 2), (10, 6), (20, 2), (20, 6)
+    ]  # fmt: skip
+    assert table["head_speed_m_s"].eq(50 * MPH).all()
+    assert table["ball_speed_m_s"].to_numpy() == pytest.approx(72 * KMH)
+    assert table["ball_topspin_rpm"].to_numpy() == pytest.approx(1500.0)
+    base = STROKES["flat-forehand"]  # the numbers not typed
+    assert table["ball_angle_deg"].to_numpy() == pytest.approx(math.degrees(base.ball_angle))
+    assert "[mph]" in out and "[m/s]" not in out  # the first speed typed: mph
+    assert table["exit_speed_mph"].to_numpy() == pytest.approx(table["exit_speed_m_s"] / MPH)
+    own_stroke = type(base)(50 * MPH, 0.0, 0.0, 72 * KMH, base.ball_angle,
+                            topspin=1500 * RPM)  # fmt: skip
+    api = sweep_angles(own_stroke, [10, 20], [2, 6], default_racket(), default_ball(),
+                       name="own stroke", unit="mph")  # fmt: skip
+    assert table["exit_speed_mph"].to_numpy() == pytest.approx(api["exit_speed_mph"], rel=1e-8)
+    spin = api["spin_rpm"].max() * 1e-7  # a difference of larger numbers (BLAS threads)
+    assert table["spin_rpm"].to_numpy() == pytest.approx(api["spin_rpm"], rel=1e-8, abs=spin)
+
+
+def test_a_grid_prints_the_angles_swept_with_the_ball_after(own):
+    after = own["out"].split("\n\n")[-1]
+    assert "path" in after and "face" in after and after.count("own stroke") == 4
+    strokes = own["out"].split("\n\n")[0]
+    assert strokes.count("own stroke") == 1 and "path" not in strokes
+
+
+def test_mph_in_mph_out_and_km_h_in_km_h_out():
+    status, out, err = _main(["stroke", "volley", "--head-speed-mph", "12"])
+    assert status == 0, err
+    assert "[mph]" in out and "[m/s]" not in out
+    status, out, err = _main(["stroke", "volley", "--ball-speed-kmh", "60"])
+    assert status == 0, err
+    assert "[km/h]" in out and "[m/s]" not in out
+
+
+def test_the_bed_sideways_is_said_and_changes_the_spin(tmp_path):
+    spins = {}
+    for how in ([], ["--lubricated"], ["--stiff-bed"]):
+        path = tmp_path / f"k{len(spins)}.csv"
+        status, out, err = _main(["stroke", "kick-serve", *how, "--out", str(path)])
+        assert status == 0, err
+        header = " ".join(out.split("\n  "))
+        said = {(): "on dry crosses", ("--lubricated",): "on lubricated crosses",
+                ("--stiff-bed",): "mains held still"}[tuple(how)]  # fmt: skip
+        assert said in header
+        spins[tuple(how)] = float(pd.read_csv(path)["spin_rpm"].iloc[0])
+    assert len(set(spins.values())) == 3
+
+
+@pytest.mark.parametrize(
+    "argv, said",
+    [
+        (["--head-speed", "100"], "--head-speed must be in [0, 60] m/s, got 100 (mph typed as "),
+        (["--head-speed-mph", "-3"], "--head-speed-mph must be in [0, 134.2] mph"),
+        (["--head-speed-kmh", "nan"], "--head-speed-kmh must be a finite number"),
+        (["--ball-speed", "90"], "--ball-speed must be in [0, 80] m/s"),
+        (["--ball-speed-mph", "1e300"], "--ball-speed-mph must be in"),
+        (["--path", "10", "90"], "--path must be in [-60, 80] deg, got 90"),
+        (["--face", "-61"], "--face must be in [-60, 60] deg"),
+        (["--across", "inf"], "--across must be a finite number"),
+        (["--ball-angle", "75"], "--ball-angle must be in [-60, 60] deg"),
+        (["--topspin", "20000"], "--topspin must be in [-9549, 9549] rpm"),
+        (["--sidespin", "-10000"], "--sidespin must be in [-9549, 9549] rpm"),
+        (["--position", "0.17"], "--position must be in [0.8, "),
+        (["--position", "0.17"], "m typed as cm? 0.17 m would be 17 cm from the tip"),
+        (["--shaft", "diagonal"], "--shaft: invalid choice: 'diagonal'"),
+        (["lob"], "unknown stroke 'lob'; the presets: flat-serve"),
+        (["volley", "volley"], "stroke 'volley' is named twice"),
+        (["--lubricated", "--stiff-bed"], "--lubricated does not apply with --stiff-bed"),
+        (["--racket", "paper", "--lubricated"], "--lubricated does not apply to a bed given"),
+        (["--string-stiffness", "30000", "--stiff-bed"], "--stiff-bed does not apply to a bed"),
+        (["--support", "clamped-head"], "a stroke needs a racket that moves: --support"),
+        (
+            ["kick-serve", "--path", "-50", "--face", "50"],
+            "stroke 'kick-serve' (path -50 deg, face 50 deg): the racket misses the ball",
+        ),
+        (["--face", "1", "--face", "2"], "--face given twice"),
+        (["--stiff-bed", "--stiff-bed"], "--stiff-bed given twice"),
+        (["--out", "s.xlsx"], "--out must be a table file ending in"),
+        (["--plot", "s.gif"], "--plot must be a plot file ending in"),
+        (["--out", "nodir/s.csv"], "--out: directory 'nodir'"),
+    ],
+)
+def test_bad_input_is_one_line_naming_the_option_exit_2_nothing_written(
+    argv, said, tmp_path, monkeypatch
+):
+    monkeypatch.chdir(tmp_path)
+    output = ["--plot", "p.png"] if "--out" in argv else ["--out", "t.csv"]  # would be written
+    status, out, err = _main(["stroke", *argv, *output])
+    lines = [line for line in err.strip().splitlines() if "compiling the solver" not in line]
+    assert status == 2 and out == "", err
+    assert len(lines) == 1 and said in lines[0] and "Traceback" not in err, err
+    assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize(
+    "argv, asked",
+    [
+        (["--topspin", "200"], "rad/s typed as rpm? 200 rad/s would be 1910 rpm"),
+        (["--face", "0.2"], "radians typed as deg? 0.2 rad would be 11.46 deg"),
+        (["--head-speed-mph", "120"], "--head-speed-mph 120 mph is faster than any recorded"),
+    ],
+)
+def test_a_value_that_looks_like_another_unit_is_asked_about(argv, asked):
+    status, _, err = _main(["stroke", "volley", *argv])
+    assert status == 0 and "warning" in err and asked in err, err
+
+
+def test_a_run_that_fails_late_leaves_no_table_and_no_sidecar(tmp_path, monkeypatch):
+    def failing(axes, path):
+        raise OSError(28, "No space left on device", path)
+
+    monkeypatch.setattr("studies.cli.stroke.save_plot", failing)
+    table = tmp_path / "t.csv"
+    status, _, err = _main(["stroke", "volley", "--out", str(table), "--plot",
+                            str(tmp_path / "p.png")])  # fmt: skip
+    assert status == 2 and "No space left on device" in err
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_the_help_names_the_presets_and_the_units():
+    status, out, _ = _main(["stroke", "--help"])
+    assert status == 0
+    said = " ".join(out.split())
+    for words in (*STROKES, "[deg]", "[rpm]", "[mph]", "--head-speed-kmh", "--stiff-bed"):
+        assert words in said, words
