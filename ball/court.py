@@ -27,7 +27,7 @@ from ball.collision import collide
 from ball.grip import FRICTION_RANGE, slide
 from ball.laws import LinearHysteresis
 from ball.spin import BallSpin
-from common.checks import finite, in_range, shown, slip_hints, whole
+from common.checks import SPEED_RANGE, finite, in_range, shown, slip_hints, whole
 from common.typechecks import instance
 
 COR_RANGE = (0.05, 1.0)
@@ -64,24 +64,16 @@ class Court:
         object.__setattr__(self, "cor", in_range("cor", self.cor, *COR_RANGE))
 
 
-COURTS = {
-    court.name: court
-    for court in (
-        Court("grass", 0.53, 0.75),
-        Court("clay", 0.80, 0.90),
-        Court("hard", 0.60, 0.80),
-    )
-}
+def _by_name(*courts: Court) -> dict:
+    return {court.name: court for court in courts}
+
+
+COURTS = _by_name(Court("grass", 0.53, 0.75), Court("clay", 0.80, 0.90), Court("hard", 0.60, 0.80))
 """The court presets by name (sources: :data:`COURT_SOURCES`)."""
 
-LAB_SURFACES = {
-    surface.name: surface
-    for surface in (
-        Court("wood", 0.20, 0.765),
-        Court("emery paper", 0.56, 0.815),
-        Court("Rebound Ace", 0.59, 0.765),
-    )
-}
+LAB_SURFACES = _by_name(
+    Court("wood", 0.20, 0.765), Court("emery paper", 0.56, 0.815), Court("Rebound Ace", 0.59, 0.765)
+)
 """The surfaces of Cross's oblique bounces at 3.4-3.8 m/s, each **calibrated on Cross 2002
 Table II** (``data/measurements.md`` sec. 6) with the ball's
 :data:`ball.spin.TANGENTIAL_STIFFNESS` and :data:`ball.spin.OFFSET_RATIO` (found with them).
@@ -114,6 +106,9 @@ COURT_SOURCES = {
 CPR_SPEED, CPR_ANGLE = 30.0, math.radians(16.0)
 """The ITF Court Pace Rating test's ball [m/s] and angle above the court [rad]: 30 +/- 2
 m/s, 16 +/- 2 degrees, spin at most 3 rev/s (ITF CS 01/02, itftennis.com, own text)."""
+
+CPR_ANGLE_DEG = round(math.degrees(CPR_ANGLE), 9)
+"""The ITF pace test's angle above the court [deg] (:data:`ball.court.CPR_ANGLE`)."""
 
 CPR_CATEGORIES = ((1, "slow", 30.0), (2, "medium-slow", 35.0), (3, "medium", 40.0),
                   (4, "medium-fast", 45.0), (5, "fast", math.inf))  # fmt: skip
@@ -274,6 +269,12 @@ def bounce(
     if not 0.0 < speed <= FASTEST_BOUNCE:
         raise ValueError(f"speed must be in (0, {FASTEST_BOUNCE:g}] m/s, got {shown(speed)}")
     angle = _angle(angle)
+    if speed * math.sin(angle) < SPEED_RANGE[0]:
+        raise ValueError(
+            f"the ball must come down at {SPEED_RANGE[0]:g} m/s at least, got speed "
+            f"{shown(speed)} m/s at {math.degrees(angle):.4g} deg: "
+            f"{speed * math.sin(angle):.3g} m/s"
+        )
     spin = in_range("spin", spin, -1000.0, 1000.0, "rad/s", slips=(RPM_AS_RAD_S,))
     steps = whole("steps", steps, 100, 100_000)
     if ball is None:

@@ -48,10 +48,15 @@ _STYLE = """
 
 
 def _warm_up() -> None:
-    """Compile the solver (once per machine: numba caches it on disk) and note when done."""
+    """Compile the solver and the ball's grip on the strings (the strokes with spin), once per
+    machine (numba caches them on disk), and note when done.
+    """
+    from racket import STROKES, hit
+    from racket.presets import paper_ball, paper_racket
     from racket.solver import load_kernel
 
     load_kernel()
+    hit(STROKES["volley"], paper_racket(), paper_ball())
     _WARM.set()
 
 

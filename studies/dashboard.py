@@ -1,14 +1,16 @@
 """What the interactive page shows, computed apart from the page (so that it is tested
 without a browser): two rackets, A and B (each a catalogue preset or the spec sheet; lead
 tape by clock position on A; one string and tension for both), a ball and a swing in; for
-each, the headline numbers a coach reads (serve speed, power at the centre, sweet area,
-feel, the racket's own numbers), the serve speed against the head speed, e_A and the swung
-exit speed along the racket, the face map and the sweet spots out; and B - A.  Every number
-comes from the functions the command line calls (:func:`studies.serve.serve_table`,
-:func:`studies.maps.face_map`, ...) with the same defaults (:data:`racket.DEFAULT_RACKET`,
-:data:`ball.DEFAULT_BALL`, :data:`studies.sweeps.BALL_SPEED`), and every output says what it
-was computed for (:func:`page_conditions`).  A racket that cannot be built (an impossible
-spec sheet) is one line in its place, the other racket's outputs intact.
+each, the headline numbers a coach reads (serve speed, the flat and kick serves' spin, a
+topspin forehand's speed, spin and launch, power at the centre, sweet area, feel, the
+racket's own numbers), the serve speed against the head speed, e_A and the swung exit speed
+along the racket, the face map and the sweet spots out; and B - A.  Every number comes from
+the functions the command line calls (:func:`studies.serve.serve_table`,
+:func:`studies.stroke.stroke_table`, :func:`studies.maps.face_map`, ...) with the same
+defaults (:data:`racket.DEFAULT_RACKET`, :data:`ball.DEFAULT_BALL`,
+:data:`studies.sweeps.BALL_SPEED`), and every output says what it was computed for
+(:func:`page_conditions`).  A racket that cannot be built (an impossible spec sheet) is one
+line in its place, the other racket's outputs intact.
 """
 
 from __future__ import annotations
@@ -35,6 +37,7 @@ from studies.feel import FEEL_SUPPORT, feel_numbers
 from studies.maps import face_map
 from studies.page_conditions import page_conditions
 from studies.page_strings import OWN_STRINGS, STRING_LABELS, checked_strings, strung
+from studies.page_strokes import STROKE_COMPARED, STROKE_HEAD_MAX, stroke_conditions, stroke_summary
 from studies.serve import serve, serve_table
 from studies.sweeps import BALL_SPEED
 from studies.sweetspots import sweet_spots
@@ -62,7 +65,7 @@ HEAD_SPEEDS_MPH = np.r_[np.arange(20.0, HEAD_SPEED_MAX_MPH, 10.0), HEAD_SPEED_MA
 COMPARED = (
     "serve_mph", "exit_centre_mph", "e_A_centre", "sweet_area_cm2", "feel_shock_g",
     "feel_vibration_g", "feel_hz", "mass_g", "balance_cm", "swingweight_kgcm2",
-    "twistweight_kgcm2", "f1_hz",
+    "twistweight_kgcm2", "f1_hz", *STROKE_COMPARED,
 )  # fmt: skip
 """The headline numbers the page shows for A, B and B - A."""
 
@@ -179,9 +182,9 @@ class RacketResults:
         where (``largest_e_A_from_tip_cm``), ``sweet_area_cm2``, the feel
         (:func:`feel_summary`: ``feel_shock_g``, ``feel_vibration_g``, ``feel_hz``,
         ``feel_mode``, ``feel_support``, ``feel_grip``), ``mass_g``, ``balance_cm``,
-        ``swingweight_kgcm2``, ``twistweight_kgcm2``, ``f1_hz``; with lead tape the swing at
-        equal effort (``effort_*``); with an RA rating, ``f1_from_ra``
-        (:func:`racket.specs.ra.ra_note`).
+        ``swingweight_kgcm2``, ``twistweight_kgcm2``, ``f1_hz``, the strokes with spin
+        (:func:`studies.page_strokes.stroke_summary`); with lead tape the swing at equal
+        effort (``effort_*``); with an RA rating, ``f1_from_ra`` (:func:`racket.specs.ra.ra_note`).
     warnings : tuple of str
         The simulation's warnings for this racket, one of each.
     """
@@ -212,7 +215,8 @@ class PageResults:
         ``"A"`` or ``"B"`` -> why that racket cannot be built, one line naming the input as
         the page labels it, with its range.
     conditions : dict
-        What each output was computed for, one line each (:func:`page_conditions`).
+        What each output was computed for, one line each (:func:`page_conditions`, and
+        :func:`studies.page_strokes.stroke_conditions` for the strokes with spin).
     """
 
     a: RacketResults | None
@@ -270,8 +274,7 @@ def _built(name: str, tension_lb: float, sheet: tuple | None, string: str, playe
             )
         except ValueError as err:
             raise ValueError(said_on_page(str(err))) from None
-    low, high, unit = SPEC_RANGES["tension_lb"]
-    tension_lb = in_range("tension_lb", tension_lb, low, high, unit)
+    tension_lb = in_range("tension_lb", tension_lb, *SPEC_RANGES["tension_lb"])
     return from_specs(**(CATALOG[name].specs | {"tension_lb": tension_lb}), **keywords)
 
 
@@ -299,9 +302,9 @@ def _with_tape(racket, inputs: PageInputs):
 
 
 def page_swing(inputs: PageInputs, racket, positions) -> Swing:
-    """The page's swing, its head speed checked in mph and its pivot in cm from the tip, as
-    the page asks for them, for the impact points ``positions`` [m from the tip]
-    (:meth:`racket.Swing.check_points`).
+    """The page's swing, its head speed checked in mph (to a stroke's fastest,
+    :data:`STROKE_HEAD_MAX`) and its pivot in cm from the tip, as the page asks for them, for
+    the impact points ``positions`` [m from the tip] (:meth:`racket.Swing.check_points`).
 
     Parameters
     ----------
@@ -313,18 +316,14 @@ def page_swing(inputs: PageInputs, racket, positions) -> Swing:
         The impact points [m from the tip].
     """
     head, at = CONTROL_LABELS["swing_mph"], CONTROL_LABELS["pivot_cm_from_tip"]
-    swing_mph = in_range(head, inputs.swing_mph, *(v / MPH for v in SPEED_RANGE), "mph")
+    swing_mph = in_range(head, inputs.swing_mph, SPEED_RANGE[0] / MPH, STROKE_HEAD_MAX / MPH, "mph")
     pivot = inputs.pivot_cm_from_tip
     if pivot is not None:
         low, high = (100 * end for end in PIVOT_FROM_TIP_RANGE)
         pivot = in_range(at, pivot, low, high, "cm from the tip") / 100
     swing = Swing(swing_mph * MPH, pivot)
-    swing.check_points(
-        racket,
-        positions,
-        head=(head, inputs.swing_mph, "mph", MPH),
-        pivot=(at, inputs.pivot_cm_from_tip, "cm from the tip", 0.01),
-    )
+    swing.check_points(racket, positions, head=(head, inputs.swing_mph, "mph", MPH),
+                       pivot=(at, inputs.pivot_cm_from_tip, "cm from the tip", 0.01))  # fmt: skip
     return swing
 
 
@@ -364,7 +363,8 @@ def page_results(inputs: PageInputs, points: int = 61) -> PageResults:
     a, b = sides.get("A"), sides.get("B")
     difference = {} if errors else {k: b.summary[k] - a.summary[k] for k in COMPARED}
     said = tuple(dict.fromkeys(w for s in sides.values() for w in s.warnings))
-    return PageResults(a, b, difference, said, errors, page_conditions(inputs, a, b))
+    conditions = page_conditions(inputs, a, b) | stroke_conditions(inputs, a, b)
+    return PageResults(a, b, difference, said, errors, conditions)
 
 
 def _fed(inputs: PageInputs, name: str, lead_g: float) -> PageInputs:
@@ -400,7 +400,8 @@ def racket_results(
     function the command line calls for it: the serve from
     :func:`studies.serve.serve_table` (``racket-impact serve``), the face map from
     :func:`studies.maps.face_map` (``map``), the impacts along the racket from
-    :func:`racket.impact` (``sweep``), the feel from :func:`feel_summary` (``feel``).
+    :func:`racket.impact` (``sweep``), the feel from :func:`feel_summary` (``feel``), the
+    strokes with spin from :func:`studies.page_strokes.stroke_summary` (``stroke``).
 
     Parameters
     ----------
@@ -440,6 +441,7 @@ def racket_results(
         "largest_e_A_from_tip_cm": float(along["position_from_tip_cm"].iloc[best]),
         "sweet_area_cm2": face.sweet_area_cm2,
         **feel_summary(racket, ball, speed),
+        **stroke_summary(racket, ball, inputs.swing_mph),
         "mass_g": 1e3 * racket.beam.mass,
         "balance_cm": float(100 * racket.beam.balance),
         "swingweight_kgcm2": racket.beam.swingweight_kgcm2,

@@ -1,6 +1,7 @@
 """The interactive page's cards and tables (HTML, :mod:`shiny.ui`): the headline numbers of
-rackets A and B and B - A, each card with what it was computed for; a line in the place of
-a racket that could not be built; where to hit on each racket [cm from the tip].
+rackets A and B and B - A (the serve with spin, a groundstroke with spin, power, sweet area,
+feel, the rackets), each card with what it was computed for; a line in the place of a racket
+that could not be built; where to hit on each racket [cm from the tip].
 """
 
 from __future__ import annotations
@@ -8,7 +9,10 @@ from __future__ import annotations
 from shiny import ui
 
 from common.units import IN2, MPH
+from racket import STROKES
+from racket.stroke import RPM
 from studies.maps import SWEET_FRACTION
+from studies.page_strokes import PAGE_GROUNDSTROKE
 
 SIDES = ("A", "B")
 """The page's rackets."""
@@ -27,7 +31,8 @@ def _metric(card_id: str, title: str, note: str, columns, sides, digits, si=None
     """A headline card: one column per quantity (``columns``: its header with unit), a row
     per racket built (``sides``: side -> its values) and, with both, B - A (the difference
     of the numbers shown, each rounded to ``digits``); ``si`` (factor, unit) per column puts
-    the SI value in each number's tooltip; ``small`` (the conditions) below.
+    the SI value in each number's tooltip; ``small`` (the conditions) below.  A header's
+    newline breaks its line (its unit under its words, for a card of many columns).
     """
     si = si or [None] * len(columns)
     rows = []
@@ -59,7 +64,10 @@ def _metric(card_id: str, title: str, note: str, columns, sides, digits, si=None
                 diff=True,
             )
         )
-    head = ui.tags.tr(ui.tags.th(""), *(ui.tags.th(c, class_="unit text-end") for c in columns))
+    head = ui.tags.tr(
+        ui.tags.th(""),
+        *(ui.tags.th(*_lines(c), class_="unit text-end") for c in columns),
+    )
     return ui.card(
         ui.card_header(ui.div(ui.tags.b(title), ui.div(note, class_="small text-muted"))),
         ui.tags.table(ui.tags.thead(head), ui.tags.tbody(*rows)),
@@ -67,6 +75,14 @@ def _metric(card_id: str, title: str, note: str, columns, sides, digits, si=None
         id=card_id,
         class_="metric",
     )
+
+
+def _lines(text: str) -> list:
+    """``text``'s lines, a line break between each."""
+    lines = []
+    for line in text.split("\n"):
+        lines += [ui.tags.br(), line] if lines else [line]
+    return lines
 
 
 def built_sides(r) -> dict:
@@ -115,15 +131,30 @@ def headline_cards(r, swing_mph: float):
             f"{side} {one.summary[key] * size:.{digits}f} {unit}" for side, one in built.items()
         )
 
+    rpm, mph = (RPM, "rad/s"), (MPH, "m/s")
     serve = _metric(
         "card_serve",
-        "Serve speed",
-        f"off the string centre at {swing_mph:.0f} mph head speed",
-        ["serve [mph]"],
-        pick("serve_mph"),
-        [1],
-        [(MPH, "m/s")],
-        small=f"{each('serve_mph', MPH, 'm/s')}; {said['serve']}",
+        "Serve: speed and spin",
+        f"off the string centre at {swing_mph:.0f} mph head speed: the serve head-on, and "
+        "the flat and kick serves with spin",
+        ["serve\n[mph]", "flat spin\n[rpm]", "kick\n[mph]", "kick spin\n[rpm]"],
+        pick("serve_mph", "flat_serve_spin_rpm", "kick_serve_mph", "kick_serve_spin_rpm"),
+        [1, 0, 1, 0],
+        [mph, rpm, mph, rpm],
+        small=f"serve: the ball at rest hit head-on, no spin, {each('serve_mph', MPH, 'm/s')}; "
+        f"the flat serve with spin leaves at {each('flat_serve_mph', 1.0, 'mph')}; "
+        f"{said['serve_spin']}",
+    )
+    groundstroke = _metric(
+        "card_groundstroke",
+        "Groundstroke: speed and spin",
+        f"a {PAGE_GROUNDSTROKE} at Knudson's {STROKES[PAGE_GROUNDSTROKE].head_speed / MPH:.0f} "
+        "mph head speed (the preset's, not the page's)",
+        ["speed [mph]", "spin [rpm]", "launch [deg]"],
+        pick("forehand_mph", "forehand_spin_rpm", "forehand_launch_deg"),
+        [1, 0, 1],
+        [mph, rpm, None],
+        small=f"launch above the horizontal; {said['groundstroke']}",
     )
     power = _metric(
         "card_power",
@@ -186,7 +217,8 @@ def headline_cards(r, swing_mph: float):
     )
     return ui.div(
         *error_cards(r),
-        ui.layout_column_wrap(serve, power, sweet, feel, width="240px", fill=False),
+        ui.layout_column_wrap(serve, groundstroke, width="400px", fill=False),
+        ui.layout_column_wrap(power, sweet, feel, width="240px", fill=False),
         spec,
         id="numbers-text",
     )

@@ -31,6 +31,7 @@ from racket import Stroke, hit
 from racket.bed_sideways import BedSideways
 from racket.stroke import RPM
 from studies.arguments import ball_argument, racket_argument
+from studies.tables import speeds_in
 
 SPEED_COLUMNS = ("head_speed", "ball_speed", "exit_speed")
 """The speeds of a stroke table (``*_m_s``, and ``*_mph`` or ``*_kmh`` with ``unit``): the
@@ -166,28 +167,7 @@ def stroke_table(
              " (racket.bed_sideways.sideways(racket.strings) makes one)")  # fmt: skip
     choice("unit", unit, tuple(SPEED_UNITS))
     rows = [stroke_row(name, s, hit(s, racket, ball, position, side=side)) for name, s in pairs]
-    return in_unit(pd.DataFrame(rows), unit)
-
-
-def in_unit(table: pd.DataFrame, unit: str) -> pd.DataFrame:
-    """``table`` with its speeds (:data:`SPEED_COLUMNS`, in m/s) also in ``unit``, each
-    beside its m/s column; as it is for m/s.
-
-    Parameters
-    ----------
-    table : DataFrame
-        A table of :func:`stroke_table`.
-    unit : str
-        "m/s", "mph" or "km/h".
-    """
-    choice("unit", unit, tuple(SPEED_UNITS))
-    if unit == "m/s":
-        return table
-    out, suffix = table.copy(), SPEED_SUFFIXES[unit]
-    for name in SPEED_COLUMNS:
-        at = out.columns.get_loc(f"{name}_m_s") + 1
-        out.insert(at, f"{name}_{suffix}", out[f"{name}_m_s"] / SPEED_UNITS[unit])
-    return out
+    return speeds_in(pd.DataFrame(rows), unit, SPEED_COLUMNS)
 
 
 def sweep_angles(
@@ -258,7 +238,8 @@ def bed_words(side: BedSideways, lubricated: bool = False) -> str:
 def plot_speed_spin(table: pd.DataFrame, ax=None, unit: str = "m/s", conditions=None):
     """The ball's exit speed against its spin after each stroke (a table of
     :func:`stroke_table`), each stroke labelled: by its name beside its point, or for a
-    stroke of several rows (angles swept) by a legend beside the Axes.
+    stroke of several rows (angles swept) one line per face angle, along the path, in a
+    legend beside the Axes.
 
     Parameters
     ----------
@@ -280,9 +261,12 @@ def plot_speed_spin(table: pd.DataFrame, ax=None, unit: str = "m/s", conditions=
         raise ValueError(f"table has no {column} column: make it with unit={unit!r}")
     made = ax is None
     ax = _axes(ax, 1)
-    groups = list(table.groupby("stroke", sort=False))
-    several = any(len(group) > 1 for _, group in groups)
-    for name, group in groups:
+    several = table["stroke"].duplicated().any()
+    # a swept stroke: one line per face angle, its points in the order of the path
+    keys = ["stroke", "face_deg"] if several else ["stroke"]
+    groups = list(table.sort_values("path_deg").groupby(keys, sort=False))
+    for key, group in groups:
+        name = f"{key[0]}, face {key[1]:+g} deg" if several else key[0]
         ax.plot(group["spin_rpm"], group[column], "o-" if len(group) > 1 else "o", label=name)
         if not several:
             row = group.iloc[0]

@@ -7,8 +7,8 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ball import CollisionHistory
-from common.typechecks import instance
-from common.units import MPH
+from common.typechecks import choice, instance
+from common.units import MPH, SPEED_SUFFIXES, SPEED_UNITS
 from racket import Impact
 
 if TYPE_CHECKING:
@@ -109,3 +109,26 @@ def history_table(history: CollisionHistory) -> pd.DataFrame:
             "velocity_b_m_s": history.velocity_b,
         }
     )
+
+
+def speeds_in(table, unit: str, columns):
+    """``table`` with each speed of ``columns`` (``NAME_m_s``) also in ``unit``, beside its m/s
+    column (``NAME_mph`` or ``NAME_kmh``); as it is for m/s.
+
+    Parameters
+    ----------
+    table : DataFrame
+        A table with the columns ``NAME_m_s`` [m/s].
+    unit : str
+        "m/s", "mph" or "km/h".
+    columns : sequence of str
+        The speeds' NAMEs.
+    """
+    choice("unit", unit, tuple(SPEED_UNITS))
+    if unit == "m/s":
+        return table
+    out, suffix = table.copy(), SPEED_SUFFIXES[unit]
+    for name in columns:
+        at = out.columns.get_loc(f"{name}_m_s") + 1
+        out.insert(at, f"{name}_{suffix}", out[f"{name}_m_s"] / SPEED_UNITS[unit])
+    return out

@@ -44,16 +44,20 @@ from ball import (
 from beam import Beam
 from racket import (
     CATALOG,
+    STROKES,
     Hand,
     Racket,
     String,
     StringBed,
     Stringing,
+    Stroke,
     Swing,
     default_racket,
     flex_test_stiffness,
     from_specs,
+    hit,
     impact,
+    oblique_impact,
     paper_ball,
     paper_racket,
     string_bed_stiffness,
@@ -182,6 +186,27 @@ CASES = [
      {"racket": "object", "ball": "object", "position": "numbers", "speed": "number",
       "offset": "numbers?", "swing_speed": "numbers", "pivot": "number?",
       "steps_per_contact": "count?", "watch_after": "number", "histories": "flag"}, {}),
+    ("oblique_impact", oblique_impact,
+     {"racket": _m("spec"), "ball": _m("ball"), "position": 0.15, "speed": 10.0,
+      "slip_velocity": (1.0, 0.0), "spin": (0.0, 10.0, 0.0), "offset": None,
+      "swing_speed": 0.0, "pivot": None, "ball_spin": None, "side": None,
+      "steps_per_contact": None},
+     {"racket": "object", "ball": "object", "position": "numbers", "speed": "number",
+      "slip_velocity": "numbers", "spin": "numbers", "offset": "numbers?",
+      "swing_speed": "numbers", "pivot": "number?", "ball_spin": "object?", "side": "object?",
+      "steps_per_contact": "count?"}, {}),
+    ("Stroke", Stroke,
+     {"head_speed": 20.0, "path_angle": 0.3, "face_angle": 0.0, "ball_speed": 15.0,
+      "ball_angle": 0.1, "swing_across": 0.0, "topspin": 0.0, "sidespin": 0.0,
+      "shaft": "horizontal"},
+     {"head_speed": "number", "path_angle": "number", "face_angle": "number",
+      "ball_speed": "number", "ball_angle": "number", "swing_across": "number",
+      "topspin": "number", "sidespin": "number", "shaft": "word"}, {}),
+    ("hit", hit,
+     {"stroke": lambda: STROKES["volley"], "racket": _m("spec"), "ball": _m("ball"),
+      "position": None, "side": None},
+     {"stroke": "object", "racket": "object", "ball": "object", "position": "number?",
+      "side": "object?"}, {}),
     ("default_racket", default_racket, {"support": "free"}, {"support": "word"}, {}),
     ("paper_racket", paper_racket, {"support": "free"}, {"support": "word"}, {}),
     ("from_specs", from_specs, _m("specs"),
@@ -380,7 +405,16 @@ def test_every_public_name_is_in_the_table():
     """Every public function and class of racket, ball and beam is called above, but the
     results (made, not given), the constants and the presets with no arguments."""
     called = {c[1] for c in CASES} | {Beam, Racket}
-    results = {"Impact", "Collision", "CollisionHistory", "Modes", "MonotoneLaw", "Wall"}
+    results = {
+        "Impact",
+        "ObliqueImpact",
+        "StrokeImpact",
+        "Collision",
+        "CollisionHistory",
+        "Modes",
+        "MonotoneLaw",
+        "Wall",
+    }
     for package in (racket_api, ball_api, beam_api):
         for name in package.__all__:
             thing = getattr(package, name)

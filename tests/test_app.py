@@ -12,10 +12,13 @@ import socket
 import subprocess
 import sys
 import urllib.request
+from dataclasses import replace
 
 import matplotlib
 import pytest
 
+from common.units import MPH
+from racket import STROKES, default_ball
 from racket.swing import EFFORT_EXPONENT
 from studies.dashboard import (
     COMPARED,
@@ -25,6 +28,7 @@ from studies.dashboard import (
     PageInputs,
     page_results,
 )
+from studies.stroke import stroke_table
 
 matplotlib.use("Agg")
 
@@ -38,7 +42,9 @@ CHROMIUM_FLAGS = [
     "--disable-component-update",
     "--disable-sync",
 ]  # without the background-networking flags Chromium keeps calling out (closed network)
-CARDS = ("card_serve", "card_power", "card_sweet", "card_feel", "card_racket")
+CARDS = (
+    "card_serve", "card_groundstroke", "card_power", "card_sweet", "card_feel", "card_racket"
+)  # fmt: skip
 
 
 def test_page_results_follow_the_controls():
@@ -86,6 +92,24 @@ def test_serve_speed_against_head_speed_covers_real_play():
     assert serves["serve_simulated_mph"].is_monotonic_increasing
     # the card's serve at the page's head speed is the curve's point there
     assert r.a.summary["serve_mph"] == pytest.approx(serves["serve_simulated_mph"].iloc[-1])
+    # the flat and kick serves follow the head speed; the forehand stays the preset's
+    head = HEAD_SPEED_MAX_MPH * MPH
+    strokes = {
+        name: replace(STROKES[name], head_speed=head) for name in ("flat-serve", "kick-serve")
+    }
+    api = stroke_table(strokes, r.a.racket, default_ball(), unit="mph").set_index("stroke")
+    for key, name in (("flat_serve", "flat-serve"), ("kick_serve", "kick-serve")):
+        assert r.a.summary[f"{key}_mph"] == pytest.approx(api.loc[name, "exit_speed_mph"], rel=1e-9)
+        assert r.a.summary[f"{key}_spin_rpm"] == pytest.approx(api.loc[name, "spin_rpm"], rel=1e-9)
+    slow = page_results(PageInputs()).a.summary
+    assert r.a.summary["kick_serve_mph"] > slow["kick_serve_mph"]
+    assert r.a.summary["kick_serve_spin_rpm"] > slow["kick_serve_spin_rpm"]
+    for key in ("forehand_mph", "forehand_spin_rpm", "forehand_launch_deg"):
+        assert r.a.summary[key] == slow[key]
+    said = r.conditions
+    assert f"flat-serve at {HEAD_SPEED_MAX_MPH:g} mph head speed" in said["serve_spin"]
+    assert f"kick-serve at {HEAD_SPEED_MAX_MPH:g} mph head speed" in said["serve_spin"]
+    assert "topspin-forehand at 49 mph head speed" in said["groundstroke"]
 
 
 def test_the_pivot_is_from_the_tip_or_the_wrist():
@@ -269,7 +293,8 @@ def test_the_page_in_a_real_browser(served, tmp_path):
         assert page.evaluate(_OVERFLOWS, list(CARDS)) == []
         assert page.evaluate(_IN_SIGHT, "card_serve_a_0"), "the serve speed is not in sight"
         assert page.evaluate(_IN_SIGHT, "card_serve_b_0")
-        assert "mph" in page.inner_text("#card_serve")
+        assert "mph" in page.inner_text("#card_serve") and "rpm" in page.inner_text("#card_serve")
+        assert page.evaluate(_IN_SIGHT, "card_groundstroke_a_1"), "the forehand's spin"
         assert "kg cm²" in page.inner_text("#card_racket")
         serve_a, serve_b, _ = _numbers(page, "card_serve")[0]
         page.select_option("#racket_b", "pure-drive-2025")

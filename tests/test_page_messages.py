@@ -81,6 +81,15 @@ def test_a_number_out_of_range_is_one_line_naming_the_control():
         with pytest.raises(ValueError, match=f"^{LABELS[name]} must be in".replace("[", r"\[")):
             page_results(PageInputs(**{field: 1e308}), points=5)
     assert LEAD_MAX_G == LEAD_GRAMS[1]  # the page takes what the command line takes
+    # a head speed beyond a stroke's (60 m/s, 134 mph; the slider stops at 114): each racket
+    # one line naming the control, not the Stroke's head_speed in m/s
+    for swing_mph in (200.0, 1e308):
+        errors = page_results(PageInputs(swing_mph=swing_mph), points=5).errors
+        assert list(errors) == ["A", "B"]
+        for side, line in errors.items():
+            assert re.match(rf"Racket {side} \([^)]+\): {re.escape(LABELS['swing'])} must be in "
+                            r"\[[^]]+, 134.2\] mph, got ", line), line  # fmt: skip
+            assert "head_speed" not in line and "m/s" not in line and "\n" not in line
 
 
 def test_every_lead_position_offered_is_accepted():

@@ -8,17 +8,21 @@ own functions, called as its server calls them.
 """
 
 import re
+from dataclasses import replace
 
 import matplotlib
 import numpy as np
+import pandas as pd
 import pytest
 
 from ball import BALL_PRESETS, DEFAULT_BALL
 from ball.catalog import TWU_SPEED
 from common.checks import FASTEST_STROKE
 from common.units import MPH
-from racket import CATALOG, DEFAULT_RACKET, Swing, default_ball, default_racket
+from racket import CATALOG, DEFAULT_RACKET, STROKES, Swing, default_ball, default_racket
+from racket.bed_sideways import sideways
 from studies.app import app_ui
+from studies.cli import main
 from studies.conditions import racket_details
 from studies.config import BALLS
 from studies.dashboard import (
@@ -33,6 +37,7 @@ from studies.dashboard import (
 from studies.maps import face_map
 from studies.page_cards import headline_cards, spots_table
 from studies.serve import serve, serve_table
+from studies.stroke import bed_words, stroke_table
 from studies.sweeps import BALL_SPEED, sweep
 
 matplotlib.use("Agg")
@@ -41,7 +46,28 @@ ROUND_OFF = 1e-9
 """How closely the page's numbers and the API's agree [-]: to round-off (an impact's result
 may differ in its 11th digit with what the process ran before: 1.6e-11 measured on the serve
 after a batch of impacts)."""
-CARDS = ("card_serve", "card_power", "card_sweet", "card_feel", "card_racket")
+SPIN_ROUND_OFF = 1e-8
+"""How closely the page's strokes with spin and the API's agree [-]: the grip on the strings
+amplifies the impact's round-off (6e-9 measured on the forehand's spin after a batch of
+impacts; ``racket-impact stroke`` against the Python API: 1e-8, tests/test_one_truth.py)."""
+CARDS = (
+    "card_serve", "card_groundstroke", "card_power", "card_sweet", "card_feel", "card_racket"
+)  # fmt: skip
+SPIN_CARDS = {
+    "card_serve": [
+        ("serve_mph", None, None, 1),  # head-on: test_one_serve_is_the_api_s
+        ("flat_serve_spin_rpm", "flat-serve", "spin_rpm", 0),
+        ("kick_serve_mph", "kick-serve", "exit_speed_mph", 1),
+        ("kick_serve_spin_rpm", "kick-serve", "spin_rpm", 0),
+    ],
+    "card_groundstroke": [
+        ("forehand_mph", "topspin-forehand", "exit_speed_mph", 1),
+        ("forehand_spin_rpm", "topspin-forehand", "spin_rpm", 0),
+        ("forehand_launch_deg", "topspin-forehand", "launch_deg", 1),
+    ],
+}
+"""The cards with spin, column by column: the racket's summary key, the stroke and its column
+in ``racket-impact stroke``'s table, and the digits the card shows."""
 
 
 @pytest.fixture(scope="module")
@@ -84,6 +110,51 @@ def test_one_serve_is_the_api_s(page):
     tipward = serve_table(racket, ball, racket.strings.center - 0.05, head, zero_cor=False)
     same = pytest.approx(float(tipward["serve_simulated_mph"].iloc[0]), rel=ROUND_OFF)
     assert page.a.summary["serve_tipward_mph"] == same
+
+
+def _stroke_cli(capsys, tmp_path, *args) -> pd.DataFrame:
+    """``racket-impact stroke ARGS --out FILE``'s table, by stroke."""
+
+    out = tmp_path / f"stroke{len(list(tmp_path.iterdir()))}.json"
+    assert main(["stroke", *args, "--out", str(out)]) == 0
+    capsys.readouterr()
+    return pd.read_json(out).set_index("stroke")
+
+
+def test_the_strokes_with_spin_are_racket_impact_stroke_s(page, tmp_path, capsys):
+    # racket-impact stroke flat-serve kick-serve --head-speed-mph 70 (the page's head speed),
+    # and racket-impact stroke topspin-forehand (the preset, at Knudson's 49 mph)
+    serves = _stroke_cli(capsys, tmp_path, "flat-serve", "kick-serve", "--head-speed-mph", "70")
+    forehand = _stroke_cli(capsys, tmp_path, "topspin-forehand")
+    forehand["exit_speed_mph"] = forehand["exit_speed_m_s"] / MPH
+    cli = pd.concat([serves, forehand])
+    summary = page.a.summary
+    for name, key in (("flat-serve", "flat_serve"), ("kick-serve", "kick_serve"),
+                      ("topspin-forehand", "forehand")):  # fmt: skip
+        row = cli.loc[name]
+        assert summary[f"{key}_mph"] == pytest.approx(row["exit_speed_mph"], rel=1e-8)
+        assert summary[f"{key}_spin_rpm"] == pytest.approx(row["spin_rpm"], rel=1e-8)
+        assert summary[f"{key}_launch_deg"] == pytest.approx(row["launch_deg"], rel=1e-8)
+    assert cli.loc["topspin-forehand", "head_speed_m_s"] == pytest.approx(49 * MPH)
+    # the same in Python for each racket, the serves at the page's head speed
+    head = PageInputs().swing_mph * MPH
+    strokes = {
+        "flat-serve": replace(STROKES["flat-serve"], head_speed=head),
+        "kick-serve": replace(STROKES["kick-serve"], head_speed=head),
+        "topspin-forehand": STROKES["topspin-forehand"],
+    }
+    html = str(headline_cards(page, PageInputs().swing_mph))
+    for side, racket in (("a", default_racket()), ("b", CATALOG["pro-staff-97l-cv"].racket())):
+        api = stroke_table(strokes, racket, default_ball(), unit="mph").set_index("stroke")
+        one = getattr(page, side).summary
+        for card, columns in SPIN_CARDS.items():
+            for k, (key, name, column, digits) in enumerate(columns):
+                if name is not None:  # the spin amplifies the impact's round-off
+                    assert one[key] == pytest.approx(api.loc[name, column], rel=SPIN_ROUND_OFF)
+                shown = re.search(rf'id="{card}_{side}_{k}"[^>]*>([^<]*)<', html)[1]
+                assert shown == f"{one[key]:.{digits}f}", (card, k)
+    assert summary["flat_serve_mph"] > summary["kick_serve_mph"]  # as measured (issue 36)
+    assert summary["flat_serve_spin_rpm"] < summary["kick_serve_spin_rpm"]
 
 
 def test_one_sweep_point_is_the_api_s(page):
@@ -153,6 +224,25 @@ def test_every_card_names_its_conditions(page):
         if card != "card_racket":
             assert f"ball {DEFAULT_BALL}" in said
     said = page.conditions
+    # the strokes with spin: each stroke's numbers, the ball, the bed as racket-impact stroke
+    # says it (the same for both rackets here), and no pivot
+    bed = bed_words(sideways(default_racket().strings))
+    assert bed == bed_words(sideways(page.b.racket.strings))
+    assert "mains sliding on dry crosses" in bed and "ball-string friction" in bed
+    serves, ground = said["serve_spin"], said["groundstroke"]
+    assert serves.startswith(said["serve"])  # the head-on serve's line first
+    for part in ("flat-serve at 70 mph head speed (the page's), path 0°, face 7° closed",
+                 "kick-serve at 70 mph head speed (the page's), path 30° up, 35° across to the "
+                 "right, face 12° closed", "the ball tossed at 3.36 mph falling at 60°",
+                 "at the string centre, the racket moving with it (no pivot)", bed):  # fmt: skip
+        assert part in serves, part
+    for part in (f"ball {DEFAULT_BALL} at 45 mph falling at 10° with 1910 rpm of topspin",
+                 "topspin-forehand at 49 mph head speed (the preset's", "path 18° up, face 4° "
+                 "open", "(no pivot)", bed):  # fmt: skip
+        assert part in ground, part
+    for card, key in (("card_serve", "serve_spin"), ("card_groundstroke", "groundstroke")):
+        assert said[key] in re.search(rf'id="{card}_conditions">([^<]*)<', html)[1]
+    assert "49 mph head speed" in re.search(r'id="card_groundstroke".*?</div>', html, re.S)[0]
     assert "at 36.91 mph" in said["power"] and "at 36.91 mph" in said["sweet"]
     assert "swung at 70 mph head speed" in said["serve"] and "about the wrist" in said["serve"]
     assert "(free" in said["serve"]

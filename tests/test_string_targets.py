@@ -108,6 +108,10 @@ def test_37_lb_is_longer_than_67_lb_by_hamoris_1_1_ms():
     assert low - high == pytest.approx(1.1, abs=0.4)
 
 
+SPIN_GROUPS = ("bounce", "spin", "stroke", "court")
+"""The first words of issue 36's rows (oblique impacts, spin, courts), counted apart."""
+
+
 def test_no_calibration_row_was_lost_and_validation_gained(table):
     """Before the real bed: validation 13 of 26, calibration 13 of 16 (the 16 still agree
     as they did; the new calibration rows are the string bed's)."""
@@ -115,7 +119,7 @@ def test_no_calibration_row_was_lost_and_validation_gained(table):
     first = table.index.str.split("-").str[0]
     kept = table[first.isin(old_calibration)]
     assert len(kept) == 16 and kept["agrees"].sum() == 13
-    validation = table[table["kind"] == "validation"]
+    validation = table[(table["kind"] == "validation") & ~first.isin(SPIN_GROUPS)]
     assert len(validation) == 26 and validation["agrees"].sum() > 13
 
 
@@ -123,7 +127,8 @@ def test_no_calibration_row_was_lost_and_validation_gained(table):
                    "its mass): Cross's 1 m drop, six of Hamori's dwell times and two "
                    "throats")  # fmt: skip
 def test_at_least_22_of_26_validation_rows_agree(table):
-    validation = table[table["kind"] == "validation"]
+    first = table.index.str.split("-").str[0]
+    validation = table[(table["kind"] == "validation") & ~first.isin(SPIN_GROUPS)]
     assert validation["agrees"].sum() >= 22
 
 

@@ -96,7 +96,7 @@ def one_blas_thread():
 
 def run_rows(run, args, count: int) -> None:
     """Run ``run(*args, start, stop, step)`` (a compiled function that releases the GIL,
-    e.g. :func:`ball.grip.grip_kernel`) over ``count`` rows on as many threads as they are
+    e.g. :func:`ball.grip_kernel.grip_kernel`) over ``count`` rows on as many threads as they are
     worth (:data:`IMPACTS_PER_THREAD` each at least).
 
     Parameters

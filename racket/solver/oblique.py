@@ -18,6 +18,8 @@ import numpy as np
 from ball.bodies import Ball
 from ball.grip import Grip, slide
 from ball.spin import BallSpin
+from common.checks import finite_array
+from common.typechecks import instance
 from racket.bed_sideways import BedSideways, sideways
 from racket.in_plane import inverse_mass
 from racket.racket import Racket
@@ -74,6 +76,15 @@ class ObliqueImpact:
         return np.atleast_1d(self.normal.energy_residual) + self.grip.residual
 
 
+def _vectors(name: str, values, size: int, unit: str) -> np.ndarray:
+    """``values`` as finite numbers of shape (size,) or (n, size); one line otherwise."""
+    values = finite_array(name, values, unit)
+    if values.ndim not in (1, 2) or values.shape[-1] != size:
+        raise ValueError(f"{name} must be {size} numbers [{unit}] (or a row of them per point), "
+                         f"got shape {values.shape}")  # fmt: skip
+    return values
+
+
 def oblique_impact(
     racket: Racket,
     ball: Ball,
@@ -111,6 +122,12 @@ def oblique_impact(
     -------
     ObliqueImpact
     """
+    instance("racket", racket, Racket, "a racket.Racket")
+    instance("ball", ball, Ball, "a ball.Ball")
+    instance("ball_spin", ball_spin, (BallSpin, type(None)), "a ball.spin.BallSpin or None")
+    instance("side", side, (BedSideways, type(None)), "a racket.bed_sideways.BedSideways or None")
+    slip_velocity = _vectors("slip_velocity", slip_velocity, 2, "m/s")
+    spin = _vectors("spin", spin, 3, "rad/s")
     if ball_spin is None:
         ball_spin = BallSpin() if ball.radius is None else BallSpin(radius=ball.radius)
     side = sideways(racket.strings) if side is None else side

@@ -10,6 +10,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ball.bodies import Ball
+from common.checks import finite
+from common.typechecks import instance
 from racket.bed_sideways import BedSideways
 from racket.racket import Racket
 from racket.solver.oblique import ObliqueImpact, oblique_impact
@@ -91,9 +93,14 @@ def hit(
     -------
     StrokeImpact
     """
+    instance("stroke", stroke, Stroke, "a racket.Stroke", " (e.g. racket.STROKES['volley'])")
+    instance("racket", racket, Racket, "a racket.Racket")
+    instance("ball", ball, Ball, "a ball.Ball")
     if racket.support == "clamped-head":
         raise ValueError("a stroke needs a racket that moves: support 'free' or 'hand-held'")
-    position = racket.strings.center if position is None else float(position)
+    if position is not None:
+        position = finite("position", position, "m from the tip")
+    position = racket.strings.center if position is None else position
     frame = stroke.face_frame()
     oblique = oblique_impact(
         racket, ball, position, frame.closing_speed, slip_velocity=frame.slip_velocity,

@@ -24,6 +24,7 @@ from studies.cli import (
     app,
     balls,
     compare,
+    court,
     face,
     paper,
     rackets,
@@ -36,6 +37,7 @@ from studies.cli import (
 from studies.cli.app import cmd_app
 from studies.cli.balls import cmd_ball, cmd_collide, cmd_drop
 from studies.cli.compare import cmd_compare
+from studies.cli.court import cmd_court
 from studies.cli.face import cmd_map, cmd_sweetspots
 from studies.cli.files import _RUN as _RUN  # the run being made (tests read it)
 from studies.cli.files import check_outputs, save_plot, write_table
@@ -58,6 +60,7 @@ __all__ = [
     "cmd_ball",
     "cmd_collide",
     "cmd_compare",
+    "cmd_court",
     "cmd_drop",
     "cmd_feel",
     "cmd_map",
@@ -79,7 +82,7 @@ __all__ = [
 
 TABLE_COMMANDS = (
     "sweep", "map", "serve", "collide", "ball", "modes", "specs", "feel", "sweetspots", "compare",
-    "validate", "drop", "strings", "stroke",
+    "validate", "drop", "strings", "stroke", "court",
 )  # fmt: skip
 """The commands that write tables (with sidecars): the only ones ``rerun`` replays."""
 
@@ -166,7 +169,7 @@ def build_parser(parser_class=_Parser) -> argparse.ArgumentParser:
         paper.add_paper, sweep.add_sweep, face.add_map, serve.add_serve, balls.add_collide,
         balls.add_drop, balls.add_ball, rackets.add_modes, rackets.add_specs, app.add_app,
         add_rerun, rackets.add_feel, face.add_sweetspots, compare.add_compare,
-        validate.add_validate, strings.add_strings, stroke.add_stroke,
+        validate.add_validate, strings.add_strings, stroke.add_stroke, court.add_court,
     ):  # fmt: skip
         add(sub)
     return parser
