@@ -27,7 +27,7 @@ from ball.collision import collide
 from ball.grip import FRICTION_RANGE, slide
 from ball.laws import LinearHysteresis
 from ball.spin import BallSpin
-from common.checks import SPEED_RANGE, finite, in_range, shown, slip_hints, whole
+from common.checks import RPM_AS_RAD_S, SPEED_RANGE, finite, in_range, shown, slip_hints, whole
 from common.typechecks import instance
 
 COR_RANGE = (0.05, 1.0)
@@ -36,7 +36,6 @@ COR_RANGE = (0.05, 1.0)
 FASTEST_BOUNCE = 80.0
 """Fastest ball [m/s] :func:`bounce` accepts (faster than any serve reaches the court)."""
 
-RPM_AS_RAD_S = (2.0 * math.pi / 60.0, "rpm typed as rad/s?", "rpm")
 """A spin in rpm where rad/s are asked for."""
 
 
@@ -115,8 +114,8 @@ CPR_CATEGORIES = ((1, "slow", 30.0), (2, "medium-slow", 35.0), (3, "medium", 40.
 """The ITF court pace categories: (number, name, the CPR [-] it stays below): 1 up to 29,
 2 30-34, 3 35-39, 4 40-44, 5 45 and above (ITF Technical Booklet 2015 p. 3 names the five;
 the bands as quoted by laykold.com, "Court Pace Ratings or Court Pace Index", and
-tennisyard.com's guide to court surfaces; a CPR between two bands, 29.5, goes to the
-higher)."""
+tennisyard.com's guide to court surfaces; the bands are read as below 30, 35, 40 and 45: a
+CPR of 29.5 is category 1)."""
 
 
 @dataclass(frozen=True)

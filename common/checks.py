@@ -155,6 +155,9 @@ MPH_AS_M_S = (MPH, "mph typed as m/s?", "mph")
 KMH_AS_M_S = (KMH, "km/h typed as m/s?", "km/h")
 """A speed in km/h where m/s are asked for."""
 
+RPM_AS_RAD_S = (2.0 * math.pi / 60.0, "rpm typed as rad/s?", "rpm")
+"""A spin in rpm typed where rad/s is asked (a slip :func:`slip_hints` names)."""
+
 KMH_AS_MPH = (KMH / MPH, "km/h typed as mph?", "km/h")
 """A speed in km/h where mph are asked for."""
 

@@ -122,10 +122,6 @@ class BedSideways:
             return None
         return Layer(self.stiffness, self.mass, PRESS_RATIO * self.string_friction)
 
-    def stiff(self) -> BedSideways:
-        """The same bed with mains that never slide (the limit of a laterally rigid bed)."""
-        return BedSideways(self.ball_friction)
-
 
 def _spacings(bed) -> tuple[float, float]:
     """The crosses' and the mains' spacings [m] of a strung bed: its length / (crosses + 1)

@@ -28,7 +28,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from common.checks import KMH_AS_M_S, MPH_AS_M_S, finite, finite_array, in_range
+from common.checks import KMH_AS_M_S, MPH_AS_M_S, RPM_AS_RAD_S, finite, finite_array, in_range
 from common.units import MPH
 
 RPM = 2.0 * math.pi / 60.0
@@ -50,8 +50,7 @@ speeds to above the serve record (73 m/s), spins to +-9549 rpm, twice the most m
 
 # The slips of unit (common.checks.slip_hints) a message names, by the unit asked for
 _DEG_AS_RAD = (math.pi / 180.0, "degrees typed as radians?", "deg")
-_RPM_AS_RAD_S = (RPM, "rpm typed as rad/s?", "rpm")
-_SLIPS = {"m/s": (MPH_AS_M_S, KMH_AS_M_S), "deg": (_DEG_AS_RAD,), "rad/s": (_RPM_AS_RAD_S,)}
+_SLIPS = {"m/s": (MPH_AS_M_S, KMH_AS_M_S), "deg": (_DEG_AS_RAD,), "rad/s": (RPM_AS_RAD_S,)}
 
 SHAFTS = ("horizontal", "vertical")
 """How the racket's long axis lies in the face plane: groundstrokes and volleys, serves."""

@@ -160,9 +160,12 @@ def test_cli_quotes_what_the_user_typed(argv, expected, tmp_path, monkeypatch, c
         (dict(racket=MY_SHEET, mass_g=50.0), "Strung mass [g] must be in [150, 500] g, got 50"),
         (dict(pivot_cm_from_tip=10.0), "Swing pivot [cm from the tip] must be in (33.85, 168.6] "
          "cm from the tip: short of the impact points"),
-        (dict(swing_mph=700.0), "Racket-head speed [mph] must be in [0.002237, 671] mph, got 700"),
-        (dict(swing_mph=600.0), "Racket-head speed [mph] must be in [0.003167, 518.7] mph for "
-         "these impact"),
+        # (the page's head speed stops at a stroke's fastest, 60 m/s, since the strokes with
+        # spin came: issue 36; the swing's own limit for the impact points is beyond it)
+        (dict(swing_mph=700.0), "Racket-head speed [mph] must be in [0.002237, 134.2] mph, got "
+         "700"),
+        (dict(swing_mph=600.0), "Racket-head speed [mph] must be in [0.002237, 134.2] mph, got "
+         "600"),
     ],
 )  # fmt: skip
 def test_the_page_quotes_its_own_units(inputs, expected):

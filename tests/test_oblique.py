@@ -125,3 +125,42 @@ def test_the_default_sub_steps_are_converged(support, monkeypatch):
                           spin=(0.0, -300.0, 0.0))  # fmt: skip
     change = np.abs(fine.spin[:, 1] + 300.0)
     assert np.all(np.abs(default.spin[:, 1] - fine.spin[:, 1]) < 5e-4 * change)
+
+
+def test_the_force_history_alone_is_the_full_records_bit_for_bit(monkeypatch):
+    """histories="force" (recorded in the run itself) against histories=True, and against
+    the second run that records when the first could not (HISTORY_MEMORY 0)."""
+    import racket.solver.outcome as outcome
+
+    racket = _racket("hand-held")
+    full = impact(racket, BALL, POINTS, 20.0, histories=True)
+    force = impact(racket, BALL, POINTS, 20.0, histories="force")
+    assert np.array_equal(full.force, force.force, equal_nan=True)
+    assert force.ball_compression is None and np.array_equal(full.t, force.t)
+    assert np.array_equal(full.e, force.e)
+    monkeypatch.setattr(outcome, "HISTORY_MEMORY", 0.0)
+    again = impact(racket, BALL, POINTS, 20.0, histories="force")
+    rerun = impact(racket, BALL, POINTS, 20.0, histories=True)
+    assert np.array_equal(again.force, force.force, equal_nan=True)
+    for name in ("force", "ball_compression", "string_deflection", "point_velocity"):
+        assert np.array_equal(getattr(rerun, name), getattr(full, name), equal_nan=True), name
+
+
+def test_a_stiff_ball_on_sliding_mains_gets_the_sub_steps_it_needs():
+    """A tangential stiffness of 1e8 N/m on the mains rings at 41 times the normal step's
+    reach of 0.2 rad: the sub-steps follow (ball.grip.stable_substeps), and the spin is that
+    of 4 times as many."""
+    from ball.grip import stable_substeps
+
+    racket = _racket("clamped-head")
+    side = sideways(racket.strings)
+    stiff = BallSpin(radius=BALL.radius, tangential_stiffness=1e8)
+    o = oblique_impact(racket, BALL, POINTS[8], 20.0, slip_velocity=(12.0, 0.0),
+                       spin=(0.0, -300.0, 0.0), ball_spin=stiff)  # fmt: skip
+    dt = float(o.normal.t[1] - o.normal.t[0])
+    needed = stable_substeps(stiff, BALL.mass, dt, side.layer())
+    assert needed > 20
+    finer = slide(np.nan_to_num(o.normal.force), dt, BALL.mass, stiff, side.ball_friction,
+                  (12.0, 0.0), (0.0, -300.0, 0.0), layer=side.layer(),
+                  substeps=4 * needed)  # fmt: skip
+    assert abs(o.spin[0, 1] - finer.spin[0, 1]) < 2e-3 * abs(finer.spin[0, 1] + 300.0)

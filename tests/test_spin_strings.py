@@ -25,7 +25,7 @@ from racket.solver.oblique import oblique_impact
 from studies.validation.conditions import clamped_racket
 
 BALL = BALL_PRESETS["itf-type-2"].ball()
-RPM = 60.0 / (2.0 * np.pi)
+RPM_PER_RAD_S = 60.0 / (2.0 * np.pi)
 """rpm per rad/s."""
 
 MATERIALS = ("polyester", "nylon", "natural-gut")
@@ -50,13 +50,13 @@ def _hit(racket, side, speed, angle_deg, spin_rpm, ball_spin=None):
     angle = np.radians(angle_deg)
     return oblique_impact(
         racket, BALL, racket.strings.center, speed * np.cos(angle),
-        slip_velocity=(speed * np.sin(angle), 0.0), spin=(0.0, spin_rpm / RPM, 0.0),
+        slip_velocity=(speed * np.sin(angle), 0.0), spin=(0.0, spin_rpm / RPM_PER_RAD_S, 0.0),
         side=side, ball_spin=ball_spin,
     )  # fmt: skip
 
 
 def _rpm(hit):
-    return float(hit.spin[0, 1] * RPM)
+    return float(hit.spin[0, 1] * RPM_PER_RAD_S)
 
 
 @pytest.fixture(scope="module")
@@ -185,10 +185,10 @@ def test_a_noncompliant_contact_spins_the_same_whatever_the_friction(rigid_bed_s
     gives, (m v R + I w) / (m R^2 + I), whatever the friction; Cross's offset of the normal
     force (acting while it slides, longer at low friction) spreads it by a few per cent."""
     speed, angle, spin = STRING_TEST
-    v, w = speed * np.sin(np.radians(angle)), spin / RPM
+    v, w = speed * np.sin(np.radians(angle)), spin / RPM_PER_RAD_S
     m, radius = BALL.mass, BALL.radius
     inertia = BallSpin(radius).inertia(m)
-    rolling = (m * v * radius + inertia * w) / (m * radius**2 + inertia) * RPM
+    rolling = (m * v * radius + inertia * w) / (m * radius**2 + inertia) * RPM_PER_RAD_S
     assert rigid_bed_spins["noncompliant, no offset"] == pytest.approx(rolling, rel=5e-3)
     spins = rigid_bed_spins["noncompliant"]
     assert np.all(np.abs(spins / spins.mean() - 1.0) < 0.10)

@@ -65,6 +65,14 @@ KNOWN_GAPS = {
     "stroke-topspin-forehand": "model 341 vs 1288-3331 rpm: the preset's face, 4 degrees "
     "open (an assumption), makes the slip small; vertical, 1186 rpm; 3 degrees closed, 1838: "
     "the face angle, which Knudson did not measure, decides",
+    "stroke-kick-serve": "model 7294 rpm (6014 topspin, 4108 sidespin) vs 3270-4500, mainly "
+    "sidespin: the ball grips and rolls off a face brushed at 40 m/s, and springs back beyond "
+    "rolling, as on TWU's clamped racket (1.7-2.1 times the measured spin there); the preset's "
+    "path, 30 degrees up and 35 across, is an assumption",
+    "stroke-flat-serve": "model 783 vs 1548-3167 rpm: the preset's path is level and its face "
+    "7 degrees closed (assumptions); a real first serve rises through the ball",
+    "stroke-slice-backhand": "model 2109 vs 2127-3244 rpm (1 % short): the preset's path, 15 "
+    "degrees down, and face, 12 degrees open, are assumptions",
 }
 """The comparisons the model is known to miss, and by how much (the measured gap)."""
 

@@ -306,8 +306,9 @@ def _solve(
     if stepper.code == layout.SINE:
         x_o = unhappy_x_o(racket, ball, x, y, speed, swing_speed, pivot, stepper)
     extra_steps = round(watch_after / stepper.dt)
-    record = history_bound(stepper, x.size, extra_steps) if histories else 0
     force_only = histories == "force"
+    rows = 1 if force_only else layout.N_HISTORY
+    record = history_bound(stepper, x.size, extra_steps, rows) if histories else 0
     outputs = stepper.run(x_o, extra_steps=extra_steps, history_steps=record,
                           force_only=force_only)  # fmt: skip
     ended = outputs.summary[:, layout.ENDED]

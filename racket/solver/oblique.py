@@ -18,7 +18,7 @@ import numpy as np
 from ball.bodies import Ball
 from ball.grip import Grip, slide
 from ball.spin import BallSpin
-from common.checks import finite_array
+from common.checks import SPEED_RANGE, finite_array
 from common.typechecks import instance
 from racket.bed_sideways import BedSideways, sideways
 from racket.in_plane import inverse_mass
@@ -26,6 +26,7 @@ from racket.racket import Racket
 from racket.solver.dispatch import run_rows
 from racket.solver.driver import impact
 from racket.solver.outcome import Impact
+from racket.stroke import LIMITS
 
 GRIP_SUBSTEPS = 2
 """Sub-steps of the tangential contact per step of the normal one [-]: 2 keep the change of
@@ -76,12 +77,22 @@ class ObliqueImpact:
         return np.atleast_1d(self.normal.energy_residual) + self.grip.residual
 
 
-def _vectors(name: str, values, size: int, unit: str) -> np.ndarray:
-    """``values`` as finite numbers of shape (size,) or (n, size); one line otherwise."""
+SPIN_MAX = LIMITS["topspin"][1]
+"""The largest spin [rad/s] an oblique impact takes: a stroke's (:data:`racket.stroke.LIMITS`,
+9549 rpm, twice the most measured)."""
+
+
+def _vectors(name: str, values, size: int, unit: str, largest: float) -> np.ndarray:
+    """``values`` as finite numbers of shape (size,) or (n, size), each vector's size at most
+    ``largest``; one line otherwise.
+    """
     values = finite_array(name, values, unit)
     if values.ndim not in (1, 2) or values.shape[-1] != size:
         raise ValueError(f"{name} must be {size} numbers [{unit}] (or a row of them per point), "
                          f"got shape {values.shape}")  # fmt: skip
+    size_of = float(np.max(np.linalg.norm(values, axis=-1)))
+    if size_of > largest:
+        raise ValueError(f"{name} must be at most {largest:g} {unit} in size, got {size_of:.4g}")
     return values
 
 
@@ -106,7 +117,10 @@ def oblique_impact(
     ----------
     racket, ball, position, speed, offset, swing_speed, pivot, steps_per_contact
         As :func:`racket.impact`: ``speed`` and ``swing_speed`` are the ball's and the impact
-        point's speeds along the strings' normal [m/s].
+        point's speeds along the strings' normal [m/s].  The tangential contact needs the
+        force's history, which needs one time step for all the points: one closing speed
+        (speed + swing speed), or a ball whose contact time does not depend on it (a point's
+        own swing speed with the ITF ball: one call per point).
     slip_velocity : array_like
         (2,) or (n, 2) ball's velocity along the strings [m/s] relative to the impact point,
         (along, across).
@@ -126,8 +140,8 @@ def oblique_impact(
     instance("ball", ball, Ball, "a ball.Ball")
     instance("ball_spin", ball_spin, (BallSpin, type(None)), "a ball.spin.BallSpin or None")
     instance("side", side, (BedSideways, type(None)), "a racket.bed_sideways.BedSideways or None")
-    slip_velocity = _vectors("slip_velocity", slip_velocity, 2, "m/s")
-    spin = _vectors("spin", spin, 3, "rad/s")
+    slip_velocity = _vectors("slip_velocity", slip_velocity, 2, "m/s", SPEED_RANGE[1])
+    spin = _vectors("spin", spin, 3, "rad/s", SPIN_MAX)
     if ball_spin is None:
         ball_spin = BallSpin() if ball.radius is None else BallSpin(radius=ball.radius)
     side = sideways(racket.strings) if side is None else side

@@ -164,12 +164,15 @@ point_velocity_dc_history : ndarray or None
         return self.point_velocity - self.point_velocity_dc_history
 
 
+N_ROWS = layout.N_HISTORY
+"""Histories a full record holds [-]."""
+
 HISTORY_MEMORY = 64e6
 """Bytes the first run may record histories into before it knows how long they are
 (:func:`history_bound`); beyond, the histories come from a second run."""
 
 
-def history_bound(stepper: Stepper, count: int, extra_steps: int) -> int:
+def history_bound(stepper: Stepper, count: int, extra_steps: int, rows: int = N_ROWS) -> int:
     """Steps [-] the first run records, when histories are asked for: three contacts' worth
     at the stiffest spot and the extra steps (a contact at the bed's centre is about 1.5
     times as long; a later catch by the frame may need more, and then the histories come
@@ -183,9 +186,11 @@ def history_bound(stepper: Stepper, count: int, extra_steps: int) -> int:
         Impacts in the run [-].
     extra_steps : int
         Steps [-] the run goes on after each ball has left for good.
+    rows : int, optional
+        Histories recorded [-]: all of them, or 1 (the force's alone).
     """
     steps = 3 * stepper.steps_per_contact + extra_steps
-    return steps if 8 * layout.N_HISTORY * count * steps <= HISTORY_MEMORY else 0
+    return steps if 8 * rows * count * steps <= HISTORY_MEMORY else 0
 
 
 def outcome(stepper: Stepper, racket, ball, x, y, speed, x_o, outputs, histories, extra_steps):

@@ -7,8 +7,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-import numpy as np
-
 from ball.bodies import Ball
 from common.checks import finite
 from common.typechecks import instance
@@ -109,21 +107,3 @@ def hit(
     velocity = oblique.velocity[0]
     flight = stroke.to_world(velocity[:2], velocity[2], oblique.spin[0])
     return StrokeImpact(stroke, position, oblique, flight)
-
-
-def spin_and_speed(strokes, racket: Racket, ball: Ball, position=None) -> np.ndarray:
-    """Speed [m/s], launch angle [rad], topspin, sidespin and spin rate [rad/s] after each
-    stroke: (n, 5), one :func:`hit` each (each has its own closing speed).
-
-    Parameters
-    ----------
-    strokes : sequence of Stroke
-        The strokes.
-    racket, ball, position
-        As :func:`hit`.
-    """
-    rows = []
-    for stroke in strokes:
-        f = hit(stroke, racket, ball, position).flight
-        rows.append([f.speed, f.launch_angle, f.topspin, f.sidespin, f.spin_rate])
-    return np.array(rows).reshape(-1, 5)

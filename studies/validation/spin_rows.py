@@ -65,6 +65,17 @@ TOUR_FOREHANDS = (1288.0, 3331.0)
 """Men's topspin forehands at the 1997 US Open, player means [rpm] (Yandell, "Ball spin in
 pro tennis", tennisplayer.net)."""
 
+KICK_SERVES = (3270.0, 4500.0)
+"""Kick serves' spin [rpm], mainly sidespin (Cross, TWU "Physics of the tennis kick serve",
+2011; ``data/measurements.md`` sec. 6)."""
+
+FIRST_SERVES = (1548.0, 3167.0)
+"""Men's first serves' spin [rpm], 1548 at 120 mph to 3167 at 92 mph (Yandell, "Ball spin in
+pro tennis")."""
+
+SLICE_BACKHANDS = (2127.0, 3244.0)
+"""Men's slice backhands' spin [rpm] (Yandell, "Ball spin in pro tennis")."""
+
 _TWU_MOVEMENT = 'TWU, "String movement and spin" (Lindsey, own text)'
 _TWU_LUBE = 'TWU, "String lubrication and movement in spin" (Lindsey 2011, own text)'
 _YANDELL = 'Yandell, "Ball spin in pro tennis", tennisplayer.net; Knudson via Yandell'
@@ -214,7 +225,31 @@ def spin_comparisons() -> list[Comparison]:
             _YANDELL,
             "validation",
             "the players' means at the 1997 US Open",
-            lambda: _strokes(("topspin-forehand",))[0].spin_rate / RPM,
+            lambda: _strokes(("topspin-forehand",))[0].topspin / RPM,
+        ),
+        *(
+            Comparison(
+                f"stroke-{name}",
+                f"spin of a {name.replace('-', ' ')} [rpm]",
+                f"the {name} preset, default racket and ball",
+                float(np.mean(band)),
+                *band,
+                source,
+                "validation",
+                note,
+                lambda n=name: _strokes((n,))[0].spin_rate / RPM,
+            )
+            for name, band, source, note in (
+                ("kick-serve", KICK_SERVES, _CROSS_SERVE, "Cross's range for kick serves"),
+                (
+                    "flat-serve",
+                    FIRST_SERVES,
+                    _YANDELL,
+                    "the tour's first serves, 120 to 92 "
+                    "mph (the preset's ball leaves at about 124 mph)",
+                ),
+                ("slice-backhand", SLICE_BACKHANDS, _YANDELL, "the tour's slice backhands"),
+            )
         ),
         Comparison(
             "stroke-serves-in-order",
@@ -230,7 +265,7 @@ def spin_comparisons() -> list[Comparison]:
         ),
     ]
     courts = []
-    for name, low, high in (("grass", 45.0, 100.0), ("clay", -100.0, 29.5)):
+    for name, low, high in (("grass", 45.0, 100.0), ("clay", -100.0, 29.99)):
         court = COURTS[name]
         formula = 100.0 * (1.0 - court.friction) + 150.0 * (0.81 - court.cor)
         courts.append(Comparison(
