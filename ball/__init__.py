@@ -4,11 +4,13 @@ Public API: the force laws :class:`LinearSpring`, :class:`LinearHysteresis`,
 :class:`PowerLawHysteresis`, :class:`GrowingHysteresis` (COR and stiffness that change with
 speed), :class:`StiffeningHysteresis` (the real tennis ball's law, bounded by its radius) and
 :class:`SineLaw`; :class:`Ball` and :data:`WALL`; the real-ball presets
-:data:`BALL_PRESETS` (:mod:`ball.catalog`);
+:data:`BALL_PRESETS` (:mod:`ball.catalog`); baseballs and softballs of A. M. Nathan's law,
+:data:`BASEBALL_PRESETS` and :func:`baseball` (:mod:`ball.baseball`);
 :func:`collide` and its :class:`Collision` result; the closed forms in
 :mod:`ball.closed_forms`.
 """
 
+from ball.baseball import BASEBALL_PRESETS, DEFAULT_BASEBALL, baseball
 from ball.bodies import WALL, Ball, Wall, warn_if_squashed
 from ball.catalog import BALL_PRESETS, DEFAULT_BALL
 from ball.closed_forms import (
@@ -34,7 +36,9 @@ from common.version import __version__
 
 __all__ = [
     "BALL_PRESETS",
+    "BASEBALL_PRESETS",
     "DEFAULT_BALL",
+    "DEFAULT_BASEBALL",
     "WALL",
     "Ball",
     "Collision",
@@ -48,6 +52,7 @@ __all__ = [
     "StiffeningHysteresis",
     "Wall",
     "__version__",
+    "baseball",
     "collide",
     "energy_loss_fraction",
     "energy_loss_fraction_lab",

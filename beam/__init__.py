@@ -1,11 +1,13 @@
-"""Free-free Euler-Bernoulli beams by modal superposition (paper Sec. VII).
+"""Free-free Euler-Bernoulli and Timoshenko beams by modal superposition (paper Sec. VII).
 
 Public API: :class:`Beam` (profile, mass properties, effective mass of Eq. 20, modes),
-:class:`Modes` (rigid-body plus bending modes, mass-normalised).
+:class:`ThickBeam` (the same with shear and rotary inertia, a bat's), :class:`Modes`
+(rigid-body plus bending modes, mass-normalised).
 """
 
 from beam.beam import DEFAULT_DAMPING, DEFAULT_MODES, SWINGWEIGHT_AXIS, Beam
 from beam.modes import Modes
+from beam.thick import ThickBeam
 from common.version import __version__
 
 __all__ = [
@@ -14,5 +16,6 @@ __all__ = [
     "SWINGWEIGHT_AXIS",
     "Beam",
     "Modes",
+    "ThickBeam",
     "__version__",
 ]

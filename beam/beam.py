@@ -362,7 +362,7 @@ class Beam:
             beam.__dict__["roll_modes"] = self.roll_modes
         if "_flexibility" in self.__dict__:
             flex = self._flexibility
-            beam.__dict__["_flexibility"] = fem.FemFlexibility(flex.nodes, flex.blocks / scale)
+            beam.__dict__["_flexibility"] = replace(flex, blocks=flex.blocks / scale)
         return beam
 
     def with_point_masses(self, *masses) -> Beam:
@@ -482,6 +482,12 @@ class Beam:
             )
         else:
             raise ValueError(f"method must be 'analytic' or 'fem', got {method!r}")
+        return self._modes(omega_b, bending)
+
+    def _modes(self, omega_b: np.ndarray, bending) -> Modes:
+        """The :class:`Modes` of bending frequencies ``omega_b`` [rad/s] and shapes
+        ``bending``, with the two rigid-body modes and this beam's damping and mass.
+        """
         zeta = np.broadcast_to(np.asarray(self.damping, dtype=float), (self.n_modes,))
         return Modes(
             omega=np.concatenate([[0.0, 0.0], omega_b]),

@@ -17,8 +17,11 @@ from dataclasses import dataclass
 import numpy as np
 
 
-def hermite(s: np.ndarray, length: np.ndarray) -> np.ndarray:
-    """Cubic Hermite shape functions at local coordinate s in [0, 1]: array (4, len(s)).
+def hermite(s: np.ndarray, length: np.ndarray, shear=0.0) -> np.ndarray:
+    """Cubic Hermite shape functions of the deflection at local coordinate s in [0, 1]:
+    array (4, len(s)).  With a shear parameter the Timoshenko element's
+    (:mod:`beam.timoshenko`), whose second and fourth degrees of freedom are the sections'
+    rotations; 0 gives the Euler-Bernoulli element's.
 
     Parameters
     ----------
@@ -26,19 +29,22 @@ def hermite(s: np.ndarray, length: np.ndarray) -> np.ndarray:
         Local coordinate [-] along each element, 0 at its start and 1 at its end.
     length : ndarray
         Length of the element at each ``s`` [m] (scales the slope functions).
+    shear : float or ndarray
+        The element's shear parameter Phi = 12 EI / (kappa G A l**2) [-] at each ``s``.
     """
+    p = shear
     return np.array(
         [
-            1 - 3 * s**2 + 2 * s**3,
-            length * (s - 2 * s**2 + s**3),
-            3 * s**2 - 2 * s**3,
-            length * (-(s**2) + s**3),
+            1 - 3 * s**2 + 2 * s**3 + p * (1 - s),
+            length * (s - 2 * s**2 + s**3 + 0.5 * p * (s - s**2)),
+            3 * s**2 - 2 * s**3 + p * s,
+            length * (-(s**2) + s**3 - 0.5 * p * (s - s**2)),
         ]
-    )
+    ) / (1.0 + p)
 
 
-def element_shapes(nodes: np.ndarray, x):
-    """The element holding each x [m from the tip] and its Hermite shape functions there:
+def element_shapes(nodes: np.ndarray, x, shear=None):
+    """The element holding each x [m from the tip] and its shape functions there:
     (element index (len(x),), values (4, len(x))).
 
     Parameters
@@ -47,11 +53,14 @@ def element_shapes(nodes: np.ndarray, x):
         Mesh nodes [m from the tip], increasing.
     x : float or array_like
         Positions to evaluate at [m from the tip].
+    shear : ndarray or None
+        Each element's shear parameter [-] (:func:`hermite`); None for Euler-Bernoulli.
     """
     x = np.asarray(x, dtype=float)
     lengths = np.diff(nodes)
     e = np.clip(np.searchsorted(nodes, x, side="right") - 1, 0, lengths.size - 1)
-    return e, hermite((x - nodes[e]) / lengths[e], lengths[e])
+    p = 0.0 if shear is None else shear[e]
+    return e, hermite((x - nodes[e]) / lengths[e], lengths[e], p)
 
 
 def mesh(stations: np.ndarray, extra_points: np.ndarray, elements: int) -> np.ndarray:
@@ -143,8 +152,26 @@ def assemble(stations, mass_per_length, bending_stiffness, point_masses, element
             [-13 * l, -3 * l**2, -22 * l, 4 * l**2],
         ]
     ).transpose(2, 0, 1)
+    k, m = scatter(nodes, k_e, m_e, point_masses)
+    return nodes, k, m
+
+
+def scatter(nodes: np.ndarray, k_e: np.ndarray, m_e: np.ndarray, point_masses):
+    """The global stiffness and mass matrices (2N, 2N) from the elements' (E, 4, 4), degrees
+    of freedom (deflection, slope or rotation) at each node in turn, with the point masses on
+    the deflections of their nearest nodes.
+
+    Parameters
+    ----------
+    nodes : ndarray (N,)
+        Mesh nodes [m from the tip].
+    k_e, m_e : ndarray (N - 1, 4, 4)
+        Each element's stiffness and mass matrices [SI].
+    point_masses : array (P, 2)
+        Rows (position [m from the tip], mass [kg]).
+    """
     n_dof = 2 * nodes.size
-    dofs = 2 * np.arange(l.size)[:, None] + np.arange(4)[None, :]
+    dofs = 2 * np.arange(nodes.size - 1)[:, None] + np.arange(4)[None, :]
     rows = np.repeat(dofs, 4, axis=1).ravel()
     cols = np.tile(dofs, (1, 4)).ravel()
     # Sum the element matrices into the global ones (bincount: np.add.at is ten times slower).
@@ -154,7 +181,7 @@ def assemble(stations, mass_per_length, bending_stiffness, point_masses, element
     for x_p, m_p in point_masses:
         i = 2 * int(np.argmin(np.abs(nodes - x_p)))
         m[i, i] += m_p
-    return nodes, k, m
+    return k, m
 
 
 def bending_modes(
@@ -176,19 +203,38 @@ def bending_modes(
     elements : int
         About how many elements along the beam.
     """
+    nodes, k, m = assemble(stations, mass_per_length, bending_stiffness, point_masses, elements)
+    _, rho, ei = element_properties(stations, mass_per_length, bending_stiffness, nodes)
+    return modes_of(nodes, k, m, rho, ei, n_modes)
+
+
+def modes_of(nodes, k, m, rho, ei, n_modes: int, shear=None):
+    """Angular frequencies [rad/s] and shapes (:class:`FemShapes`) of the first ``n_modes``
+    bending modes of an assembled free-free beam.
+
+    Parameters
+    ----------
+    nodes : ndarray (N,)
+        Mesh nodes [m from the tip].
+    k, m : ndarray (2N, 2N)
+        Stiffness and mass matrices [SI].
+    rho, ei : ndarray (N - 1,)
+        Each element's mass per length [kg/m] and EI [N m^2] (for the solver's shift).
+    n_modes : int
+        Bending modes to keep.
+    shear : ndarray or None
+        Each element's shear parameter [-] (:func:`hermite`); None for Euler-Bernoulli.
+    """
     from scipy.linalg import eigh  # scipy loads on first use (import time)
 
-    nodes, k, m = assemble(stations, mass_per_length, bending_stiffness, point_masses, elements)
     n_dof = k.shape[0]
     lengths = np.diff(nodes)
-
     # Solve the shifted, inverted problem m v = mu (k + s m) v, mu = 1 / (omega**2 + s): a
     # dense solver's eigenvalue errors are about eps times the largest eigenvalue, which for
     # k v = omega**2 m v is the mesh's highest frequency squared (1e-4 relative error on the
     # fundamental of a fine mesh); inverted, the largest eigenvalues are the wanted ones.
     # The shift: the fundamental of a uniform beam of the mean EI and mass per length
     # (beta L = 4.730), so that mu of the wanted modes is within a small factor of 1 / s.
-    _, rho, ei = element_properties(stations, mass_per_length, bending_stiffness, nodes)
     span = nodes[-1] - nodes[0]
     shift = 4.730**4 * (ei @ lengths) / (rho @ lengths) / span**4
     mu, v = eigh(m, k + shift * m, subset_by_index=[n_dof - n_modes - 2, n_dof - 3])
@@ -198,7 +244,7 @@ def bending_modes(
     v = v * np.sign(v[0])  # deflection at the tip positive
     omega = np.sqrt(np.maximum(w2, 0.0))
 
-    return omega, FemShapes(nodes, v)
+    return omega, FemShapes(nodes, v, shear)
 
 
 @dataclass(frozen=True, eq=False)
@@ -213,14 +259,18 @@ class FemShapes:
     vectors : ndarray
         (2 nodes, modes) mass-normalised eigenvectors (deflection [1/sqrt(kg)],
         slope [1/(sqrt(kg) m)] per node).
+    shear : ndarray or None
+        Each element's shear parameter [-] (:func:`hermite`; the second degree of freedom
+        is then the section's rotation); None for Euler-Bernoulli.
     """
 
     nodes: np.ndarray
     vectors: np.ndarray
+    shear: np.ndarray | None = None
 
     def __call__(self, x) -> np.ndarray:
         """Values at ``x`` [m from the tip] (see the class docstring)."""
-        e, n = element_shapes(self.nodes, x)
+        e, n = element_shapes(self.nodes, x, self.shear)
         dof = 2 * e[None, :] + np.arange(4)[:, None]  # (4, len(x))
         return np.einsum("kx,mkx->mx", n, self.vectors[dof].transpose(2, 0, 1))
 
@@ -252,6 +302,22 @@ def static_flexibility(stations, mass_per_length, bending_stiffness, point_masse
         About how many elements along the beam.
     """
     nodes, k, m = assemble(stations, mass_per_length, bending_stiffness, point_masses, elements)
+    return flexibility_of(nodes, k, m)
+
+
+def flexibility_of(nodes, k, m, shear=None):
+    """:func:`static_flexibility` of an assembled free-free beam (arguments as in
+    :func:`modes_of`).
+
+    Parameters
+    ----------
+    nodes : ndarray (N,)
+        Mesh nodes [m from the tip].
+    k, m : ndarray (2N, 2N)
+        Stiffness and mass matrices [SI].
+    shear : ndarray or None
+        Each element's shear parameter [-] (:func:`hermite`); None for Euler-Bernoulli.
+    """
     n_dof = k.shape[0]
     rigid = np.zeros((n_dof, 2))
     rigid[0::2, 0] = 1.0  # translation: deflection 1, slope 0
@@ -266,7 +332,7 @@ def static_flexibility(stations, mass_per_length, bending_stiffness, point_masse
     relief = np.eye(n_dof) - rigid @ (rigid.T @ m)
     flexibility = relief @ propped @ relief.T
     dof = 2 * np.arange(nodes.size - 1)[:, None] + np.arange(4)  # (E, 4) per element
-    return FemFlexibility(nodes, flexibility[dof[:, :, None], dof[:, None, :]])
+    return FemFlexibility(nodes, flexibility[dof[:, :, None], dof[:, None, :]], shear)
 
 
 @dataclass(frozen=True, eq=False)
@@ -281,12 +347,15 @@ class FemFlexibility:
     blocks : ndarray
         (elements, 4, 4) the flexibility matrix's block between each element's degrees of
         freedom (deflection and slope at both ends) [SI], all that a point inside it needs.
+    shear : ndarray or None
+        Each element's shear parameter [-] (:func:`hermite`); None for Euler-Bernoulli.
     """
 
     nodes: np.ndarray
     blocks: np.ndarray
+    shear: np.ndarray | None = None
 
     def __call__(self, x) -> np.ndarray:
         """Values at ``x`` [m from the tip] (see the class docstring)."""
-        e, n = element_shapes(self.nodes, x)
+        e, n = element_shapes(self.nodes, x, self.shear)
         return np.einsum("ix,xij,jx->x", n, self.blocks[e], n)

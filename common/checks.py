@@ -457,3 +457,24 @@ def finite_array(name: str, values, unit: str = "") -> np.ndarray:
         bad = np.asarray(values, dtype=object).ravel()[index]
         raise ValueError(f"{name} must be finite numbers{_unit(unit)}, got {shown(bad)}")
     return a
+
+
+def impact_positions(position) -> np.ndarray:
+    """Impact positions [m from the tip] as a 1-D array of at least one: ValueError if they
+    are not a number or a flat sequence of numbers, or there are none.
+
+    Parameters
+    ----------
+    position : float or array_like
+        The positions [m from the tip].
+    """
+    x = finite_array("position", position, "m from the tip")
+    if x.ndim > 1:
+        raise ValueError(
+            f"position must be a number or a flat sequence of numbers [m from the tip], "
+            f"got an array of shape {x.shape}"
+        )
+    x = np.atleast_1d(x)
+    if x.size == 0:
+        raise ValueError("position must give at least one impact point, got none")
+    return x

@@ -9,10 +9,15 @@ rackets) and the modelled flex test (:func:`flex_test_stiffness`); what a racket
 with (:class:`Stringing` of a :class:`String` of a material of :data:`MATERIALS`, the
 :data:`STRINGS` presets, :func:`stringing` by name); spin (issue 36): a :class:`Stroke`
 (the :data:`STROKES` presets) and :func:`hit`, the ball's flight after it; a spinning ball
-meeting the strings obliquely, :func:`oblique_impact`.
+meeting the strings obliquely, :func:`oblique_impact`.  Bats (issue 37): a :class:`Bat`
+(a beam struck on its own surface, free, pivoted or held; the :data:`BATS` presets, Nathan's
+R161 by default) swung by a :class:`BatSwing`; :func:`impact` strikes either.
 """
 
 from common.version import __version__
+from racket.bat import BAT_SUPPORTS, Bat
+from racket.bat_swing import BatSwing
+from racket.bats import BATS, DEFAULT_BAT
 from racket.hand import GRIPS, Hand
 from racket.presets import (
     DEFAULT_RACKET,
@@ -34,7 +39,10 @@ from racket.stroke import STROKES, Stroke
 from racket.swing import Swing
 
 __all__ = [
+    "BATS",
+    "BAT_SUPPORTS",
     "CATALOG",
+    "DEFAULT_BAT",
     "DEFAULT_RACKET",
     "GRIPS",
     "MATERIALS",
@@ -43,6 +51,8 @@ __all__ = [
     "SUPPORTS",
     "TENNIS_BALL_MASS",
     "TENNIS_BALL_RADIUS",
+    "Bat",
+    "BatSwing",
     "Hand",
     "Impact",
     "ObliqueImpact",

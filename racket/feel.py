@@ -4,7 +4,8 @@ impact.
 :func:`hand_feel` takes the contact force of an impact (the solver's history) and drives the
 racket's linear dynamics with it (the same real 2x2 blocks, each stepped exactly for a force
 varying linearly over a step, :func:`racket.solver.steps.system_steps`), on past the moment
-the ball leaves, for ``duration``, and reads the handle at the middle of the hand.  Its
+the ball leaves, for ``duration``, and reads the handle at the middle of the hand
+(:func:`driven_motion` does the driving, for a racket or a bat, read at any point).  Its
 motion is split by the blocks (:attr:`racket.system.BlockSystem.dc`) into the two things a
 player feels (R. Cross, "The sweet spots of a tennis racquet", Sports Engineering 1 (1998)
 63-78: "Forces on the hand arise from rotation, translation and vibration of the handle"):
@@ -29,7 +30,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from common.checks import finite, in_range
+from common.checks import finite, finite_array, in_range
 from common.checks import speed as check_speed
 from common.typechecks import instance
 from racket.racket import Racket
@@ -128,6 +129,88 @@ class HandFeel:
         return peak, False
 
 
+@dataclass(frozen=True)
+class DrivenMotion:
+    """An implement's motion driven from rest by a contact force history at one point (built
+    by :func:`driven_motion`), in its free-free modal coordinates q (a racket's or a bat's;
+    the hand's mass, if any, after them): read it at any point with the modal shapes there
+    (``q @ phi``).
+
+    Attributes
+    ----------
+    q, qd, qdd : (T, N) ndarray
+        Modal displacements, velocities and accelerations [SI] at each time step.
+    rigid_q, rigid_qd, rigid_qdd : (T, N) ndarray
+        Their part from the dc blocks [SI] (:attr:`racket.system.BlockSystem.dc`: a free
+        implement's rigid-body motion, a pivoted bat's turn about its pivot, a held one's
+        slow rocking on the hand); the rest is the vibration.
+    states : (T, nb, 2) ndarray
+        The blocks' states [SI] (:mod:`racket.system`).
+    system : BlockSystem
+        The implement's block system for its support.
+    face : bool
+        Whether the roll and torsion modes take part (an impact off a racket's axis).
+    """
+
+    q: np.ndarray
+    qd: np.ndarray
+    qdd: np.ndarray
+    rigid_q: np.ndarray
+    rigid_qd: np.ndarray
+    rigid_qdd: np.ndarray
+    states: np.ndarray
+    system: object
+    face: bool
+
+
+def driven_motion(implement, position: float, force, dt: float, offset=None) -> DrivenMotion:
+    """The motion of a racket or a bat, at rest at first, driven by the contact force
+    ``force`` at ``position``: the same real 2x2 blocks the solver steps, each advanced
+    exactly for a force varying linearly over a step
+    (:func:`racket.solver.steps.system_steps`).  The implement's motion before the impact
+    (a swing) is not in it: the system is linear, so it adds to this.
+
+    Parameters
+    ----------
+    implement : Racket or Bat
+        What is struck (its support: :meth:`point_dynamics`).
+    position : float
+        Where the force acts [m from the tip].
+    force : (T,) array_like
+        The force on the implement at each step [N], from the first contact (0 once the
+        ball has left).
+    dt : float
+        The time step [s].
+    offset : float, optional
+        The point's distance from the long axis [m] (a racket's face).
+
+    Returns
+    -------
+    DrivenMotion
+    """
+    force = finite_array("force", force, "N").ravel()
+    dt = finite("dt", dt, "s")
+    y = None if offset is None else np.atleast_1d(float(offset))
+    system, phi, face = implement.point_dynamics(position, y)
+    trans, g0, g1 = system_steps(system, dt)
+    unit = system.inputs(phi)[0]  # (nb, 2): a unit force at the impact point
+    states = np.empty((force.size, *unit.shape))
+    s = np.zeros(unit.shape)
+    states[0] = s
+    g0u, g1u = np.einsum("bij,bj->bi", g0, unit), np.einsum("bij,bj->bi", g1, unit)
+    for k in range(1, force.size):  # exact for a force linear over each step
+        s = np.einsum("bij,bj->bi", trans, s) + g0u * force[k - 1] + g1u * force[k]
+        states[k] = s
+    rates = np.einsum("bij,tbj->tbi", system.blocks, states) + force[:, None, None] * unit
+    dc = system.dc[None, :, None]
+    q, qd = system.modal_state(states)
+    rigid_q, rigid_qd = system.modal_state(states * dc)
+    return DrivenMotion(
+        q=q, qd=qd, qdd=system.modal_state(rates)[1], rigid_q=rigid_q, rigid_qd=rigid_qd,
+        rigid_qdd=system.modal_state(rates * dc)[1], states=states, system=system, face=face,
+    )  # fmt: skip
+
+
 def hand_feel(
     racket: Racket,
     ball,
@@ -178,26 +261,16 @@ def hand_feel(
     force = np.nan_to_num(np.atleast_1d(hit.frame_force), nan=0.0)
     steps = int(np.ceil(duration / dt)) + 1
     force = np.concatenate([force, np.zeros(max(steps - force.size, 0))])[:steps]
-    y = None if offset is None else np.atleast_1d(float(offset))
-    system, phi, face = racket.point_dynamics(position, y)
+    motion = driven_motion(racket, position, force, dt, offset)
+    system, states, face = motion.system, motion.states, motion.face
+    y = None if offset is None else np.zeros(1)
     grip = racket.beam.length - 0.5 * racket.hand.grip_length
-    _, phi_grip, _ = racket.point_dynamics(grip, None if y is None else np.zeros(1))
+    _, phi_grip, _ = racket.point_dynamics(grip, y)
     n = system.count
-    trans, g0, g1 = system_steps(system, dt)
-    unit = system.inputs(phi)[0]  # (nb, 2): a unit force at the impact point
-    states = np.empty((steps, *unit.shape))
-    s = np.zeros(unit.shape)
-    states[0] = s
-    g0u, g1u = np.einsum("bij,bj->bi", g0, unit), np.einsum("bij,bj->bi", g1, unit)
-    for k in range(1, steps):  # exact for a force linear over each step
-        s = np.einsum("bij,bj->bi", trans, s) + g0u * force[k - 1] + g1u * force[k]
-        states[k] = s
-    rates = np.einsum("bij,tbj->tbi", system.blocks, states) + force[:, None, None] * unit
-    q, qd = system.modal_state(states)
-    qdd = system.modal_state(rates)[1]
+    q, qd = motion.q, motion.qd
     velocity = qd @ phi_grip[0]
-    acceleration = qdd @ phi_grip[0]
-    shock = system.modal_state(rates * system.dc[None, :, None])[1] @ phi_grip[0]
+    acceleration = motion.qdd @ phi_grip[0]
+    shock = motion.rigid_qdd @ phi_grip[0]
     vibration = acceleration - shock
     t = np.arange(steps) * dt
     touching = t <= hit.contact_time  # the ball on the strings

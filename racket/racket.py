@@ -8,12 +8,27 @@ from functools import cached_property
 import numpy as np
 
 from beam import Beam
-from common.checks import GRAMS_AS_KG, finite_array, in_range, non_negative, positive, shown
+from common.checks import (
+    GRAMS_AS_KG,
+    finite_array,
+    impact_positions,
+    in_range,
+    non_negative,
+    positive,
+    shown,
+)
 from common.typechecks import choice, instance
 from racket.hand import GRIPS, Hand
 from racket.head import HEAD_ASPECT, Hoop
 from racket.membrane import bed_radius, stiffness_ratio
-from racket.system import clamped_system, face_system, racket_system, roll_system
+from racket.swing import check_swung_support
+from racket.system import (
+    clamped_system,
+    face_system,
+    point_shapes,
+    racket_system,
+    roll_system,
+)
 
 SUPPORTS = ("free", "clamped-head", "hand-held")
 STRING_PROFILES = ("uniform", "membrane")
@@ -264,12 +279,30 @@ class Racket:
         face = y is not None and self.face_system is not None
         system = self.face_system if face else self.system
         n = system.count
-        phi = self.beam.modes.shape(x).T[:, : min(n, self.beam.modes.count)]
-        if system.hand_coordinate is not None:  # the hand's mass: no force on it
-            phi = np.hstack([phi, np.zeros((x.size, 1))])
+        phi = point_shapes(system, self.beam.modes, x)
         if face and n:
             phi = np.hstack([phi, self.beam.roll_modes.shape(x, y).T])
         return system, np.ascontiguousarray(phi), face
+
+    @property
+    def contact(self) -> StringBed:
+        """What lies between the ball and the frame: the string bed (a bat's is its bare
+        wood, :class:`racket.bat.BareFace`); the solver asks it for its stiffness.
+        """
+        return self.strings
+
+    def effective_mass(self, x, y=None) -> np.ndarray:
+        """The frame's rigid-body effective mass [kg] at ``x`` [m from the tip] (and ``y``
+        [m from the long axis]), Eq. 20, that of the free frame whatever its support
+        (:meth:`beam.Beam.effective_mass`).
+        """
+        return self.beam.effective_mass(x, y)
+
+    def check_swing(self, pivot) -> None:
+        """Refuse a swing (a pivot [m from the tip] or None) this racket's support cannot
+        have: only a free racket is swung (:func:`racket.swing.check_swung_support`).
+        """
+        check_swung_support(self.support)
 
     @property
     def hoop(self) -> Hoop:
@@ -349,15 +382,7 @@ class Racket:
         """Impact positions [m from the tip] as a 1-D array; ValueError if there are none,
         if they are not a number or a flat sequence, or if any is off the strings.
         """
-        x = finite_array("position", position, "m from the tip")
-        if x.ndim > 1:
-            raise ValueError(
-                f"position must be a number or a flat sequence of numbers [m from the tip], "
-                f"got an array of shape {x.shape}"
-            )
-        x = np.atleast_1d(x)
-        if x.size == 0:
-            raise ValueError("position must give at least one impact point, got none")
+        x = impact_positions(position)
         start, end = self.strings.extent
         off = (x < start) | (x > end)
         if np.any(off):

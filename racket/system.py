@@ -38,8 +38,9 @@ class BlockSystem:
     ----------
     blocks : (nb, 2, 2)
         The block matrices.
-    basis : (2N, 2N)
-        z = basis @ s, s the blocks' states in order (s_0a, s_0b, s_1a, ...), z = (q, q').
+    basis : (2N, 2 nb)
+        z = basis @ s, s the blocks' states in order (s_0a, s_0b, s_1a, ...), z = (q, q');
+        square but for a constrained system (:mod:`racket.pivot`: nb = N - 1).
     dc : (nb,) bool
         Blocks of the rigid-body motion (free) or of the racket rocking on the hand
         (hand-held): left out of the vibration's reach when deciding that the ball has left.
@@ -53,6 +54,10 @@ class BlockSystem:
     hand_coordinate : int or None
         The coordinate of a hand with mass (:func:`held_system`), after the frame's bending
         modes; None without one.  The frame's shapes are 0 there.
+    dc_rows : ndarray (len(rigid), 2 nb) or None
+        Rows over the block states giving the rigid coordinates' velocities [sqrt(kg) m/s]
+        of the dc motion alone, where it is not theirs whole (:mod:`racket.pivot`: the turn
+        about the pivot); None: :attr:`rigid`'s rows of ``basis``, the frame's momentum.
     step_memo : dict
         The solver's memo of this system's exact steps, by time step
         (:func:`racket.solver.steps.system_steps`); not part of the system's value.
@@ -66,6 +71,7 @@ class BlockSystem:
     damping: np.ndarray
     rigid: tuple = (0, 1)
     hand_coordinate: int | None = None
+    dc_rows: np.ndarray | None = None
     step_memo: dict = field(default_factory=dict, compare=False, repr=False)
 
     @property
@@ -79,8 +85,12 @@ class BlockSystem:
 
     @cached_property
     def _to_blocks(self) -> np.ndarray:
-        """basis^-1 (transposed): s = z @ this."""
-        return np.ascontiguousarray(np.linalg.inv(self.basis).T)
+        """basis^-1 (transposed): s = z @ this (the pseudo-inverse for a constrained
+        system's, :mod:`racket.pivot`, which has fewer blocks than coordinates).
+        """
+        square = self.basis.shape[0] == self.basis.shape[1]
+        inverse = np.linalg.inv(self.basis) if square else np.linalg.pinv(self.basis)
+        return np.ascontiguousarray(inverse.T)
 
     def state(self, z: np.ndarray) -> np.ndarray:
         """Block states (P, nb, 2) of modal states z = (q, q') (P, 2N).
@@ -114,8 +124,17 @@ class BlockSystem:
         n, rigid = self.count, list(self.rigid)
         disp = self._blocks_of(phi @ self.basis[:n])
         vel = self._blocks_of(phi @ self.basis[n:])
-        dc = self._blocks_of(phi[:, rigid] @ self.basis[[n + i for i in rigid]])
+        dc = self._blocks_of(phi[:, rigid] @ self.rigid_rows)
         return disp, vel, dc
+
+    @property
+    def rigid_rows(self) -> np.ndarray:
+        """Rows (len(rigid), 2 nb) over the block states giving the velocities of the
+        rigid coordinates' dc motion (:attr:`dc_rows`, or the basis's rows).
+        """
+        if self.dc_rows is not None:
+            return self.dc_rows
+        return np.ascontiguousarray(self.basis[[self.count + i for i in self.rigid]])
 
     @cached_property
     def damping_rows(self):
@@ -140,15 +159,36 @@ class BlockSystem:
         return blocks, values
 
     def modal_state(self, s: np.ndarray):
-        """Modal displacements and velocities (P, N) from block states (P, nb, 2).
+        """Modal displacements and velocities (P, N) from block states (P, nb, 2) (fewer
+        blocks than coordinates for a constrained system, :mod:`racket.pivot`).
 
         Parameters
         ----------
         s : ndarray (P, nb, 2)
             Block states.
         """
-        z = s.reshape(s.shape[0], 2 * self.count) @ self.basis.T
+        z = s.reshape(s.shape[0], -1) @ self.basis.T
         return z[:, : self.count], z[:, self.count :]
+
+
+def point_shapes(system: BlockSystem, modes: Modes, x: np.ndarray) -> np.ndarray:
+    """The bending system's modal shapes (P, N) at points ``x`` [m from the tip]: the beam's
+    modes, and 0 for a hand's coordinate (:attr:`BlockSystem.hand_coordinate`: no force
+    on the hand's mass).
+
+    Parameters
+    ----------
+    system : BlockSystem
+        The block system of the frame and its support.
+    modes : Modes
+        The frame's free-free modes.
+    x : ndarray
+        The points [m from the tip].
+    """
+    phi = modes.shape(x).T[:, : min(system.count, modes.count)]
+    if system.hand_coordinate is not None:
+        phi = np.hstack([phi, np.zeros((x.size, 1))])
+    return phi
 
 
 def free_system(modes: Modes) -> BlockSystem:

@@ -50,7 +50,8 @@ keys are errors)::
                                 # grip_length = 0.10 (m from the butt), mass = 0.2 (kg)
 
     [ball]
-    preset = "itf-type-2"       # a real ball (ball.catalog), "paper" (the paper's), ...
+    preset = "itf-type-2"       # a real ball (ball.catalog), "paper" (the paper's), a
+                                # baseball or softball ("baseball", ball.baseball), ...
                                 # or: mass (kg) and law, with the law's parameters:
     mass = 0.057
     law = "linear-hysteresis"   # "linear-spring" (k), "linear-hysteresis" (k, e),
@@ -73,6 +74,7 @@ from dataclasses import replace
 
 from ball import (
     BALL_PRESETS,
+    BASEBALL_PRESETS,
     Ball,
     GrowingHysteresis,
     LinearHysteresis,
@@ -123,10 +125,13 @@ BALLS = {
     "zero-cor-tennis": lambda: Ball(TENNIS_BALL_MASS, SineLaw(k0=4e4), TENNIS_BALL_RADIUS),
     "happy": lambda: Ball(0.0103, LinearSpring(k=2e4), SMALL_BALL_RADIUS),
     "unhappy": lambda: Ball(0.0103, SineLaw(k0=2e4), SMALL_BALL_RADIUS),
+    **{name: preset.ball for name, preset in BASEBALL_PRESETS.items()},
 }
 """Ball presets by name: the real balls of :mod:`ball.catalog` (ITF types 1-3, high
 altitude, pressureless, punctured), the paper's tennis ball, its zero-COR twin (Sec. VIII),
-and the happy and unhappy balls of Secs. IV-VI."""
+the happy and unhappy balls of Secs. IV-VI, and the baseballs and softballs of A. M. Nathan's
+law (:mod:`ball.baseball`: ``baseball``, ``baseball-low-speed``, ``baseball-fig2``,
+``mlb-low``, ``mlb-high`` and ``softball-44-375`` to ``softball-50-525``)."""
 
 TOML_RANGES = {
     ("racket", "length"): (0.2, 1.5, "m", (slip.CM_AS_M, slip.INCH_AS_M)),

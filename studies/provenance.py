@@ -32,8 +32,8 @@ TEXT = "text (no NUL, no lone surrogate)"
 """What every string of a sidecar's command and inputs must be."""
 
 _LIBRARIES = ("racket-impact", "numpy", "scipy", "pandas", "numba", "matplotlib")
-_INPUTS = ("racket", "ball", "a", "b")
-"""The options that name rackets and balls (presets or TOML files)."""
+_INPUTS = ("racket", "ball", "a", "b", "bat")
+"""The options that name rackets, balls and bats (presets or TOML files)."""
 
 
 def sidecar_path(table_path) -> Path:

@@ -30,6 +30,7 @@ SOLVER_FREE = {
     "test_stringing",
     "test_ball_validation",
     "test_beam",
+    "test_timoshenko",
     "test_bounce",
     "test_closed_forms",
     "test_collision_properties",

@@ -31,6 +31,7 @@ from ball import (
     PowerLawHysteresis,
     SineLaw,
     StiffeningHysteresis,
+    baseball,
     collide,
     energy_loss_fraction,
     energy_loss_fraction_lab,
@@ -41,10 +42,12 @@ from ball import (
     unhappy_solution,
     warn_if_squashed,
 )
-from beam import Beam
+from beam import Beam, ThickBeam
 from racket import (
     CATALOG,
     STROKES,
+    Bat,
+    BatSwing,
     Hand,
     Racket,
     String,
@@ -63,6 +66,7 @@ from racket import (
     string_bed_stiffness,
     stringing,
 )
+from racket.bats import r161_beam
 from racket.feel import hand_feel
 from racket.specs.strings import with_tension
 from studies.bounce import rigid_bounce_table
@@ -140,6 +144,7 @@ def made():
         "hit": impact(racket, ball, 0.1, 10.0),
         "history": collide(ball, WALL, 10.0).history,
         "specs": dict(CATALOG["pure-drive-2021"].specs),
+        "bat_beam": r161_beam(n_modes=4),
     }
 
 
@@ -157,6 +162,13 @@ CASES = [
     ("Racket", Racket,
      {"beam": _m("beam"), "strings": _m("strings"), "support": "free", "hand": _m("hand")},
      {"beam": "object", "strings": "object", "support": "word", "hand": "object"}, {}),
+    ("Bat", Bat,
+     {"beam": _m("bat_beam"), "support": "free", "hand": _m("hand"), "pivot_from_knob": 0.1524,
+      "clamp_offset": 0.0254, "name": "bat"},
+     {"beam": "object", "support": "word", "hand": "object", "pivot_from_knob": "number",
+      "clamp_offset": "number", "name": "text"}, {"support": "bat support"}),
+    ("BatSwing", BatSwing, {"angular_velocity": 51.0, "cm_speed": 24.0, "pivot_from_knob": None},
+     {"angular_velocity": "number", "cm_speed": "number?", "pivot_from_knob": "number?"}, {}),
     ("StringBed", StringBed,
      {"stiffness": 4e4, "extent": (0.0, 0.32), "width": None, "profile": "uniform",
       "stretch": 900.0, "loss": 0.06},
@@ -273,7 +285,23 @@ CASES = [
       "v1": "number"}, {}),
     ("warn_if_squashed", warn_if_squashed, {"ball": _m("ball"), "compression": 0.001},
      {"ball": "object", "compression": "numbers"}, {}),
+    ("baseball", baseball, {"e0": 0.5, "mass": 0.145}, {"e0": "number", "mass": "number"},
+     {}),
     # ---- beam -----------------------------------------------------------------------------
+    ("ThickBeam", ThickBeam,
+     {"stations": (0.0, 0.84), "mass_per_length": (2.0,), "bending_stiffness": (1e4,),
+      "shear_stiffness": (1e6,), "rotary_inertia_per_length": (1e-4,), "n_modes": 4,
+      "elements": 40},
+     {"stations": "numbers", "mass_per_length": "numbers", "bending_stiffness": "numbers",
+      "shear_stiffness": "numbers", "rotary_inertia_per_length": "numbers",
+      "n_modes": "count", "elements": "count"}, {}),
+    ("ThickBeam.round", ThickBeam.round,
+     {"stations": (0.0, 0.4, 0.84), "diameters": (0.03, 0.06), "density": 649.0,
+      "youngs_modulus": 1.8e10, "shear_modulus": 1.05e9, "bore": None,
+      "shear_coefficient": 1.0},
+     {"stations": "numbers", "diameters": "numbers", "density": "number",
+      "youngs_modulus": "number", "shear_modulus": "number", "bore": "numbers?",
+      "shear_coefficient": "number"}, {}),
     ("Beam", Beam,
      {"stations": (0.0, 0.3, 0.68), "mass_per_length": (0.5, 0.5),
       "bending_stiffness": (100.0, 100.0), "point_masses": (), "damping": 0.005,

@@ -17,6 +17,7 @@ from ball import (
     SineLaw,
     collide,
 )
+from ball.baseball import BASEBALL_PRESETS, nathan_law
 from ball.series import series_compression, series_force
 from ball.stiffening import StiffeningHysteresis
 
@@ -42,6 +43,7 @@ monotone_laws = st.one_of(
         st.floats(0.3, 1.0),
         st.floats(0.0, 20.0),
     ),
+    st.builds(nathan_law, st.floats(0.2, 1.0)),  # A. M. Nathan's baseball (ball.baseball)
 )
 mass = st.floats(1e-3, 1.0)
 speed = st.floats(-30.0, 30.0)
@@ -95,6 +97,23 @@ def _storable(law):
 
     r = law.x_lim
     return quad(lambda u: law.k * r * r * u / (1 - u), 0.0, 1 - 1e-9, limit=200)[0]
+
+
+@settings(max_examples=15, deadline=None)
+@given(
+    st.sampled_from(sorted(BASEBALL_PRESETS)),
+    st.one_of(st.just(None), st.tuples(mass, monotone_laws)),
+    st.floats(0.5, 70.0),
+)
+def test_baseballs_and_softballs_with_any_partner(name, partner, closing):
+    """The baseball and softball presets at batted-ball speeds, on the wall or any ball."""
+    a = BASEBALL_PRESETS[name].ball()
+    b = WALL if partner is None else Ball(*partner)
+    if b is not WALL:
+        mu = a.mass * b.mass / (a.mass + b.mass)
+        if 0.5 * mu * closing**2 > _storable(b.law):  # a stiffening partner squashed flat
+            return
+    check_invariants(collide(a, b, closing), a, b)
 
 
 @settings(max_examples=25, deadline=None)

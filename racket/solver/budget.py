@@ -18,7 +18,16 @@ N_COLUMNS = 14
 
 
 @njit(cache=True)
-def split(state, basis, stiffness, rigid, phi, x, y, frame, omega, ball, swing_qd, bed, out,
+def _dot(row, state):
+    """The row (2 nb) over the block states (nb, 2), summed in the blocks' order."""
+    total = 0.0
+    for k in range(state.shape[0]):
+        total += row[2 * k] * state[k, 0] + row[2 * k + 1] * state[k, 1]
+    return total
+
+
+@njit(cache=True)
+def split(state, basis, stiffness, rigid_rows, phi, x, y, frame, omega, ball, swing_qd, bed, out,
           modes):  # fmt: skip
     """Fill ``out`` (P, N_COLUMNS) and ``modes`` (P, n_bending) from the block states.
 
@@ -31,12 +40,14 @@ def split(state, basis, stiffness, rigid, phi, x, y, frame, omega, ball, swing_q
     ----------
     state : ndarray (P, nb, 2)
         Block states when the ball left; z = (q, q') = basis s.
-    basis : ndarray (2N, 2N)
+    basis : ndarray (2N, 2 nb)
         :attr:`racket.system.BlockSystem.basis`.
     stiffness : ndarray (N, N)
         W (+ the hand's K_h) in modal coordinates [1/s**2].
-    rigid : ndarray of int
-        The modal coordinates of the rigid-body motion: translation, rotation (and roll).
+    rigid_rows : ndarray (R, 2 nb)
+        Rows over the block states giving the velocities of the rigid-body coordinates'
+        dc motion: translation, rotation (and roll)
+        (:meth:`racket.system.BlockSystem.rigid_rows`).
     phi : ndarray (P, N)
         Mode shapes at the impact points [1/sqrt(kg)].
     x, y : ndarray (P,)
@@ -68,18 +79,18 @@ def split(state, basis, stiffness, rigid, phi, x, y, frame, omega, ball, swing_q
     for p in range(count):
         for r in range(2 * n):
             total = 0.0
-            for k in range(n):
+            for k in range(state.shape[1]):
                 total += basis[r, 2 * k] * state[p, k, 0] + basis[r, 2 * k + 1] * state[p, k, 1]
             z[r] = total
-        rigid0 = z[n + rigid[0]] if n else 0.0
-        rigid1 = z[n + rigid[1]] if n else 0.0
+        rigid0 = _dot(rigid_rows[0], state[p]) if n else 0.0
+        rigid1 = _dot(rigid_rows[1], state[p]) if n else 0.0
         v_cm = rigid0 / root_mass
         spin = rigid1 / root_inertia
         v2_dc = v_cm + (com - x[p]) * spin
         roll_rate = 0.0
         racket_energy = rigid0 * rigid0 + rigid1 * rigid1
         if root_roll > 0.0 and n:  # the roll: y times its angular velocity
-            rigid2 = z[n + rigid[2]]
+            rigid2 = _dot(rigid_rows[2], state[p])
             roll_rate = rigid2 / root_roll
             v2_dc = v2_dc + y[p] * roll_rate
             racket_energy += rigid2 * rigid2

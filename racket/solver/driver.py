@@ -41,6 +41,7 @@ from ball import Ball, SineLaw, warn_if_squashed
 from common.checks import finite, finite_array, in_range, shown
 from common.checks import speed as check_speed
 from common.typechecks import flag, instance
+from racket.bat import Bat
 from racket.racket import Racket
 from racket.solver import layout
 from racket.solver.dispatch import IMPACTS_PER_THREAD, LOCKSTEP_MIN, one_blas_thread, pool_size
@@ -54,7 +55,7 @@ from racket.solver.outcome import (  # noqa: F401  (as above)
 from racket.solver.stepper import Stepper as _Stepper
 from racket.solver.stepper import contact_time_scale
 from racket.solver.unhappy_search import SCAN_RATIO, unhappy_x_o  # noqa: F401  (as above)
-from racket.swing import ARM_REACH, check_swung_support
+from racket.swing import ARM_REACH
 
 DEFAULT_STEPS_PER_CONTACT = 300
 """Time steps per estimated contact time for the monotone ball laws.  With the static
@@ -104,8 +105,9 @@ def impact(
 
     Parameters
     ----------
-    racket : Racket
-        The racket, initially still unless ``swing_speed`` > 0.
+    racket : Racket or Bat
+        The racket (or bat: struck on its own surface, :class:`racket.Bat`), initially still
+        unless ``swing_speed`` > 0.
     ball : Ball
         The ball (any law of :mod:`ball`, the unhappy SineLaw included).
     position : float or array_like
@@ -167,7 +169,7 @@ def impact(
     >>> round(r.e, 3), round(r.e_A, 3)
     (0.887, 0.442)
     """
-    instance("racket", racket, Racket, "a racket.Racket")
+    instance("racket", racket, (Racket, Bat), "a racket.Racket or racket.Bat")
     instance("ball", ball, Ball, "a ball.Ball")
     if histories != "force":
         histories = flag("histories", histories)
@@ -187,13 +189,18 @@ def impact(
                 f"pivot must lie beyond the impact points and at most {PIVOT_BEYOND_BUTT:g} m "
                 f"beyond the butt, in ({x.max():g}, {reach:g}] m from the tip, got {shown(pivot)}"
             )
+    if isinstance(racket, Bat) and isinstance(ball.law, SineLaw):
+        raise ValueError(
+            "the unhappy (sine-law) ball is for rackets: its Xo search takes a string bed in "
+            "series; strike a bat with a monotone ball (e.g. ball.baseball)"
+        )
     if steps_per_contact is None:
         sine = isinstance(ball.law, SineLaw)
         steps_per_contact = SINE_STEPS_PER_CONTACT if sine else DEFAULT_STEPS_PER_CONTACT
     steps_per_contact = int(in_range("steps_per_contact", steps_per_contact, 50, 100_000))
     watch_after = in_range("watch_after", watch_after, 0.0, 1.0, "s")
     if np.any(swing):
-        check_swung_support(racket.support)
+        racket.check_swing(pivot)
     f1 = racket.beam.modes.frequencies[0] if racket.beam.modes.count > 2 else np.inf
     if f1 < F1_MIN:
         raise ValueError(
@@ -235,7 +242,7 @@ def impact(
             stacklevel=2,
         )
     warn_if_squashed(ball, squashed)
-    if isinstance(ball.law, SineLaw) and not racket.strings.plain:
+    if isinstance(ball.law, SineLaw) and not racket.contact.plain:
         warnings.warn(
             "the unhappy (sine-law) ball takes the string bed as a linear, lossless, massless "
             "spring: the bed's stiffening, loss and mass are left out",
@@ -278,7 +285,7 @@ def _time_step_batches(racket: Racket, ball: Ball, closing: np.ndarray) -> list:
         speeds, group = closing[:1], np.zeros(closing.size, dtype=int)
     else:
         speeds, group = np.unique(closing, return_inverse=True)
-    scales = np.array([contact_time_scale(ball, racket.strings.stiffness, c) for c in speeds])
+    scales = np.array([contact_time_scale(ball, racket.contact.stiffness, c) for c in speeds])
     if scales.max() > CONTACT_TIME_MAX:
         slow = speeds[np.argmax(scales)]
         raise ValueError(
@@ -286,7 +293,7 @@ def _time_step_batches(racket: Racket, ball: Ball, closing: np.ndarray) -> list:
             f"{1e3 * scales.max():.3g} ms, and racket-impact resolves contacts up to "
             f"{1e3 * CONTACT_TIME_MAX:g} ms (ball stiffness "
             f"{ball.law.secant_stiffness(ball.mass, slow):.3g} N/m, strings "
-            f"{racket.strings.stiffness:.3g} N/m)"
+            f"{racket.contact.stiffness:.3g} N/m)"
         )
     if speeds.size == 1:
         return [np.arange(closing.size)]

@@ -258,7 +258,7 @@ def outcome(stepper: Stepper, racket, ball, x, y, speed, x_o, outputs, histories
         out_state,
         system.basis,
         system.stiffness,
-        np.array(system.rigid, dtype=np.int64),
+        system.rigid_rows,
         stepper.phi,
         x,
         y if face else np.zeros(x.size),
@@ -310,7 +310,7 @@ def outcome(stepper: Stepper, racket, ball, x, y, speed, x_o, outputs, histories
     m_eff = np.full(x.size, np.inf)
     if n:
         # (with the string bed's moving mass, which moves with the point)
-        m_eff = racket.beam.effective_mass(x, y if stepper.face else None) + m_s
+        m_eff = racket.effective_mass(x, y if stepper.face else None) + m_s
     fields = dict(
         position=x,
         offset=y,

@@ -84,7 +84,7 @@ class Stepper:
         # contact on it), and from the closing speed, the same for all (see impact).
         swing_speed = np.broadcast_to(np.asarray(swing_speed, dtype=float), x.shape)
         self.closing = speed + swing_speed
-        self.dt = contact_time_scale(ball, racket.strings.stiffest, self.closing[0])
+        self.dt = contact_time_scale(ball, racket.contact.stiffest, self.closing[0])
         self.dt /= steps_per_contact
         self.steps_per_contact = steps_per_contact
         self.max_steps = 12 * steps_per_contact
@@ -105,7 +105,7 @@ class Stepper:
             z0[:, n : n + 2] = self.swing_qd
             state0 = system.state(z0)
         self.position = x
-        inv_ks = 1.0 / racket.strings.stiffness_at(x, 0.0 if y is None else y)
+        inv_ks = 1.0 / racket.contact.stiffness_at(x, 0.0 if y is None else y)
         series = inv_ks.copy()
         if n:  # static correction: the bending modes left out respond quasi-statically
             count = modes.count  # the shapes phi already holds, spared computing again
@@ -142,7 +142,7 @@ class Stepper:
             g1=np.array([dt * dt / 6.0, dt / 2.0]) / -ball.mass,
             law=law[0],
             params=np.array(law[1], dtype=float),
-            bed=bed_law(racket.strings, law[0]),
+            bed=bed_law(racket.contact, law[0]),
         )
 
     def run(self, x_o, subset=None, stop_on_snap=False, extra_steps=0, history_steps=0,

@@ -61,8 +61,8 @@ def _x_o_guess(racket: Racket, ball: Ball, x: np.ndarray, closing: float) -> np.
     in series with the strings (Eqs. 12-16 where the strings are softer than pi k0, the
     rigid wall's energy balance otherwise); only a starting point for the scan.
     """
-    k0, k_s = ball.law.k0, racket.strings.stiffness
-    m2 = racket.beam.effective_mass(x) if racket.support != "clamped-head" else np.inf
+    k0, k_s = ball.law.k0, racket.contact.stiffness
+    m2 = racket.effective_mass(x) if racket.support != "clamped-head" else np.inf
     mu = ball.mass * m2 / (ball.mass + m2) if racket.support != "clamped-head" else ball.mass
     if k_s < np.pi * k0:
         return closing / (np.sqrt(k_s / mu) * (1.0 / np.pi + k0 / k_s)) * np.ones(x.size)

@@ -1,7 +1,7 @@
 """The ``racket-impact`` command line.
 
 Subcommands: ``paper``, ``sweep``, ``serve``, ``stroke``, ``collide``, ``modes``, ``specs``,
-``compare``, ``strings`` and more (``racket-impact --help``).
+``compare``, ``strings``, ``bat`` and more (``racket-impact --help``).
 Rackets and balls are presets or TOML files (:mod:`studies.config`).  Tables go to CSV,
 JSON or Parquet by the file's extension, plots to PNG, SVG or PDF.  Bad input prints one
 line naming the problem and exits with status 2.
@@ -23,6 +23,7 @@ from common.version import __version__
 from studies.cli import (
     app,
     balls,
+    bat,
     compare,
     court,
     face,
@@ -36,6 +37,7 @@ from studies.cli import (
 )
 from studies.cli.app import cmd_app
 from studies.cli.balls import cmd_ball, cmd_collide, cmd_drop
+from studies.cli.bat import cmd_bat
 from studies.cli.compare import cmd_compare
 from studies.cli.court import cmd_court
 from studies.cli.face import cmd_map, cmd_sweetspots
@@ -58,6 +60,7 @@ __all__ = [
     "check_outputs",
     "cmd_app",
     "cmd_ball",
+    "cmd_bat",
     "cmd_collide",
     "cmd_compare",
     "cmd_court",
@@ -82,7 +85,7 @@ __all__ = [
 
 TABLE_COMMANDS = (
     "sweep", "map", "serve", "collide", "ball", "modes", "specs", "feel", "sweetspots", "compare",
-    "validate", "drop", "strings", "stroke", "court",
+    "validate", "drop", "strings", "stroke", "court", "bat",
 )  # fmt: skip
 """The commands that write tables (with sidecars): the only ones ``rerun`` replays."""
 
@@ -170,6 +173,7 @@ def build_parser(parser_class=_Parser) -> argparse.ArgumentParser:
         balls.add_drop, balls.add_ball, rackets.add_modes, rackets.add_specs, app.add_app,
         add_rerun, rackets.add_feel, face.add_sweetspots, compare.add_compare,
         validate.add_validate, strings.add_strings, stroke.add_stroke, court.add_court,
+        bat.add_bat,
     ):  # fmt: skip
         add(sub)
     return parser

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ball import BALL_PRESETS, WALL, collide
+from ball import BALL_PRESETS, BASEBALL_PRESETS, WALL, collide
 from ball.catalog import ITF_DROP
 from ball.collision import largest_closing_speed, too_fast_to_store
 from common.checks import CM_AS_M, SPEED_RANGE, in_range, shown
@@ -262,7 +262,8 @@ def cmd_ball(args) -> int:
     if unit != "m/s":  # mph or km/h in, mph or km/h out
         table.insert(1, f"speed_{SPEED_SUFFIXES[unit]}", table["speed_m_s"] / SPEED_UNITS[unit])
     _print_table(table.drop(columns="speed_m_s") if unit != "m/s" else table)
-    _print_static_test(static_test(ball, args.ball))
+    if args.ball not in BASEBALL_PRESETS:  # the ITF's static test is a tennis ball's
+        _print_static_test(static_test(ball, args.ball))
     if args.out:
         write_table(table, args.out)
     if args.plot:

@@ -1,0 +1,418 @@
+"""``racket-impact bat sweep|bbcor|feel`` (issue 37): the exit speed along a bat's barrel for a
+swing and a pitch (:func:`studies.bat.bat_sweep`), the certification numbers
+(:func:`studies.bat_certification.bbcor_test`) and the handle's motion after an impact
+(:func:`studies.bat_feel.bat_feel`); positions in cm from the knob, speeds answered in the
+unit typed.  One parser for the three: an option that does not apply to the question asked
+is refused in one line.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+from pathlib import Path
+
+from ball import DEFAULT_BASEBALL
+from common.checks import (
+    INCH_AS_CM,
+    M_AS_CM,
+    RPM_AS_RAD_S,
+    S_AS_MS,
+    SPEED_RANGE,
+    SPEED_SLIPS,
+    in_range,
+    shown,
+    slip_hints,
+    too_fast,
+)
+from common.units import MPH, SPEED_SUFFIXES, SPEED_UNITS
+from racket import DEFAULT_BAT, BatSwing
+from racket.bat import BAT_SUPPORTS
+from racket.bat_swing import ANGULAR_VELOCITY_RANGE, CM_SPEED_RANGE
+from racket.pivot import CLAMP_OFFSET, PIVOT_FROM_KNOB
+from studies.bat import (
+    ANGULAR_VELOCITY,
+    CM_SPEED,
+    FASTEST_PITCH,
+    PITCH_SPEED,
+    SWEEP_FROM_KNOB,
+    SWEET_ZONE_FRACTION,
+)
+from studies.bat_certification import BBCOR_TEST_SPEED
+from studies.bat_feel import FEEL_DURATION, FEEL_FROM_KNOB, HANDLE_POINTS
+from studies.cli.files import check_outputs, save_plot, say_conditions, write_table
+from studies.cli.options import (
+    _ball_arg,
+    _count,
+    _print_table,
+    _speed_option,
+    _typed,
+    refuse_unused,
+    speed_unit,
+)
+from studies.config import load_ball
+
+ACTIONS = ("sweep", "bbcor", "feel")
+"""The questions ``bat`` answers."""
+
+DEG_S_AS_RAD_S = (3.141592653589793 / 180.0, "deg/s typed as rad/s?", "deg/s")
+"""An angular velocity in degrees per second where rad/s are asked for."""
+
+MM_AS_CM = (0.1, "mm typed as cm?", "mm")
+"""A length in mm where cm are asked for."""
+
+NEAREST_KNOB_CM = 1.0
+"""A point typed closer to the knob than this [cm] is refused as a length in m typed as cm
+(**an assumption**: no ball is hit, nor a handle read, within 1 cm of the knob's end)."""
+
+_ONLY = {
+    "sweep": ("at", "handle", "duration_ms"),
+    "bbcor": ("support", "omega", "cm_speed", "cm_speed_mph", "cm_speed_kmh", "from_", "to",
+              "points", "at", "handle", "duration_ms"),
+    "feel": ("from_", "to", "points"),
+}  # fmt: skip
+"""The options (their ``dest``) each question refuses: they belong to the others."""
+
+
+def add_bat(sub) -> None:
+    """The ``bat`` subcommand, on the subparsers ``sub``."""
+    p = sub.add_parser("bat", help="baseball bats: exit speed along the barrel, BBCOR and the "
+                       "certification numbers, the handle's vibration")  # fmt: skip
+    p.add_argument("action", nargs="?", choices=ACTIONS, default="sweep",
+                   help="sweep: exit speed along the barrel, its peak and sweet zone (the "
+                   "default); bbcor: BBCOR, collision efficiency, BESR and BPF at the location "
+                   "of maximum BBCOR, the bat pivoted as in the test; feel: the handle's motion "
+                   "after one impact")  # fmt: skip
+    p.add_argument("--bat", nargs="+", default=[DEFAULT_BAT], metavar="NAME_OR_TOML",
+                   help=f"bat(s): preset (r161: Nathan's wooden R161, alloy: a hollow alloy "
+                   f"what-if) or TOML file with a [bat] table (default {DEFAULT_BAT}); several "
+                   "side by side (sweep, bbcor), e.g. --bat r161 alloy")  # fmt: skip
+    _ball_arg(p, default=DEFAULT_BASEBALL)
+    p.add_argument("--support", choices=BAT_SUPPORTS,
+                   help="how the bat is held (default: the bat's, free for a preset: Nathan's "
+                   "bat, whose grip does not matter during the contact)")  # fmt: skip
+    _speed_option(p, "pitch", None, f"ball speed towards the bat (default {PITCH_SPEED:g} m/s, "
+                  f"Nathan's; bbcor: the test's {BBCOR_TEST_SPEED / MPH:g} mph, an "
+                  "assumption)")  # fmt: skip
+    _speed_option(p, "cm-speed", None, f"speed of the bat's centre of mass towards the ball "
+                  f"(default {CM_SPEED:g} m/s, Nathan's)")  # fmt: skip
+    p.add_argument("--omega", type=float, metavar="RAD_S",
+                   help=f"the bat's angular velocity [rad/s] (default {ANGULAR_VELOCITY:g}, "
+                   "Nathan's); 0: the bat at rest")  # fmt: skip
+    p.add_argument("--pivot-from-knob", type=float, metavar="CM",
+                   help="the point the bat turns about [cm from the knob], instead of "
+                   f"--cm-speed; a pivoted bat's pivot (default the rig's "
+                   f"{100 * PIVOT_FROM_KNOB:g}, 6 in)")  # fmt: skip
+    p.add_argument("--clamps", type=float, metavar="CM",
+                   help=f"a pivoted bat's clamps either side of its pivot [cm] (default "
+                   f"{100 * CLAMP_OFFSET:g}, 1 in; 0: a single pivot point)")  # fmt: skip
+    p.add_argument("--from", dest="from_", type=float, metavar="CM",
+                   help=f"sweep: first impact point [cm from the knob] (default "
+                   f"{100 * SWEEP_FROM_KNOB:g})")  # fmt: skip
+    p.add_argument(
+        "--to",
+        type=float,
+        metavar="CM",
+        help="sweep: last impact point [cm from the knob] (default the barrel's end)",
+    )
+    p.add_argument(
+        "--points", type=int, metavar="N", help="sweep: impact points (default one every cm)"
+    )
+    p.add_argument("--at", type=float, metavar="CM",
+                   help=f"feel: the impact point [cm from the knob] (default "
+                   f"{100 * FEEL_FROM_KNOB:g}, Nathan's)")  # fmt: skip
+    p.add_argument("--handle", type=float, nargs="+", metavar="CM",
+                   help="feel: where the handle is read [cm from the knob] (default "
+                   f"{' '.join(f'{100 * z:g}' for z in HANDLE_POINTS)}, Nathan's)")  # fmt: skip
+    p.add_argument("--duration-ms", type=float, metavar="MS",
+                   help=f"feel: how long to follow the bat [ms] (default "
+                   f"{1e3 * FEEL_DURATION:g})")  # fmt: skip
+    p.add_argument("--out", metavar="FILE", help="table file: .csv, .json or .parquet")
+    p.add_argument("--plot", metavar="FILE", help="plot (.png, .svg, .pdf)")
+    p.set_defaults(func=cmd_bat)
+
+
+def cmd_bat(args) -> int:
+    """``racket-impact bat``."""
+    check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
+    for dest in _ONLY[args.action]:  # (``given`` would say --from as "--from-")
+        if getattr(args, f"_seen_{dest}", False):
+            flag = "--" + dest.rstrip("_").replace("_", "-")
+            raise ValueError(f"{flag} does not apply to bat {args.action}")
+    if len(args.bat) > 1 and args.action == "feel":
+        raise ValueError("bat feel follows one bat: give one --bat")
+    for name in args.bat:
+        if args.bat.count(name) > 1:
+            raise ValueError(f"--bat {name!r} is given twice; give it once")
+    return {"sweep": _sweep, "bbcor": _bbcor, "feel": _feel}[args.action](args)
+
+
+def _bats(args, support: str | None = None) -> list:
+    """(label, Bat) of each ``--bat``, held by ``support`` or ``--support``, a pivoted one
+    with ``--pivot-from-knob`` and ``--clamps``.
+    """
+    from studies.bat_config import load_bat
+
+    support = support or args.support
+    bats = []
+    for spec in args.bat:
+        bat = load_bat(spec, support)
+        if bat.support == "pivoted":
+            pivot = _pivot(args)
+            clamps = _clamps(args)
+            bat = replace(bat, **({} if pivot is None else {"pivot_from_knob": pivot}),
+                          **({} if clamps is None else {"clamp_offset": clamps}))  # fmt: skip
+        elif args.clamps is not None:
+            raise ValueError(f"--clamps does not apply to a {bat.support} bat: give --support "
+                             "pivoted")  # fmt: skip
+        label = Path(spec).stem if spec.endswith(".toml") else spec
+        bats.append((label, bat))
+    return bats
+
+
+def _pivot(args) -> float | None:
+    """``--pivot-from-knob`` [cm] checked (the rig's range, :class:`racket.Bat`), in m."""
+    if args.pivot_from_knob is None:
+        return None
+    return in_range("--pivot-from-knob", args.pivot_from_knob, 2.0, 50.0, "cm from the knob",
+                    slips=(M_AS_CM, INCH_AS_CM)) / 100  # fmt: skip
+
+
+def _clamps(args) -> float | None:
+    """``--clamps`` [cm] checked (:class:`racket.Bat`'s range), in m."""
+    if args.clamps is None:
+        return None
+    return in_range("--clamps", args.clamps, 0.0, 5.0, "cm", slips=(MM_AS_CM,)) / 100
+
+
+def _pitch(args, default: float, fastest: bool = True) -> float:
+    """``--pitch[-mph|-kmh]`` [its unit] in m/s (``default`` [m/s] without one), in the
+    speed range; one faster than the fastest pitch on record asked about (``fastest``).
+    """
+    flag, value, unit, size = _typed(args, "pitch")
+    if value is None:
+        return default
+    value = in_range(flag, value, SPEED_RANGE[0] / size, SPEED_RANGE[1] / size, unit,
+                     slips=SPEED_SLIPS[unit])  # fmt: skip
+    if fastest:
+
+        def instead(typed: str) -> str:
+            return f" (--pitch-{SPEED_SUFFIXES[typed]} {shown(value)})"
+
+        too_fast(flag, value, unit, FASTEST_PITCH, "the fastest pitch on record", instead)
+    return value * size
+
+
+def _swing(args, bat) -> BatSwing | None:
+    """The swing of ``--omega``, ``--cm-speed[-mph|-kmh]`` and ``--pivot-from-knob``, each
+    checked as typed, for ``bat``: None for a bat at rest (``--omega 0``, or a hand-held bat,
+    whose hands are at rest in this model); a pivoted bat turns about its pivot.
+    """
+    speeds = ("cm_speed", "cm_speed_mph", "cm_speed_kmh")
+    if bat.support == "hand-held":
+        refuse_unused(
+            args,
+            ("omega", *speeds, "pivot_from_knob"),
+            "to a hand-held bat: the "
+            "hands are at rest in this model (swing a free bat, as Nathan does)",
+        )
+        return None
+    omega = ANGULAR_VELOCITY
+    if args.omega is not None:
+        omega = in_range("--omega", args.omega, *ANGULAR_VELOCITY_RANGE, "rad/s",
+                         slips=(RPM_AS_RAD_S, DEG_S_AS_RAD_S))  # fmt: skip
+    if bat.support == "pivoted":
+        refuse_unused(args, speeds, "to a pivoted bat: it turns about its pivot "
+                      "(--pivot-from-knob)")  # fmt: skip
+    elif args.pivot_from_knob is not None:
+        refuse_unused(args, speeds, "with --pivot-from-knob: give the point the bat turns "
+                      "about or its centre of mass's speed, not both")  # fmt: skip
+    if omega == 0.0:
+        refuse_unused(args, speeds, "with --omega 0: the bat at rest does not move")
+        return None
+    if bat.support == "pivoted" or args.pivot_from_knob is not None:
+        return BatSwing(omega, pivot_from_knob=bat.pivot_from_knob if bat.support == "pivoted"
+                        else _pivot(args))  # fmt: skip
+    flag, value, unit, size = _typed(args, "cm_speed")
+    cm = CM_SPEED
+    if value is not None:
+        cm = in_range(flag, value, CM_SPEED_RANGE[0] / size, CM_SPEED_RANGE[1] / size, unit,
+                      slips=SPEED_SLIPS[unit]) * size  # fmt: skip
+    return BatSwing(omega, cm_speed=cm)
+
+
+def _from_knob(flag: str, value: float, length: float) -> float:
+    """A point typed [cm from the knob] on a bat ``length`` [m] long, in m from the knob; one
+    within :data:`NEAREST_KNOB_CM` of the knob refused as a length in m typed as cm.
+    """
+    value = in_range(flag, value, 0.0, 100 * length, "cm from the knob",
+                     slips=(M_AS_CM, INCH_AS_CM))  # fmt: skip
+    if 0.0 < value < NEAREST_KNOB_CM:
+        slipped = slip_hints(value, 0.0, 100 * length, "cm", (M_AS_CM,))
+        raise ValueError(f"{flag} {shown(value)} cm is on the knob: {slipped}")
+    return value / 100
+
+
+def _beyond(flag: str, z: float, bat, swing) -> None:
+    """A point ``z`` [m from the knob] the bat can be hit at: beyond the swing's centre, short
+    of a pivoted bat's clamps or of the hands (ValueError in the option's words).
+    """
+    length = bat.beam.length
+    if swing is not None:
+        centre = length - swing.pivot(bat)
+        if z <= centre:
+            raise ValueError(f"{flag} {100 * z:g} cm is not beyond the point the bat turns "
+                             f"about, {100 * centre:.3g} cm from the knob: hit it towards the "
+                             "barrel")  # fmt: skip
+    try:
+        bat.check_points(length - z)
+    except ValueError:
+        near = {"pivoted": bat.pivot_from_knob + bat.clamp_offset,
+                "hand-held": bat.hand.grip_length}.get(bat.support, 0.0)  # fmt: skip
+        raise ValueError(f"{flag} {100 * z:g} cm must lie beyond the {bat.support} bat's "
+                         f"{'clamps' if bat.support == 'pivoted' else 'hands'}, "
+                         f"{100 * near:.3g} cm from the knob") from None  # fmt: skip
+
+
+def _say(line: str) -> None:
+    """Print ``line`` wrapped at the printed tables' width (a leading blank line kept)."""
+    import textwrap
+
+    from studies.cli.show import WIDTH
+
+    lead = "\n" if line.startswith("\n") else ""
+    print(lead + textwrap.fill(line.strip("\n"), WIDTH, subsequent_indent="  "))
+
+
+def _sweep(args) -> int:
+    import numpy as np
+    import pandas as pd
+
+    from studies.bat import bat_sweep
+
+    unit = speed_unit(args, "pitch", "cm_speed")
+    pitch = _pitch(args, PITCH_SPEED)
+    bats, ball = _bats(args), load_ball(args.ball)
+    plans = []
+    for label, bat in bats:
+        length = bat.beam.length
+        start = SWEEP_FROM_KNOB if args.from_ is None else _from_knob("--from", args.from_,
+                                                                       length)  # fmt: skip
+        end = length if args.to is None else _from_knob("--to", args.to, length)
+        if end <= start:
+            raise ValueError(f"--to ({100 * end:g} cm) must lie beyond --from ({100 * start:g} "
+                             "cm from the knob)")  # fmt: skip
+        count = round((end - start) / 0.01) + 1
+        count = count if args.points is None else _count("--points", args.points, 3, 10_000)
+        z = np.linspace(start, end, max(count, 3))
+        swing = _swing(args, bat)
+        for flag, where in (("--from", z[0]), ("--to", z[-1])):
+            _beyond(flag, where, bat, swing)
+        plans.append((label, bat, swing, z))
+    sweeps = [bat_sweep(bat, ball, pitch, swing, z, unit, label, args.ball)
+              for label, bat, swing, z in plans]  # fmt: skip
+    conditions = say_conditions("; ".join(s.conditions for s in sweeps))
+    suffix = SPEED_SUFFIXES[unit]
+    view = {"bat": "bat", "position_from_knob_cm": "from the knob [cm]",
+            "position_from_tip_cm": "from the tip [cm]", f"bat_speed_{suffix}":
+            f"bat speed [{unit}]", f"exit_speed_{suffix}": f"exit speed [{unit}]", "e": "e [-]",
+            "e_A": "e_A [-]", "contact_time_ms": "contact [ms]",
+            "vibration_share": "vibration share [-]"}  # fmt: skip
+    table = pd.concat([s.table for s in sweeps], ignore_index=True)
+    shown_view = table if len(bats) > 1 else table.drop(columns="bat")
+    _print_table(shown_view[[c for c in view if c in shown_view]].rename(columns=view))
+    for sweep in sweeps:
+        low, high = sweep.sweet_zone
+        _say(f"\n{sweep.table['bat'].iloc[0]}: peak exit speed "
+              f"{sweep.peak_exit_speed / SPEED_UNITS[unit]:.4g} {unit} at "
+              f"{100 * sweep.peak_from_knob:.1f} cm from the knob; sweet zone (within "
+              f"{100 * SWEET_ZONE_FRACTION:g} % of it) {100 * low:.1f}-{100 * high:.1f} cm from "
+              "the knob")  # fmt: skip
+    if args.out:
+        write_table(table, args.out)
+    if args.plot:
+        from studies.plots.bat import plot_exit_speed
+
+        save_plot(plot_exit_speed(sweeps, unit=unit, conditions=conditions), args.plot)
+    return 0
+
+
+def _bbcor(args) -> int:
+    import pandas as pd
+
+    from studies.bat_certification import bbcor_test
+
+    unit = speed_unit(args, "pitch")
+    speed = _pitch(args, BBCOR_TEST_SPEED, fastest=False)
+    bats, ball = _bats(args, "pivoted"), load_ball(args.ball)
+    tests = [bbcor_test(bat, ball, speed, unit, label, args.ball) for label, bat in bats]
+    conditions = say_conditions("; ".join(t.conditions for t in tests))
+    table = pd.concat([t.table for t in tests], ignore_index=True)
+    view = {"bat": "bat", "method": "set-up", "position_from_knob_cm": "from the knob [cm]",
+            "bbcor": "BBCOR [-]", "ball_e_A": "ball v_out/v_in [-]",
+            "mass_ratio": "mass ratio [-]", "collision_efficiency": "collision efficiency [-]",
+            "besr": "BESR [-]", "bpf": "BPF [-]", "passes": "passes"}  # fmt: skip
+    shown_view = table if len(bats) > 1 else table.drop(columns="bat")
+    _print_table(shown_view[[c for c in view if c in shown_view]].rename(columns=view))
+    for test in tests:
+        verdict = "passes" if test.passes else "fails"
+        _say(f"\n{test.along['bat'].iloc[0]}: BBCOR {test.bbcor:.4f} at "
+              f"{100 * test.from_knob:.1f} cm from the knob {verdict} the limit "
+              f"{test.table['limit'].iloc[0]:.3f} (ball's own COR "
+              f"{test.ball_cor:.4f})")  # fmt: skip
+    if args.out:
+        write_table(table, args.out)
+    if args.plot:
+        from studies.plots.bat import plot_bbcor
+
+        save_plot(plot_bbcor(tests, conditions=conditions), args.plot)
+    return 0
+
+
+def _feel(args) -> int:
+    import numpy as np
+
+    from common.units import GRAVITY
+    from studies.bat_feel import DURATION_RANGE, bat_feel
+
+    unit = speed_unit(args, "pitch", "cm_speed")
+    speed = _pitch(args, PITCH_SPEED)
+    (label, bat), ball = _bats(args)[0], load_ball(args.ball)
+    length = bat.beam.length
+    swing = _swing(args, bat)
+    at = FEEL_FROM_KNOB if args.at is None else _from_knob("--at", args.at, length)
+    _beyond("--at", at, bat, swing)
+    handle = HANDLE_POINTS if args.handle is None else [
+        _from_knob("--handle", value, length) for value in args.handle]  # fmt: skip
+    duration = FEEL_DURATION
+    if args.duration_ms is not None:
+        duration = in_range("--duration-ms", args.duration_ms, *(1e3 * np.array(DURATION_RANGE)),
+                            "ms", slips=(S_AS_MS,)) / 1e3  # fmt: skip
+    feel = bat_feel(bat, ball, at, speed, swing, handle, duration, unit, label, args.ball)
+    conditions = say_conditions(feel.conditions)
+    _say(f"impact {100 * feel.from_knob:.1f} cm from the knob: exit speed "
+          f"{feel.exit_speed / SPEED_UNITS[unit]:.4g} {unit}, contact "
+          f"{1e3 * feel.contact_time:.3g} ms, vibration energy "
+          f"{feel.vibration_energy:.3g} J when the ball left")  # fmt: skip
+    import pandas as pd
+
+    rows = pd.DataFrame({
+        "handle point [cm from the knob]": 100 * feel.points_from_knob,
+        "largest displacement [mm]": 1e3 * np.abs(feel.displacement).max(axis=1),
+        "of it vibration [mm]": 1e3 * np.abs(feel.vibration_displacement).max(axis=1),
+        "largest velocity [m/s]": np.abs(feel.velocity).max(axis=1),
+        "vibration acceleration [g]": np.abs(feel.vibration_acceleration).max(axis=1) / GRAVITY,
+    })  # fmt: skip
+    print()
+    _print_table(rows)
+    print(f"\nenergy in each bending mode after {1e3 * feel.t[-1]:.3g} ms (free-free modes):")
+    modes = feel.modes[["mode", "frequency_Hz", "nodes_from_knob_cm", "energy_J", "share"]]
+    _print_table(modes.rename(columns={"frequency_Hz": "frequency [Hz]", "nodes_from_knob_cm":
+                                       "nodes [cm from the knob]", "energy_J": "energy [J]",
+                                       "share": "share [-]", "mode": "mode"}).head(8))  # fmt: skip
+    if args.out:
+        write_table(feel.table, args.out)
+    if args.plot:
+        from studies.plots.bat import plot_handle
+
+        save_plot(plot_handle(feel, conditions=conditions), args.plot)
+    return 0

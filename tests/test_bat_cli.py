@@ -1,0 +1,203 @@
+"""``racket-impact bat sweep|bbcor|feel`` (issue 37): the default run's header names the bat,
+the ball, the pitch and the swing, its lines fit 100 columns, its table and sidecar are written
+together and give the same numbers as :func:`studies.bat.bat_sweep` (one truth, the same
+defaults); the unit typed is the unit answered; the certification and the handle's motion;
+every bad input refused in one line naming the option, status 2, nothing written; an option
+that belongs to another question refused; a bat of one's own from TOML.  Each run is in this
+process (the R161's modes are built once)."""
+
+import contextlib
+import io
+import json
+
+import pandas as pd
+import pytest
+
+from ball import BASEBALL_PRESETS, DEFAULT_BASEBALL
+from common.units import MPH
+from racket import DEFAULT_BAT
+from studies.bat import DEFAULT_SWING, PITCH_SPEED, _preset, bat_sweep
+from studies.cli import build_parser, main
+from studies.cli.show import WIDTH
+
+
+def _main(argv) -> tuple[int, str, str]:
+    """``main(argv)``'s status, stdout and stderr (the parser's own exits as their status)."""
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        try:
+            status = main(list(argv))
+        except SystemExit as done:
+            status = done.code
+    return status, out.getvalue(), err.getvalue()
+
+
+@pytest.fixture(scope="module")
+def default(tmp_path_factory):
+    """``racket-impact bat --out t.json --plot p.png``: Nathan's high-speed case."""
+    folder = tmp_path_factory.mktemp("bat")
+    table, plot = folder / "t.json", folder / "p.png"
+    status, out, err = _main(["bat", "--out", str(table), "--plot", str(plot)])
+    assert status == 0, err
+    return {"out": out, "err": err, "table": table, "plot": plot}
+
+
+def test_the_command_defaults_to_the_one_bat_ball_pitch_and_swing():
+    args = build_parser().parse_args(["bat"])
+    assert args.action == "sweep" and args.bat == [DEFAULT_BAT] and args.ball == DEFAULT_BASEBALL
+    assert args.pitch is None and args.omega is None  # the studies' own defaults, said in help
+    with pytest.raises(SystemExit):  # the help quotes the same constants
+        with contextlib.redirect_stdout(io.StringIO()) as said:
+            main(["bat", "--help"])
+    text = " ".join(said.getvalue().split())
+    for default in (f"default {PITCH_SPEED:g} m/s", f"default {DEFAULT_SWING.cm_speed:g} m/s",
+                    f"default {DEFAULT_SWING.angular_velocity:g}"):  # fmt: skip
+        assert default in text
+
+
+def test_the_default_run_says_its_conditions_and_fits_the_width(default):
+    out = default["out"]
+    header = " ".join(line.strip() for line in out.splitlines()[:2])
+    assert header.startswith(f"bat {DEFAULT_BAT} (R161 (wood)")
+    assert f"ball {DEFAULT_BASEBALL} at 40 m/s" in header and "24 m/s" in header
+    assert "51 rad/s" in header
+    assert not [line for line in out.splitlines() if len(line) > WIDTH]
+    assert "peak exit speed" in out and "sweet zone" in out and default["err"] == ""
+    assert default["plot"].stat().st_size > 0
+
+
+def test_the_table_and_its_sidecar_are_the_studys_numbers(default):
+    rows = pd.DataFrame(json.loads(default["table"].read_text()))
+    api = bat_sweep(_preset(DEFAULT_BAT), BASEBALL_PRESETS[DEFAULT_BASEBALL].ball())
+    assert len(rows) == len(api.table) == 45
+    assert rows["exit_speed_m_s"].to_numpy() == pytest.approx(
+        api.table["exit_speed_m_s"].to_numpy(), rel=1e-9
+    )
+    total = rows["position_from_knob_cm"] + rows["position_from_tip_cm"]
+    assert total.to_numpy() == pytest.approx(84.0)
+    sidecar = json.loads(default["table"].with_name("t.json.meta.json").read_text())
+    assert sidecar["command"][0] == "bat"
+    said = " ".join(default["out"].split("\n  "))
+    assert sidecar["conditions"] in said
+
+
+def test_the_unit_typed_is_the_unit_answered(tmp_path):
+    table = tmp_path / "mph.csv"
+    status, out, err = _main(["bat", "--pitch-mph", "90", "--cm-speed-mph", "54", "--points",
+                              "5", "--out", str(table)])  # fmt: skip
+    assert status == 0, err
+    assert "90 mph" in out and "54 mph" in out and "[mph]" in out and "[m/s]" not in out
+    rows = pd.read_csv(table)
+    assert rows["exit_speed_mph"].to_numpy() == pytest.approx(rows["exit_speed_m_s"] / MPH)
+    status, out, _ = _main(["bat", "--pitch-kmh", "145", "--points", "3"])
+    assert status == 0 and "145 km/h" in out and "[km/h]" in out
+
+
+def test_bbcor_prints_and_writes_the_certification_numbers(tmp_path):
+    table = tmp_path / "c.csv"
+    status, out, err = _main(["bat", "bbcor", "--pitch-mph", "136", "--out", str(table)])
+    assert status == 0, err
+    rows = pd.read_csv(table)
+    assert list(rows["method"]) == ["pivoted rig", "free bat"]
+    for column in ("bbcor", "collision_efficiency", "besr", "bpf", "passes", "test_speed_mph"):
+        assert column in rows
+    assert rows["test_speed_mph"].iloc[0] == pytest.approx(136.0)
+    assert "BBCOR" in out and "136 mph" in out and "the limit 0.500" in out
+
+
+def test_feel_writes_the_handles_motion_at_the_points_asked(tmp_path):
+    table = tmp_path / "f.csv"
+    status, out, err = _main(["bat", "feel", "--handle", "6", "13", "--duration-ms", "3",
+                              "--out", str(table)])  # fmt: skip
+    assert status == 0, err
+    rows = pd.read_csv(table)
+    assert sorted(set(rows["point_from_knob_cm"])) == [6.0, 13.0]
+    assert rows["t_s"].max() == pytest.approx(3e-3, rel=0.01)
+    assert "energy in each bending mode" in out and "impact 68.0 cm from the knob" in out
+
+
+def test_nathans_pivoted_case_runs_from_the_command_line():
+    status, out, err = _main(["bat", "--support", "pivoted", "--pivot-from-knob", "15",
+                              "--clamps", "0", "--omega", "56", "--from", "50", "--points",
+                              "3"])  # fmt: skip
+    assert status == 0, err
+    assert "pivoted 15 cm from the knob, a single pivot point" in out
+    assert "turning at 56 rad/s about 15 cm from the knob" in out
+
+
+@pytest.mark.parametrize(
+    ("words", "says"),
+    [
+        (["--pitch", "400"], "--pitch must be in [0.001, 300] m/s, got 400 (mph typed as m/s?"),
+        (["--omega", "487"], "rpm typed as rad/s? 487 rpm would be 51 rad/s"),
+        (["--from", "0.5"], "--from 0.5 cm is on the knob: m typed as cm? 0.5 m would be 50 cm"),
+        (["--to", "95"], "--to must be in [0, 84] cm from the knob, got 95"),
+        (["--from", "5"], "--from 5 cm is not beyond the point the bat turns about"),
+        (["--pivot-from-knob", "0.15"], "m typed as cm? 0.15 m would be 15 cm"),
+        (["--support", "pivoted", "--clamps", "25.4"], "mm typed as cm? 25.4 mm would be 2.54"),
+        (["--clamps", "1"], "--clamps does not apply to a free bat"),
+        (["--support", "pivoted", "--cm-speed", "20"], "--cm-speed does not apply to a pivoted"),
+        (["--support", "hand-held", "--omega", "50"], "--omega does not apply to a hand-held"),
+        (["--omega", "0", "--cm-speed", "3"], "--cm-speed does not apply with --omega 0"),
+        (["--at", "60"], "--at does not apply to bat sweep"),
+        (["bbcor", "--omega", "40"], "--omega does not apply to bat bbcor"),
+        (["feel", "--from", "50"], "--from does not apply to bat feel"),
+        (["feel", "--bat", "r161", "alloy"], "bat feel follows one bat: give one --bat"),
+        (["feel", "--at", "0.68"], "--at 0.68 cm is on the knob: m typed as cm?"),
+        (["feel", "--duration-ms", "0.5"], "seconds typed as ms? 0.5 s would be 500 ms"),
+        (["--bat", "nope"], "unknown bat 'nope'; presets: r161, alloy"),
+        (["--bat", "r161", "r161"], "--bat 'r161' is given twice"),
+        (["--ball", "nope"], "unknown ball preset 'nope'"),
+    ],
+)
+def test_a_bad_input_is_refused_in_one_line_and_nothing_is_written(words, says, tmp_path,
+                                                                   monkeypatch):  # fmt: skip
+    monkeypatch.chdir(tmp_path)
+    words = words if words[0] in ("bbcor", "feel") else ["sweep", *words]
+    status, out, err = _main(["bat", *words, "--out", "t.csv", "--plot", "p.png"])
+    assert status == 2 and out == "", err
+    assert err.strip().splitlines() == [err.strip()] and says in err, err
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_an_option_twice_is_refused_by_the_parser():
+    status, _, err = _main(["bat", "--omega", "50", "--omega", "51"])
+    assert status == 2 and "--omega given twice" in err
+
+
+BAT_TOML = """[bat]
+name = "my ash bat"
+profile = [[0.0, 0.0505], [0.02, 0.0505], [0.03, 0.035], [0.12, 0.026], [0.45, 0.036],
+           [0.60, 0.057], [0.70, 0.063], [0.84, 0.0643]]
+density = 649.0
+youngs_modulus = 1.814e10
+shear_modulus = 1.05e9
+"""
+
+
+def test_a_bat_of_ones_own_from_toml_beside_a_preset(tmp_path):
+    path = tmp_path / "ash.toml"
+    path.write_text(BAT_TOML)
+    table = tmp_path / "two.csv"
+    status, out, err = _main(["bat", "--bat", str(path), "r161", "--points", "3", "--out",
+                              str(table)])  # fmt: skip
+    assert status == 0, err
+    assert "bat ash (my ash bat" in out and "bat r161 (R161 (wood)" in out
+    assert sorted(set(pd.read_csv(table)["bat"])) == ["ash", "r161"]
+
+
+def test_a_bad_toml_bat_is_refused_with_its_unit_slip(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "mm.toml").write_text(BAT_TOML.replace("0.0643", "64.3"))
+    status, _, err = _main(["bat", "--bat", "mm.toml", "--out", "t.csv"])
+    assert status == 2 and "mm typed as m? 64.3 mm would be 0.0643 m" in err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["mm.toml"]
+
+
+def test_rerun_makes_the_same_table(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    assert _main(["bat", "--points", "3", "--out", "t.csv"])[0] == 0
+    first = (tmp_path / "t.csv").read_bytes()
+    (tmp_path / "t.csv").unlink()
+    assert _main(["rerun", "t.csv.meta.json"])[0] == 0
+    assert (tmp_path / "t.csv").read_bytes() == first
