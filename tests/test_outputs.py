@@ -601,7 +601,8 @@ EDITS = {
     "command of numbers": (_with("command", ["ball", 10]), "command must be a list of strings"),
     "empty command": (_with("command", []), "command must be a non-empty list"),
     "inputs a list": (_with("inputs", []), "inputs must be a JSON object"),
-    "unknown input": (_with("inputs", {"bat": []}), "inputs.bat must be one of"),
+    # (an input no command names; "bat" was the example until the bat command, issue 37)
+    "unknown input": (_with("inputs", {"club": []}), "inputs.club must be one of"),
     "entries not a list": (_with("inputs", {"ball": "tennis"}), "inputs.ball must be a list"),
     "entry not an object": (_with_ball(3), "inputs.ball[0] must be a JSON object"),
     "toml not text": (
