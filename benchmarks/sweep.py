@@ -202,15 +202,14 @@ def _bat_ratio(runs: int = 15) -> float:
     interleaved warm calls.  The target, 3, is the issue's "same time class": the bat keeps
     18 modes (the racket 12) and its ball leaves in about 1 ms.
     """
-    from ball import Ball, PowerLawHysteresis
+    from ball import baseball
     from racket import BATS, default_ball
 
     bat, racket = BATS["r161"](), CATALOG["pure-drive-2021"].racket()
-    baseball = Ball(0.145, PowerLawHysteresis.with_cor(6.53e7, 1.84, 0.5), 0.0366)
     x_bat = np.linspace(0.0, bat.beam.length - 0.40, POINTS)
     x_racket = np.linspace(*racket.strings.extent, POINTS + 2)[1:-1]
     calls = {
-        "bat": lambda: impact(bat, baseball, x_bat, 40.0),
+        "bat": lambda: impact(bat, baseball(), x_bat, 40.0),
         "racket": lambda: impact(racket, default_ball(), x_racket, 16.5),
     }
     return _interleaved_ratio(calls, runs)

@@ -360,7 +360,9 @@ def suspect(
         warnings.warn(said, stacklevel=3)
 
 
-def too_fast(name: str, value, unit: str, fastest: float, what: str, instead=None) -> None:
+def too_fast(
+    name: str, value, unit: str, fastest: float, what: str, instead=None, kind: str = "stroke"
+) -> None:
     """Warn (``UserWarning``, :func:`suspect`) when the speed ``value`` [``unit``], of either
     sign, is faster than ``fastest`` [m/s], naming the slips of unit that would explain it
     (:data:`SPEED_SLIPS`): "--speed-mph 180 mph is faster than any recorded stroke (the
@@ -381,9 +383,11 @@ def too_fast(name: str, value, unit: str, fastest: float, what: str, instead=Non
     instead : callable, optional
         Given the unit a fitting slip's value was likely typed in, the text that follows
         that slip, e.g. the option to use (:func:`slip_hints`).
+    kind : str, optional
+        What the speed is of, as the message says it: "stroke" (default), "pitch".
     """
     limit = fastest / SPEED_UNITS[unit]
-    why = f"faster than any recorded stroke ({what}, about {limit:.3g} {unit})"
+    why = f"faster than any recorded {kind} ({what}, about {limit:.3g} {unit})"
     suspect(name, value, (-limit, limit), unit, SPEED_SLIPS[unit], why, instead, always=True)
 
 

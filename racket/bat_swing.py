@@ -10,11 +10,21 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from common.checks import finite, in_range, shown
+from common.checks import in_range, shown
+from racket.swing import ARM_REACH
 
 ANGULAR_VELOCITY_RANGE = (0.0, 200.0)
-"""A bat's angular velocity [rad/s] racket-impact accepts: **an assumption**, generous
-around a swing's (N2000: 51 and 56 rad/s; a fast swing turns at 40-60)."""
+"""A bat's angular velocity [rad/s] racket-impact accepts (> 0 for a :class:`BatSwing`: a
+bat at rest has no swing): **an assumption**, generous around a swing's (N2000: 51 and
+56 rad/s; a fast swing turns at 40-60)."""
+
+CENTRE_BEYOND_KNOB = ARM_REACH
+"""Farthest [m] beyond the knob the point a bat turns about may lie: the solver's reach for a
+swing's centre (:data:`racket.swing.ARM_REACH`)."""
+
+CENTRE_RANGE = (-CENTRE_BEYOND_KNOB, 1.2)
+"""Where a :class:`BatSwing`'s ``pivot_from_knob`` may be [m from the knob]: from
+:data:`CENTRE_BEYOND_KNOB` beyond the knob to the longest bat's end (1.2 m, the TOML's)."""
 
 CM_SPEED_RANGE = (0.0, 60.0)
 """Speed of a bat's centre of mass [m/s] racket-impact accepts: **an assumption**, around
@@ -43,18 +53,32 @@ class BatSwing:
 
     def __post_init__(self):
         w = in_range("angular_velocity", self.angular_velocity, *ANGULAR_VELOCITY_RANGE, "rad/s")
+        if w == 0.0:
+            raise ValueError("angular_velocity must be > 0 rad/s: a bat at rest has no swing "
+                             "(None where a swing is asked for)")  # fmt: skip
         object.__setattr__(self, "angular_velocity", w)
         if (self.cm_speed is None) == (self.pivot_from_knob is None):
             raise ValueError("give one of cm_speed [m/s] and pivot_from_knob [m], not both")
         if self.cm_speed is not None:
             v = in_range("cm_speed", self.cm_speed, *CM_SPEED_RANGE, "m/s")
-            if v > 0.0 and w == 0.0:
-                raise ValueError("a bat moving without turning: give angular_velocity > 0 "
-                                 f"with cm_speed {shown(v)} m/s")  # fmt: skip
             object.__setattr__(self, "cm_speed", v)
         else:
-            pivot = finite("pivot_from_knob", self.pivot_from_knob, "m")
+            pivot = in_range("pivot_from_knob", self.pivot_from_knob, *CENTRE_RANGE,
+                             "m from the knob")  # fmt: skip
             object.__setattr__(self, "pivot_from_knob", pivot)
+
+    def check(self, bat) -> None:
+        """ValueError if ``bat`` would turn about a point more than
+        :data:`CENTRE_BEYOND_KNOB` beyond its knob (a centre of mass fast for the turn).
+        """
+        beyond = self.pivot(bat) - bat.beam.length
+        if beyond > CENTRE_BEYOND_KNOB:
+            raise ValueError(
+                f"cm_speed {shown(self.cm_speed)} m/s at angular_velocity "
+                f"{shown(self.angular_velocity)} rad/s turns the bat about a point "
+                f"{100 * beyond:.4g} cm beyond its knob, farther than "
+                f"{100 * CENTRE_BEYOND_KNOB:g} cm: turn it faster or its centre of mass slower"
+            )
 
     def pivot(self, bat) -> float:
         """The point the bat turns about [m from the tip]."""
@@ -71,6 +95,7 @@ class BatSwing:
         """``swing_speed`` and ``pivot`` of :func:`racket.impact` for this swing at the points
         ``position`` [m from the tip] (each must move towards the ball).
         """
+        self.check(bat)
         speeds = self.point_speeds(bat, position)
         if np.any(speeds <= 0.0):
             raise ValueError(

@@ -11,8 +11,9 @@ d the distance from the impact point to the pivot (derived from the COR's defini
 WSU's Sports Science Laboratory defines BBCOR: "the ratio of the relative speed after impact
 to the relative speed before impact").  The same relation with r = R_0 = m_ball / M (1 +
 (b / r_g)**2) of a free bat (N2000 eq. 16) gives the collision efficiency of a free bat
-(ASTM F2219-2023 derives e_a "assuming the bat is unconstrained").  BESR = e_A + 1/2 (WSU,
-"Bat Performance Measures"); BPF = BBCOR / the ball's COR (WSU).  The batted-ball speed of
+(ASTM F2219-2023 derives e_a "assuming the bat is unconstrained").  BESR = e_a + 1/2 (WSU,
+"Bat Performance Measures"; with the free bat's e_a, to which the old NCAA moving-bat ratio
+reduces); BPF = BBCOR / the ball's COR (WSU).  The batted-ball speed of
 a swing: BBS = e_a v_pitch + (1 + e_a) v_bat (Nathan, Am. J. Phys. 71, 134 (2003), as
 quoted).  BBCOR must not exceed :data:`BBCOR_LIMIT`.
 """

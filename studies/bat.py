@@ -115,6 +115,9 @@ def _preset(name: str) -> Bat:
 def swing_argument(bat: Bat, swing) -> BatSwing | None:
     """``swing`` checked for ``bat``: a :class:`racket.BatSwing` or None (the bat at rest); a
     hand-held bat is at rest, a pivoted one turns about its pivot (:meth:`racket.Bat.check_swing`).
+    The default swing (:data:`DEFAULT_SWING`, a free bat's) becomes, as on the command line,
+    None for a hand-held bat and a turn about the pivot at :data:`ANGULAR_VELOCITY` for a
+    pivoted one.
 
     Parameters
     ----------
@@ -124,8 +127,16 @@ def swing_argument(bat: Bat, swing) -> BatSwing | None:
         Its swing.
     """
     instance("swing", swing, BatSwing | type(None), "a racket.BatSwing or None (at rest)")
+    if swing is DEFAULT_SWING and bat.support == "hand-held":
+        return None
+    if swing is DEFAULT_SWING and bat.support == "pivoted":
+        return BatSwing(ANGULAR_VELOCITY, pivot_from_knob=bat.pivot_from_knob)
     if swing is not None:
-        bat.check_swing(swing.pivot(bat))
+        try:
+            bat.check_swing(swing.pivot(bat))
+            swing.check(bat)
+        except ValueError as err:
+            raise ValueError(f"swing does not suit this bat: {err}") from None
     return swing
 
 
@@ -363,7 +374,9 @@ def bat_sweep(
     pitch_speed = _speed("pitch_speed", pitch_speed)
     swing = swing_argument(bat, swing)
     choice("unit", unit, tuple(SPEED_UNITS))
-    z = sweep_points(bat) if from_knob is None else np.sort(np.ravel(from_knob))
+    if from_knob is not None:
+        from_knob = np.sort(np.ravel(finite_array("from_knob", from_knob, "m from the knob")))
+    z = sweep_points(bat) if from_knob is None else from_knob
     x = _points(bat, z)
     r = impact(bat, ball, x, pitch_speed, **swing_kwargs(bat, swing, x))
     exit_speed = np.asarray(r.ball_rebound)

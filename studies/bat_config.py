@@ -223,6 +223,11 @@ def _profile(table: dict):
         if np.any(np.diff(z) <= 0):
             raise ValueError("[bat] profile's positions must increase from the knob [m]")
         length = float(table.get("length", z[-1]))
+        if z[0] > 0.0 or z[-1] < length:
+            raise ValueError(
+                f"[bat] profile must span the bat, from the knob (0) to its length "
+                f"({length:g} m), got {z[0]:g} to {z[-1]:g} m"
+            )
         slice_ = float(table.get("slice", 0.01))
         count = max(round(length / slice_), 1)
         if count > MAX_SEGMENTS:

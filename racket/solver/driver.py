@@ -288,12 +288,13 @@ def _time_step_batches(racket: Racket, ball: Ball, closing: np.ndarray) -> list:
     scales = np.array([contact_time_scale(ball, racket.contact.stiffness, c) for c in speeds])
     if scales.max() > CONTACT_TIME_MAX:
         slow = speeds[np.argmax(scales)]
+        strings = np.isfinite(racket.contact.stiffness)  # (a bat's ball meets the wood)
         raise ValueError(
-            f"the ball and strings are too soft: their contact would last about "
-            f"{1e3 * scales.max():.3g} ms, and racket-impact resolves contacts up to "
-            f"{1e3 * CONTACT_TIME_MAX:g} ms (ball stiffness "
-            f"{ball.law.secant_stiffness(ball.mass, slow):.3g} N/m, strings "
-            f"{racket.contact.stiffness:.3g} N/m)"
+            f"the ball{' and strings are' if strings else ' is'} too soft at this speed "
+            f"({slow:.3g} m/s): the contact would last about {1e3 * scales.max():.3g} ms, "
+            f"and racket-impact resolves contacts up to {1e3 * CONTACT_TIME_MAX:g} ms (ball "
+            f"stiffness {ball.law.secant_stiffness(ball.mass, slow):.3g} N/m"
+            + (f", strings {racket.contact.stiffness:.3g} N/m)" if strings else ")")
         )
     if speeds.size == 1:
         return [np.arange(closing.size)]

@@ -27,7 +27,7 @@ from common.checks import (
 from common.units import MPH, SPEED_SUFFIXES, SPEED_UNITS
 from racket import DEFAULT_BAT, BatSwing
 from racket.bat import BAT_SUPPORTS
-from racket.bat_swing import ANGULAR_VELOCITY_RANGE, CM_SPEED_RANGE
+from racket.bat_swing import ANGULAR_VELOCITY_RANGE, CENTRE_BEYOND_KNOB, CM_SPEED_RANGE
 from racket.pivot import CLAMP_OFFSET, PIVOT_FROM_KNOB
 from studies.bat import (
     ANGULAR_VELOCITY,
@@ -35,6 +35,7 @@ from studies.bat import (
     FASTEST_PITCH,
     PITCH_SPEED,
     SWEEP_FROM_KNOB,
+    SWEEP_STEP,
     SWEET_ZONE_FRACTION,
 )
 from studies.bat_certification import BBCOR_TEST_SPEED
@@ -198,7 +199,7 @@ def _pitch(args, default: float, fastest: bool = True) -> float:
         def instead(typed: str) -> str:
             return f" (--pitch-{SPEED_SUFFIXES[typed]} {shown(value)})"
 
-        too_fast(flag, value, unit, FASTEST_PITCH, "the fastest pitch on record", instead)
+        too_fast(flag, value, unit, FASTEST_PITCH, "the fastest on record", instead, "pitch")
     return value * size
 
 
@@ -237,7 +238,16 @@ def _swing(args, bat) -> BatSwing | None:
     if value is not None:
         cm = in_range(flag, value, CM_SPEED_RANGE[0] / size, CM_SPEED_RANGE[1] / size, unit,
                       slips=SPEED_SLIPS[unit]) * size  # fmt: skip
-    return BatSwing(omega, cm_speed=cm)
+    swing = BatSwing(omega, cm_speed=cm)
+    beyond = swing.pivot(bat) - bat.beam.length  # the turn's centre beyond the knob [m]
+    if beyond > CENTRE_BEYOND_KNOB:
+        typed = flag if value is not None else "the default --cm-speed"
+        raise ValueError(
+            f"--omega {omega:g} rad/s with {typed} {cm / size:g} {unit} turns the bat about a "
+            f"point {100 * beyond:.4g} cm beyond the knob, farther than "
+            f"{100 * CENTRE_BEYOND_KNOB:g} cm: a faster --omega or a slower --cm-speed"
+        )
+    return swing
 
 
 def _from_knob(flag: str, value: float, length: float) -> float:
@@ -301,7 +311,7 @@ def _sweep(args) -> int:
         if end <= start:
             raise ValueError(f"--to ({100 * end:g} cm) must lie beyond --from ({100 * start:g} "
                              "cm from the knob)")  # fmt: skip
-        count = round((end - start) / 0.01) + 1
+        count = round((end - start) / SWEEP_STEP) + 1
         count = count if args.points is None else _count("--points", args.points, 3, 10_000)
         z = np.linspace(start, end, max(count, 3))
         swing = _swing(args, bat)
