@@ -43,6 +43,7 @@ from pathlib import Path
 import numpy as np
 
 from beam import ThickBeam
+from beam.thick import SHEAR_COEFFICIENT
 from common.checks import (
     CM_AS_M,
     INCH_AS_M,
@@ -151,12 +152,21 @@ def bat_from_table(table: dict, name: str = "own bat") -> Bat:
     label = table.get("name", name)
     instance("[bat] name", label, str, "a name")
     length = knob_stations[-1]
-    beam = ThickBeam.round(
-        (length - knob_stations)[::-1], outer[::-1], table["density"], table["youngs_modulus"],
-        table["shear_modulus"], bore=None if inner is None else inner[::-1],
-        shear_coefficient=table.get("shear_coefficient", 1.0), damping=table.get("damping", 0.0),
-        n_modes=n_modes, elements=max(60, 3 * outer.size - 1),  # 3 per slice (fem.mesh rounds up)
-    )  # fmt: skip
+    try:
+        beam = ThickBeam.round(
+            (length - knob_stations)[::-1], outer[::-1], table["density"],
+            table["youngs_modulus"], table["shear_modulus"],
+            bore=None if inner is None else inner[::-1],
+            shear_coefficient=table.get("shear_coefficient", SHEAR_COEFFICIENT),
+            damping=table.get("damping", 0.0),
+            n_modes=n_modes, elements=max(60, 3 * outer.size - 1),  # 3 per slice (fem.mesh)
+        )  # fmt: skip
+    except ValueError as err:  # the beam's own terms (EI, mass per length) in the table's
+        if "must vary by at most" not in str(err):
+            raise
+        raise ValueError(
+            f"[bat] sections differ too much along the bat (a wall or diameter near 0?): {err}"
+        ) from None
     mass = beam.mass
     if not BAT_MASS_RANGE[0] <= mass <= BAT_MASS_RANGE[1]:
         raise ValueError(

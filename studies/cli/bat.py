@@ -397,7 +397,12 @@ def _feel(args) -> int:
     if args.duration_ms is not None:
         duration = in_range("--duration-ms", args.duration_ms, *(1e3 * np.array(DURATION_RANGE)),
                             "ms", slips=(S_AS_MS,)) / 1e3  # fmt: skip
-    feel = bat_feel(bat, ball, at, speed, swing, handle, duration, unit, label, args.ball)
+    try:
+        feel = bat_feel(bat, ball, at, speed, swing, handle, duration, unit, label, args.ball)
+    except ValueError as err:  # (the contact's length is known once it has run)
+        if args.duration_ms is None or not str(err).startswith("duration must"):
+            raise
+        raise ValueError(f"--duration-ms {args.duration_ms:g}: {err}") from None
     conditions = say_conditions(feel.conditions)
     _say(f"impact {100 * feel.from_knob:.1f} cm from the knob: exit speed "
           f"{feel.exit_speed / SPEED_UNITS[unit]:.4g} {unit}, contact "
