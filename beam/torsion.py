@@ -10,7 +10,7 @@ A normal force at (x, y) on the string plane drives mode k through y theta_k(x),
 modal shape a ball sees is y theta_k(x) (:meth:`RollModes.shape`).
 
 For a frame symmetric about its long axis (every profile of this package: lead tape goes
-on both sides, see :meth:`racket.head.Hoop.clock`) bending out of the string plane is
+on both sides, see :meth:`racket.strings.head.Hoop.clock`) bending out of the string plane is
 symmetric in y and twisting antisymmetric, so the two are uncoupled and add.
 """
 

@@ -45,7 +45,7 @@ from ball import Ball, SineLaw
 from racket import CATALOG, impact, paper_ball, paper_racket
 from racket.solver import DEFAULT_STEPS_PER_CONTACT, dispatch
 from racket.solver.stepper import Stepper
-from studies.maps import face_map
+from studies.face.maps import face_map
 from studies.sweeps import sweep
 
 POINTS = 200
@@ -203,7 +203,8 @@ def _bat_ratio(runs: int = 15) -> float:
     18 modes (the racket 12) and its ball leaves in about 1 ms.
     """
     from ball import baseball
-    from racket import BATS, default_ball
+    from bat import BATS
+    from racket import default_ball
 
     bat, racket = BATS["r161"](), CATALOG["pure-drive-2021"].racket()
     x_bat = np.linspace(0.0, bat.beam.length - 0.40, POINTS)

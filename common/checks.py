@@ -393,7 +393,7 @@ def too_fast(
 
 STRUNG_AT_LB = (40.0, 65.0)
 """What rackets are usually strung at [lb]: an assumption, not a measurement (the project's
-measurements give none; :data:`racket.specs.strings.TENSION_RANGE_LB` accepts 20-80 lb).  A
+measurements give none; :data:`racket.strings.tension.TENSION_RANGE_LB` accepts 20-80 lb).  A
 tension below it that is one in kg is asked about."""
 
 

@@ -1,4 +1,10 @@
-"""Ball impacts on a flexible racket (paper Sec. VII).
+"""Ball impacts on a flexible tennis racket (paper Sec. VII).
+
+A racket is a free-free beam (:mod:`beam`), a string bed on it (:mod:`racket.strings`) and
+how it is held (free, head-clamped or in a :class:`Hand`); rackets from spec sheets are in
+:mod:`racket.specs`, and the impact solver that strikes them has its own room,
+:mod:`racket.solver`, reached through :func:`impact` (bats, :mod:`bat`, are struck by the
+same solver through the same face).
 
 Public API: :class:`Racket`, :class:`StringBed`, :class:`Hand`, :func:`impact` and its
 :class:`Impact` result, a :class:`Swing` about a pivot, the default racket and ball
@@ -9,15 +15,10 @@ rackets) and the modelled flex test (:func:`flex_test_stiffness`); what a racket
 with (:class:`Stringing` of a :class:`String` of a material of :data:`MATERIALS`, the
 :data:`STRINGS` presets, :func:`stringing` by name); spin (issue 36): a :class:`Stroke`
 (the :data:`STROKES` presets) and :func:`hit`, the ball's flight after it; a spinning ball
-meeting the strings obliquely, :func:`oblique_impact`.  Bats (issue 37): a :class:`Bat`
-(a beam struck on its own surface, free, pivoted or held; the :data:`BATS` presets, Nathan's
-R161 by default) swung by a :class:`BatSwing`; :func:`impact` strikes either.
+meeting the strings obliquely, :func:`oblique_impact`.
 """
 
 from common.version import __version__
-from racket.bat import BAT_SUPPORTS, Bat
-from racket.bat_swing import BatSwing
-from racket.bats import BATS, DEFAULT_BAT
 from racket.hand import GRIPS, Hand
 from racket.presets import (
     DEFAULT_RACKET,
@@ -28,21 +29,25 @@ from racket.presets import (
     paper_ball,
     paper_racket,
 )
-from racket.racket import SUPPORTS, Racket, StringBed
+from racket.racket import SUPPORTS, Racket
 from racket.solver import Impact, ObliqueImpact, StrokeImpact, hit, impact, oblique_impact
-from racket.specs import from_specs, string_bed_stiffness
+from racket.specs import from_specs
 from racket.specs.catalog import CATALOG
 from racket.specs.stiffness import flex_test_stiffness
-from racket.string_material import MATERIALS
-from racket.stringing import STRINGS, String, Stringing, stringing
+from racket.strings import (
+    MATERIALS,
+    STRINGS,
+    String,
+    StringBed,
+    Stringing,
+    string_bed_stiffness,
+    stringing,
+)
 from racket.stroke import STROKES, Stroke
 from racket.swing import Swing
 
 __all__ = [
-    "BATS",
-    "BAT_SUPPORTS",
     "CATALOG",
-    "DEFAULT_BAT",
     "DEFAULT_RACKET",
     "GRIPS",
     "MATERIALS",
@@ -51,8 +56,6 @@ __all__ = [
     "SUPPORTS",
     "TENNIS_BALL_MASS",
     "TENNIS_BALL_RADIUS",
-    "Bat",
-    "BatSwing",
     "Hand",
     "Impact",
     "ObliqueImpact",

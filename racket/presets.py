@@ -11,7 +11,7 @@ The paper's string bed stays the paper's: a linear, lossless spring (no stringin
 default racket is a real one, the catalogue's Babolat Pure Drive (2021)
 (:data:`racket.specs.catalog.CATALOG`), strung with fresh polyester 16L, 16x19, at 55 lb
 (an assumption, :data:`racket.specs.catalog.STRUNG`: a bed that stiffens as it deflects and
-loses a little of what it stores, :mod:`racket.stringing`), and the default ball the ITF
+loses a little of what it stores, :mod:`racket.strings.stringing`), and the default ball the ITF
 type 2 ball (:data:`ball.catalog.DEFAULT_BALL`).
 """
 
@@ -19,8 +19,9 @@ from __future__ import annotations
 
 from ball import BALL_PRESETS, DEFAULT_BALL, Ball, LinearHysteresis
 from beam import Beam
-from racket.racket import Racket, StringBed
+from racket.racket import Racket
 from racket.specs.catalog import CATALOG
+from racket.strings.bed import StringBed
 
 DEFAULT_RACKET = "pure-drive-2021"
 """The racket of every command, the page and the Python API when none is named: a real,

@@ -40,7 +40,7 @@ class BlockSystem:
         The block matrices.
     basis : (2N, 2 nb)
         z = basis @ s, s the blocks' states in order (s_0a, s_0b, s_1a, ...), z = (q, q');
-        square but for a constrained system (:mod:`racket.pivot`: nb = N - 1).
+        square but for a constrained system (:mod:`bat.pivot`: nb = N - 1).
     dc : (nb,) bool
         Blocks of the rigid-body motion (free) or of the racket rocking on the hand
         (hand-held): left out of the vibration's reach when deciding that the ball has left.
@@ -56,7 +56,7 @@ class BlockSystem:
         modes; None without one.  The frame's shapes are 0 there.
     dc_rows : ndarray (len(rigid), 2 nb) or None
         Rows over the block states giving the rigid coordinates' velocities [sqrt(kg) m/s]
-        of the dc motion alone, where it is not theirs whole (:mod:`racket.pivot`: the turn
+        of the dc motion alone, where it is not theirs whole (:mod:`bat.pivot`: the turn
         about the pivot); None: :attr:`rigid`'s rows of ``basis``, the frame's momentum.
     step_memo : dict
         The solver's memo of this system's exact steps, by time step
@@ -86,7 +86,7 @@ class BlockSystem:
     @cached_property
     def _to_blocks(self) -> np.ndarray:
         """basis^-1 (transposed): s = z @ this (the pseudo-inverse for a constrained
-        system's, :mod:`racket.pivot`, which has fewer blocks than coordinates).
+        system's, :mod:`bat.pivot`, which has fewer blocks than coordinates).
         """
         square = self.basis.shape[0] == self.basis.shape[1]
         inverse = np.linalg.inv(self.basis) if square else np.linalg.pinv(self.basis)
@@ -160,7 +160,7 @@ class BlockSystem:
 
     def modal_state(self, s: np.ndarray):
         """Modal displacements and velocities (P, N) from block states (P, nb, 2) (fewer
-        blocks than coordinates for a constrained system, :mod:`racket.pivot`).
+        blocks than coordinates for a constrained system, :mod:`bat.pivot`).
 
         Parameters
         ----------
@@ -247,12 +247,23 @@ def hand_matrices(modes: Modes, hand: Hand):
     return hand.stiffness * overlap, hand.damping * overlap
 
 
-def _held_blocks(stiffness, damping, slow: float, rigid: tuple, null=None) -> BlockSystem:
+def held_blocks(stiffness, damping, slow: float, rigid: tuple, null=None) -> BlockSystem:
     """Coordinates of unit mass coupled by ``stiffness`` and ``damping`` (N, N), in real
     blocks; blocks slower than ``slow`` [rad/s] are the dc motion.  ``null``, a unit vector
     with stiffness @ null = damping @ null = 0 (a free motion of the whole: the racket and
     the hand's mass translating together), is split off first as a block [[0, 1], [0, 0]]
     (the eigenvectors of a free motion are defective; the rest are not).
+
+    Parameters
+    ----------
+    stiffness, damping : ndarray
+        The coordinates' stiffness [N/m per kg] and damping [N s/m per kg] matrices (N, N).
+    slow : float
+        The fastest a block may be and still be dc motion [rad/s].
+    rigid : tuple of int
+        The coordinates of the rigid-body motion (the dc motion's rows).
+    null : ndarray or None
+        A free motion of the whole, a unit vector (N,), or None.
     """
     n = stiffness.shape[0]
     turn = np.eye(n)
@@ -316,7 +327,7 @@ def held_system(modes: Modes, hand: Hand) -> BlockSystem:
         k_h, c_h = hand_matrices(modes, hand)
         stiffness = np.diag(modes.omega**2) + k_h
         damping = np.diag(2.0 * modes.damping * modes.omega) + c_h
-        return _held_blocks(stiffness, damping, slow, (0, 1))
+        return held_blocks(stiffness, damping, slow, (0, 1))
     # The grip's springs stretch by y(x) - w: over the grip the shapes of (q, w sqrt(m)) are
     # (phi(x), -1/sqrt(m)), so K_h = k D O D with O the overlap of (phi, 1) and D scaling
     # the last by -1/sqrt(m) (and C_h likewise): one overlap for all of it.
@@ -330,7 +341,7 @@ def held_system(modes: Modes, hand: Hand) -> BlockSystem:
     damping = np.diag(np.r_[2.0 * modes.damping * modes.omega, 0.0]) + hand.damping * grip
     null = np.zeros(modes.count + 1)
     null[0], null[-1] = np.sqrt(modes.mass), root  # racket and hand translating together
-    system = _held_blocks(stiffness, damping, slow, (0, 1), null / np.linalg.norm(null))
+    system = held_blocks(stiffness, damping, slow, (0, 1), null / np.linalg.norm(null))
     return replace(system, hand_coordinate=modes.count)
 
 
@@ -375,7 +386,7 @@ def held_roll_system(roll: RollModes, length: float, hand: Hand) -> BlockSystem:
     slow = 0.5 * roll.omega[1] if roll.count > 1 else np.inf
     stiffness = np.diag(roll.omega**2) + hand.stiffness * overlap
     damping = np.diag(2.0 * roll.damping * roll.omega) + hand.damping * overlap
-    return _held_blocks(stiffness, damping, slow, (0,))
+    return held_blocks(stiffness, damping, slow, (0,))
 
 
 def face_system(bending: BlockSystem, roll: BlockSystem) -> BlockSystem:

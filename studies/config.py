@@ -102,9 +102,10 @@ from racket import (
 )
 from racket.racket import ADDED_MASS_MAX
 from racket.solver import F1_MIN
+from racket.specs.restring import with_tension
 from racket.specs.sheet import SPEC_RANGES, SPEC_SLIPS
-from racket.specs.strings import TENSION_RANGE_LB, with_tension
-from studies import string_inputs as inputs  # the string bed as typed
+from racket.strings.tension import TENSION_RANGE_LB
+from studies.strings import inputs  # the string bed as typed
 from studies.sweeps import F1_MAX, STRING_STIFFNESS_RANGE
 
 if sys.version_info >= (3, 11):

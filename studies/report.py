@@ -22,7 +22,7 @@ from racket.specs import Profile, SpecSheet, fit_profile, spec_sheet
 from racket.specs.ra import RA_ROWS, RA_SCATTER, f1_from_ra
 from racket.system import held_mode, held_system
 from studies.arguments import ball_argument, racket_argument
-from studies.sweetspots import sweet_spots
+from studies.face.sweetspots import sweet_spots
 
 
 @dataclass(frozen=True)
@@ -45,7 +45,7 @@ class SpecReport:
     parts : DataFrame
         Fitted part masses [g] beside their plausible ranges (empty without a spec sheet).
     sweet_spots : DataFrame
-        The sweet spots (:func:`studies.sweetspots.sweet_spots`).
+        The sweet spots (:func:`studies.face.sweetspots.sweet_spots`).
     warnings : tuple of str, optional
         A warning for each fitted part at the edge of its range.
     """

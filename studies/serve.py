@@ -40,7 +40,7 @@ from common.checks import speed as check_speed
 from common.typechecks import flag
 from common.units import MPH
 from racket import Racket, Swing, impact
-from racket.stringing import restrung
+from racket.strings.stringing import restrung
 from studies.arguments import ball_argument, racket_argument
 
 

@@ -24,9 +24,9 @@ from common.checks import speed as check_speed
 from common.typechecks import choice, flag, instance
 from racket import SUPPORTS, Racket, Swing
 from racket.solver import F1_MIN
+from racket.specs.restring import with_tension
 from racket.specs.sheet import SPEC_RANGES
-from racket.specs.strings import with_tension
-from racket.stringing import restrung
+from racket.strings.stringing import restrung
 from racket.swing import check_swung_support
 from racket.swing import equal_effort as same_effort
 from studies.arguments import ball_argument, racket_argument, swing_argument

@@ -42,12 +42,12 @@ from ball import (
     unhappy_solution,
     warn_if_squashed,
 )
+from bat import Bat, BatSwing
+from bat.presets import r161_beam
 from beam import Beam, ThickBeam
 from racket import (
     CATALOG,
     STROKES,
-    Bat,
-    BatSwing,
     Hand,
     Racket,
     String,
@@ -66,9 +66,8 @@ from racket import (
     string_bed_stiffness,
     stringing,
 )
-from racket.bats import r161_beam
 from racket.feel import hand_feel
-from racket.specs.strings import with_tension
+from racket.specs.restring import with_tension
 from studies.bounce import rigid_bounce_table
 from studies.conditions import conditions_line
 from studies.config import (
@@ -80,11 +79,11 @@ from studies.config import (
     read_toml,
 )
 from studies.drop import drop
-from studies.maps import face_map
+from studies.face.maps import face_map
+from studies.face.sweetspots import sweet_spots
 from studies.report import spec_report
 from studies.serve import head_speed_for, serve_table, serve_what_if, zero_cor_ball
 from studies.sweeps import compare, sweep
-from studies.sweetspots import sweet_spots
 from studies.tables import history_table, impact_table
 
 EXAMPLES = Path(__file__).parents[1] / "examples"

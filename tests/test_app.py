@@ -20,7 +20,7 @@ import pytest
 from common.units import MPH
 from racket import STROKES, default_ball
 from racket.swing import EFFORT_EXPONENT
-from studies.dashboard import (
+from studies.page.dashboard import (
     COMPARED,
     HEAD_SPEED_MAX_MPH,
     HEAD_SPEEDS_MPH,
@@ -28,7 +28,7 @@ from studies.dashboard import (
     PageInputs,
     page_results,
 )
-from studies.stroke import stroke_table
+from studies.strokes.stroke import stroke_table
 
 matplotlib.use("Agg")
 
@@ -129,7 +129,7 @@ def _overlap(a, b) -> bool:
 
 
 def test_the_page_plots_one_quantity_each_with_legends_outside():
-    from studies.plots_page import plot_along_racket, plot_face_map_page, plot_serve_speeds
+    from studies.page.plots import plot_along_racket, plot_face_map_page, plot_serve_speeds
 
     r = page_results(PageInputs())
     along = {"A": r.a.along, "B": r.b.along}
@@ -173,8 +173,8 @@ class _Stop(Exception):
 
 
 def test_the_port_is_bound_before_the_address_is_announced():
-    from studies.app import DEFAULT_PORT, run
     from studies.cli import build_parser
+    from studies.page.app import DEFAULT_PORT, run
 
     port, heard = _free_port(), []
 

@@ -10,15 +10,16 @@ import numpy as np
 import pytest
 
 from ball import Ball, PowerLawHysteresis, SineLaw
-from racket import BATS, Bat, BatSwing, impact
-from racket import certification as cert
-from racket.bats import (
+from bat import BATS, Bat, BatSwing
+from bat import certification as cert
+from bat.presets import (
     R161_DIAMETERS_MM,
     R161_LENGTH,
     WOOD_DENSITY,
     alloy_wall,
     r161_beam,
 )
+from racket import impact
 from racket.solver.dispatch import lockstep_from
 
 E0 = 0.5
@@ -177,7 +178,7 @@ def _nathan_discrete(diameters, dz, split):
     harmonic mean of their I (Nathan's takes the knob-side slice's: first order in dz)."""
     from scipy.linalg import eigh
 
-    from racket.bats import WOOD_DENSITY, WOOD_SHEAR_MODULUS, WOOD_YOUNGS_MODULUS
+    from bat.presets import WOOD_DENSITY, WOOD_SHEAR_MODULUS, WOOD_YOUNGS_MODULUS
 
     d, dz = np.repeat(diameters, split), dz / split
     n = d.size

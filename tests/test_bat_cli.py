@@ -1,6 +1,6 @@
 """``racket-impact bat sweep|bbcor|feel`` (issue 37): the default run's header names the bat,
 the ball, the pitch and the swing, its lines fit 100 columns, its table and sidecar are written
-together and give the same numbers as :func:`studies.bat.bat_sweep` (one truth, the same
+together and give the same numbers as :func:`studies.bat.sweep.bat_sweep` (one truth, the same
 defaults); the unit typed is the unit answered; the certification and the handle's motion;
 every bad input refused in one line naming the option, status 2, nothing written; an option
 that belongs to another question refused; a bat of one's own from TOML.  Each run is in this
@@ -14,9 +14,9 @@ import pandas as pd
 import pytest
 
 from ball import BASEBALL_PRESETS, DEFAULT_BASEBALL
+from bat import DEFAULT_BAT
 from common.units import MPH
-from racket import DEFAULT_BAT
-from studies.bat import DEFAULT_SWING, PITCH_SPEED, _preset, bat_sweep
+from studies.bat.sweep import DEFAULT_SWING, PITCH_SPEED, _preset, bat_sweep
 from studies.cli import build_parser, main
 from studies.cli.show import WIDTH
 

@@ -10,11 +10,15 @@ import numpy as np
 import pytest
 
 from ball import BASEBALL_PRESETS, WALL, collide
+from bat import BatSwing
+from bat import certification as cert
+from bat.presets import R161_DIAMETERS_MM, R161_LENGTH, WOOD_DENSITY
 from common.units import MPH
-from racket import BatSwing, impact
-from racket import certification as cert
-from racket.bats import R161_DIAMETERS_MM, R161_LENGTH, WOOD_DENSITY
-from studies.bat import (
+from racket import impact
+from studies.bat.certification import BBCOR_TEST_SPEED, bbcor_test
+from studies.bat.config import bat_from_table, load_bat
+from studies.bat.feel import HANDLE_POINTS, bat_feel
+from studies.bat.sweep import (
     DEFAULT_SWING,
     PITCH_SPEED,
     SWEET_ZONE_FRACTION,
@@ -22,9 +26,6 @@ from studies.bat import (
     bat_sweep,
     parabola_peak,
 )
-from studies.bat_certification import BBCOR_TEST_SPEED, bbcor_test
-from studies.bat_config import bat_from_table, load_bat
-from studies.bat_feel import HANDLE_POINTS, bat_feel
 
 BALL = BASEBALL_PRESETS["baseball"].ball()
 """Nathan's ball of the high-speed case (e0 0.50)."""

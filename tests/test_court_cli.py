@@ -79,7 +79,7 @@ def test_the_table_and_its_sidecar_are_written_with_the_conditions(presets):
 
 
 def test_the_command_line_gives_what_the_python_api_gives(presets):
-    from studies.court import court_table
+    from studies.strokes.court import court_table
 
     rows = pd.DataFrame(json.loads(presets["table"].read_text()))
     ball = BALL_PRESETS[DEFAULT_BALL].ball()
@@ -194,7 +194,7 @@ def test_the_help_names_the_courts_and_the_units():
 
 
 def test_the_python_api_refuses_bad_courts_in_one_line():
-    from studies.court import court_table
+    from studies.strokes.court import court_table
 
     with pytest.raises(ValueError, match="unknown court 'carpet'"):
         court_table(["carpet"])

@@ -127,7 +127,7 @@ def test_every_example_file_runs(example, tmp_path, capsys):
 def _modules_with_examples():
     """Every module of the packages whose source holds a doctest (``>>>``), found rather
     than listed, so that a new module's Examples cannot go untested."""
-    for package in ("ball", "beam", "racket", "studies", "common"):
+    for package in ("ball", "bat", "beam", "racket", "studies", "common"):
         for path in sorted((ROOT / package).rglob("*.py")):
             if ">>>" in path.read_text():
                 yield ".".join(path.relative_to(ROOT).with_suffix("").parts)

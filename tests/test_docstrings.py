@@ -12,8 +12,8 @@ import warnings
 import pytest
 from numpydoc.docscrape import ClassDoc, FunctionDoc
 
-PACKAGES = ("ball", "beam", "racket", "studies", "common")
-SKIP_MODULES = ("studies.app", "studies.cli")  # the page's callbacks, the argparse layer (all)
+PACKAGES = ("ball", "bat", "beam", "racket", "studies", "common")
+SKIP_MODULES = ("studies.page.app", "studies.cli")  # the page's callbacks, the argparse layer (all)
 
 
 NUMERIC = re.compile(r"\b(float|complex|array|ndarray|array_like)\b")

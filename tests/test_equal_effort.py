@@ -9,7 +9,7 @@ from racket import CATALOG, Swing
 from racket.swing import EFFORT_EXPONENT, equal_effort
 from studies.cli import main
 from studies.config import load_ball
-from studies.maps import compare_summary
+from studies.face.maps import compare_summary
 from studies.sweeps import compare
 
 

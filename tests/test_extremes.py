@@ -17,7 +17,7 @@ from racket.specs.sheet import SPEC_RANGES, spec_sheet
 from racket.swing import equal_effort
 from studies.cli import main
 from studies.config import load_racket, racket_from_table
-from studies.maps import compare_summary
+from studies.face.maps import compare_summary
 
 TWU = Path(__file__).parent / "data" / "twu_racquets_half.csv"
 SHEET = dict(CATALOG["pure-drive-2021"].specs)

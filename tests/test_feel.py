@@ -13,9 +13,9 @@ import pytest
 from racket import default_ball, default_racket
 from racket.feel import hand_feel
 from studies.cli import main
-from studies.dashboard import feel_summary
+from studies.face.landmarks import hand_pivot, rigid_centre_of_percussion
 from studies.feel import FEEL_SUPPORT
-from studies.landmarks import hand_pivot, rigid_centre_of_percussion
+from studies.page.dashboard import feel_summary
 from studies.sweeps import BALL_SPEED
 
 BALL = default_ball()
@@ -95,7 +95,7 @@ def test_the_vibration_is_least_near_the_node_of_the_first_mode():
 
 
 def test_the_page_and_the_command_report_the_same_feel(capsys):
-    """The page's feel card (:func:`studies.dashboard.feel_summary`, given the page's free
+    """The page's feel card (:func:`studies.page.dashboard.feel_summary`, given the page's free
     racket) and ``racket-impact feel`` with its defaults: the same racket held the same way,
     the same ball at the same speed, the same numbers; the command's header says them."""
     page = feel_summary(FREE, BALL, BALL_SPEED)

@@ -13,8 +13,8 @@ from racket.feel import hand_feel
 from studies.bounce import rigid_bounce_table
 from studies.cli import main
 from studies.config import load_ball
-from studies.dashboard import MY_SHEET, PageInputs, page_results
-from studies.maps import MAX_MAP_POINTS, face_map
+from studies.face.maps import MAX_MAP_POINTS, face_map
+from studies.page.dashboard import MY_SHEET, PageInputs, page_results
 from studies.serve import serve_table
 from studies.sweeps import MAX_IMPACTS, compare, sweep
 

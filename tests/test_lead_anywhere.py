@@ -63,7 +63,7 @@ def test_the_api_hits_off_the_axis_with_lead_anywhere(at):
 
 
 def test_the_page_offers_only_accepted_positions():
-    from studies.page_inputs import LEAD_CLOCKS  # the page's choices (studies/app.py)
+    from studies.page.inputs import LEAD_CLOCKS  # the page's choices (studies/page/app.py)
 
     for at in LEAD_CLOCKS:
         assert default_racket().with_lead_tape(0.005, at).beam.is_mirror_symmetric

@@ -12,10 +12,10 @@ from ball import BALL_PRESETS
 from ball.grip import slide
 from ball.spin import BallSpin
 from racket import CATALOG, impact
-from racket.bed_sideways import sideways
 from racket.in_plane import inverse_mass
 from racket.solver import dispatch
 from racket.solver.oblique import GRIP_SUBSTEPS, oblique_impact
+from racket.strings.sideways import sideways
 
 POINTS = np.linspace(0.10, 0.22, 17)
 BALL = BALL_PRESETS["itf-type-2"].ball()

@@ -51,7 +51,7 @@ def test_one_sweep_point_the_same_from_the_command_line_and_python(tmp_path, cap
 
 
 def test_one_face_map_point_the_same_from_the_command_line_and_python(tmp_path, capsys):
-    from studies.maps import face_map
+    from studies.face.maps import face_map
 
     out = tmp_path / "map.json"
     status, _, _ = run(capsys, "map", "--grid", "5", "4", "--out", str(out))

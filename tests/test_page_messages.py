@@ -17,9 +17,9 @@ import time
 import pytest
 
 from studies.cli.racket_options import LEAD_GRAMS
-from studies.dashboard import LEAD_MAX_G, MY_SHEET, PageInputs, page_racket, page_results
-from studies.page_guard import ERROR_OUTPUT, MESSAGE_MAX_CHARS, refusal
-from studies.page_inputs import LABELS, LEAD_CLOCKS, page_inputs
+from studies.page.dashboard import LEAD_MAX_G, MY_SHEET, PageInputs, page_racket, page_results
+from studies.page.guard import ERROR_OUTPUT, MESSAGE_MAX_CHARS, refusal
+from studies.page.inputs import LABELS, LEAD_CLOCKS, page_inputs
 
 pytest.importorskip("shiny")
 from websockets.sync.client import connect  # shiny's own dependency

@@ -1,7 +1,7 @@
 """The page's string choice (issue 35): a select of the string presets and one hybrid (the
 racket's own by default) and a "played" box, for both rackets.  Each choice strings the
-page's racket as the API strings it (:func:`racket.stringing.stringing`,
-:meth:`racket.stringing.Stringing.bed`), the page's numbers for a non-default string are the
+page's racket as the API strings it (:func:`racket.strings.stringing.stringing`,
+:meth:`racket.strings.stringing.Stringing.bed`), the page's numbers for a non-default string are the
 API's, played strings are softer than fresh by their material's tension loss, a choice the
 page does not offer is one line, and every output names the string it was computed for.
 No browser: the page's own functions, called as its server calls them.
@@ -16,16 +16,16 @@ import pytest
 from common.units import LB, MPH
 from racket import CATALOG, DEFAULT_RACKET, MATERIALS, STRINGS, default_ball, from_specs, impact
 from racket.specs.catalog import STRUNG
-from racket.string_material import material_key
-from racket.stringing import HYBRID, stringing
-from studies.app import app_ui
+from racket.strings.material import material_key
+from racket.strings.stringing import HYBRID, stringing
 from studies.conditions import racket_details
-from studies.dashboard import CONTROL_LABELS, MY_SHEET, PageInputs, page_racket, page_results
-from studies.maps import face_map
-from studies.page_cards import headline_cards
-from studies.page_conditions import page_conditions
-from studies.page_inputs import LABELS, page_inputs
-from studies.page_strings import OWN_STRINGS, PAGE_STRINGS, strung
+from studies.face.maps import face_map
+from studies.page.app import app_ui
+from studies.page.cards import headline_cards
+from studies.page.conditions import page_conditions
+from studies.page.dashboard import CONTROL_LABELS, MY_SHEET, PageInputs, page_racket, page_results
+from studies.page.inputs import LABELS, page_inputs
+from studies.page.strings import OWN_STRINGS, PAGE_STRINGS, strung
 from studies.serve import serve_table
 from studies.sweeps import BALL_SPEED, sweep
 

@@ -20,12 +20,14 @@ from ball.catalog import TWU_SPEED
 from common.checks import FASTEST_STROKE
 from common.units import MPH
 from racket import CATALOG, DEFAULT_RACKET, STROKES, Swing, default_ball, default_racket
-from racket.bed_sideways import sideways
-from studies.app import app_ui
+from racket.strings.sideways import sideways
 from studies.cli import main
 from studies.conditions import racket_details
 from studies.config import BALLS
-from studies.dashboard import (
+from studies.face.maps import face_map
+from studies.page.app import app_ui
+from studies.page.cards import headline_cards, spots_table
+from studies.page.dashboard import (
     HEAD_SPEED_MAX_MPH,
     HEAD_SPEEDS_MPH,
     MY_SHEET,
@@ -34,10 +36,8 @@ from studies.dashboard import (
     page_results,
     said_on_page,
 )
-from studies.maps import face_map
-from studies.page_cards import headline_cards, spots_table
 from studies.serve import serve, serve_table
-from studies.stroke import bed_words, stroke_table
+from studies.strokes.stroke import bed_words, stroke_table
 from studies.sweeps import BALL_SPEED, sweep
 
 matplotlib.use("Agg")
@@ -251,7 +251,7 @@ def test_every_card_names_its_conditions(page):
 
 
 def test_the_page_plots_name_their_conditions_inside_the_figure(page):
-    from studies.plots_page import plot_along_racket, plot_face_map_page, plot_serve_speeds
+    from studies.page.plots import plot_along_racket, plot_face_map_page, plot_serve_speeds
 
     said = page.conditions
     along = {"A": page.a.along, "B": page.b.along}

@@ -13,8 +13,8 @@ from racket import CATALOG, Swing, impact, paper_ball
 from racket.feel import hand_feel
 from racket.system import held_mode
 from studies.cli import main
-from studies.landmarks import HAND_FROM_BUTT
-from studies.sweetspots import sweet_spots
+from studies.face.landmarks import HAND_FROM_BUTT
+from studies.face.sweetspots import sweet_spots
 from studies.tables import feel_table
 
 
@@ -107,7 +107,7 @@ def test_cli_positions_count_from_the_tip_with_the_cm_beside_the_m(tmp_path, cap
 def test_tension_strings_the_racket_as_its_spec_sheet_does(racket, capsys):
     from common.units import LB
     from racket import from_specs
-    from racket.specs.strings import with_tension
+    from racket.specs.restring import with_tension
     from studies.sweeps import sweep
 
     specs = CATALOG["pure-drive-2021"].specs
@@ -237,8 +237,8 @@ def test_sidecar_described_once_per_run_and_forgotten_after(tmp_path, capsys, mo
 @pytest.mark.parametrize("lb, ok", [(20.0, True), (80.0, True), (19.9, False), (80.1, False)])
 def test_tension_lb_is_one_range_for_sweep_compare_and_map(lb, ok, tmp_path, capsys):
     from common.units import LB
+    from racket.specs.restring import with_tension
     from racket.specs.sheet import SPEC_RANGES
-    from racket.specs.strings import with_tension
     from studies.sweeps import TENSION_RANGE
 
     assert TENSION_RANGE == pytest.approx([20 * LB, 80 * LB], rel=1e-15)
@@ -259,7 +259,7 @@ def test_tension_lb_is_one_range_for_sweep_compare_and_map(lb, ok, tmp_path, cap
 
 
 def test_page_refuses_bad_lead_and_tension():
-    from studies.dashboard import PageInputs, page_racket
+    from studies.page.dashboard import PageInputs, page_racket
 
     for lead in (-1.0, float("nan")):
         with pytest.raises(ValueError, match="lead_g must be"):

@@ -178,7 +178,7 @@ def results():
     from racket.feel import hand_feel
     from studies.bounce import rigid_bounce_table
     from studies.drop import drop
-    from studies.maps import face_map
+    from studies.face.maps import face_map
     from studies.sweeps import compare
 
     racket, ball = paper_racket(), paper_ball()

@@ -22,7 +22,7 @@ from racket.specs.ra import (
 )
 from studies.cli import main
 from studies.config import load_racket
-from studies.dashboard import MY_SHEET, PageInputs, page_racket
+from studies.page.dashboard import MY_SHEET, PageInputs, page_racket
 
 TWU = Path(__file__).parent / "data" / "twu_racquets_half.csv"  # see data/README.md
 SHEET = dict(mass_kg=0.321, balance_cm=33.0, swingweight_kgcm2=325, head_size_in2=100,

@@ -140,8 +140,8 @@ def test_an_offset_sweep_is_clipped_to_the_elliptical_bed(capsys):
 
 def test_the_sweet_spots_lie_on_the_strings_in_a_players_words(capsys):
     from racket import CATALOG, TENNIS_BALL_RADIUS
-    from studies.landmarks import HAND_FROM_BUTT
-    from studies.sweetspots import sweet_spots
+    from studies.face.landmarks import HAND_FROM_BUTT
+    from studies.face.sweetspots import sweet_spots
 
     racket = CATALOG["pure-drive-2021"].racket()
     table = sweet_spots(racket, __import__("studies.config").config.load_ball("itf-type-2"))

@@ -12,7 +12,7 @@ import pytest
 
 from ball import Ball, SineLaw
 from racket import CATALOG, Swing, impact, paper_ball, paper_racket
-from studies.maps import face_map
+from studies.face.maps import face_map
 from studies.scale import (
     MIN_TASK_IMPACTS,
     TASK_IMPACTS,

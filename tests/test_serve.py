@@ -94,8 +94,8 @@ def test_centre_of_percussion_is_simulated_and_is_the_formula_for_a_free_racket(
     from dataclasses import replace
 
     from racket import CATALOG, paper_ball
-    from studies.landmarks import hand_pivot, rigid_centre_of_percussion
-    from studies.sweetspots import sweet_spots
+    from studies.face.landmarks import hand_pivot, rigid_centre_of_percussion
+    from studies.face.sweetspots import sweet_spots
 
     free = CATALOG["pure-drive-2021"].racket()
     held = replace(free, support="hand-held")
@@ -122,7 +122,7 @@ def test_the_hand_given_from_the_tip_on_the_command_line_moves_the_centre_of_per
     import json
 
     from racket import default_racket
-    from studies.landmarks import rigid_centre_of_percussion
+    from studies.face.landmarks import rigid_centre_of_percussion
 
     out = tmp_path / "spots.json"
     assert main(["sweetspots", "--hand-cm-from-tip", "61.58", "--out", str(out)]) == 0
@@ -143,7 +143,7 @@ def test_the_hand_given_from_the_tip_on_the_command_line_moves_the_centre_of_per
     ],
 )
 def test_centre_of_percussion_formula_refuses_bad_pivots(pivot, match):
-    from studies.landmarks import rigid_centre_of_percussion
+    from studies.face.landmarks import rigid_centre_of_percussion
 
     racket = paper_racket()
     if pivot == "centre of mass":
@@ -155,7 +155,7 @@ def test_centre_of_percussion_formula_refuses_bad_pivots(pivot, match):
 @pytest.mark.parametrize("points", [40.5, 4.7, 10])
 def test_sweet_spots_points_must_be_a_whole_number_in_range(points):
     from racket import paper_ball
-    from studies.sweetspots import sweet_spots
+    from studies.face.sweetspots import sweet_spots
 
     with pytest.raises(ValueError, match=r"points must be"):
         sweet_spots(paper_racket(), paper_ball(), points=points)

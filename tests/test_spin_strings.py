@@ -3,7 +3,7 @@
 polyester against nylon, lubricated against dry, the spin of a laterally rigid bed whatever
 the ball-string friction, and the mains' slide ("a few mm", "about 2 ms").
 
-The sideways bed is :mod:`racket.bed_sideways`'s picture, its numbers chosen from the
+The sideways bed is :mod:`racket.strings.sideways`'s picture, its numbers chosen from the
 stringing and stated assumptions, none tuned to these rows.  Met: the mains' slide and
 snapback period, the order polyester > nylon, nylon's lubrication gain, and TWU's
 "nearly the same for all magnitudes of string-ball friction" in its own limit (a
@@ -20,8 +20,8 @@ import pytest
 from ball import BALL_PRESETS
 from ball.spin import INERTIA_FACTOR, BallSpin
 from common.units import LB, MPH
-from racket.bed_sideways import BedSideways, sideways, snapback_period
 from racket.solver.oblique import oblique_impact
+from racket.strings.sideways import BedSideways, sideways, snapback_period
 from studies.validation.conditions import clamped_racket
 
 BALL = BALL_PRESETS["itf-type-2"].ball()

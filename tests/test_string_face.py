@@ -23,7 +23,7 @@ from racket import (
     paper_racket,
 )
 from studies.cli import main
-from studies.maps import face_map
+from studies.face.maps import face_map
 
 SPEED = 16.5  # m/s, TWU's test speed
 
@@ -389,14 +389,14 @@ def test_face_map_landmarks_come_from_its_one_impact_call(pure_drive, grid):
     assert result.e_A_centre == pytest.approx(single.e_A[0], abs=1e-12)
     assert result.e_A_side == pytest.approx(single.e_A[1], abs=1e-12)
     # a free racket's simulated centre of percussion is the rigid-body formula's
-    from studies.landmarks import hand_pivot, rigid_centre_of_percussion
+    from studies.face.landmarks import hand_pivot, rigid_centre_of_percussion
 
     formula = rigid_centre_of_percussion(pure_drive, hand_pivot(pure_drive))
     assert result.center_of_percussion == pytest.approx(formula, abs=1e-9)
 
 
 def test_face_map_centre_of_percussion_of_a_held_racket_is_the_simulated_one(pure_drive):
-    from studies.landmarks import hand_pivot, rigid_centre_of_percussion
+    from studies.face.landmarks import hand_pivot, rigid_centre_of_percussion
 
     # the grip held still: its hand velocity is nearly linear in the impact point, so that
     # the rows' interpolation meets it to 1e-3 (a hand with mass bends it: 7e-3)

@@ -10,8 +10,8 @@ import pytest
 
 from common.units import LB
 from racket import impact
-from racket.string_sizes import GAUGES
-from racket.stringing import STRINGS
+from racket.strings.sizes import GAUGES
+from racket.strings.stringing import STRINGS
 from studies.validation import comparisons, validation_table
 from studies.validation.conditions import (
     STEEL_BALL,

@@ -24,9 +24,9 @@ from racket import (
     paper_racket,
     stringing,
 )
-from racket.specs.strings import with_tension
-from racket.string_sizes import GAUGES
-from racket.stringing import MODAL_MASS_RATIO, restrung
+from racket.specs.restring import with_tension
+from racket.strings.sizes import GAUGES
+from racket.strings.stringing import MODAL_MASS_RATIO, restrung
 
 DATA = Path(__file__).resolve().parent / "data"
 HUNDRED = 100.0 * IN2
@@ -206,7 +206,7 @@ def test_gauge_names_lie_in_the_published_charts_thickest_first():
 
 def test_the_bed_mass_counts_every_strings_chord_and_the_modal_mass_is_a_membranes():
     strung = stringing("polyester", tension_n=55 * LB)
-    length = np.sqrt(4.0 * HUNDRED * 1.33 / np.pi)  # racket.head.HEAD_ASPECT
+    length = np.sqrt(4.0 * HUNDRED * 1.33 / np.pi)  # racket.strings.head.HEAD_ASPECT
     width = length / 1.33
 
     def chords(count, span, across):  # strings evenly spaced across the ellipse

@@ -1,4 +1,4 @@
-"""``racket-impact strings`` and :func:`studies.strings.string_table` (issue 35): one racket
+"""``racket-impact strings`` and :func:`studies.strings.table.string_table` (issue 35): one racket
 strung with each string in turn, what each bed is and what it does."""
 
 import json
@@ -8,9 +8,9 @@ import pytest
 
 from common.units import KP_PER_CM
 from racket import default_ball, default_racket, impact, paper_racket
-from racket.stringing import STRING_CHOICES, restrung
+from racket.strings.stringing import STRING_CHOICES, restrung
 from studies.cli import main
-from studies.strings import string_table
+from studies.strings.table import string_table
 
 
 @pytest.fixture(scope="module")

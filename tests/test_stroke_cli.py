@@ -2,8 +2,8 @@
 the unit typed is the unit answered, a stroke of one's own and a grid of its angles, every bad
 input refused in one line naming the option before any impact, the table and its sidecar
 written together (or nothing), the plot, and the same numbers from the command line and from
-:mod:`studies.stroke` (one truth).  The runs are shared by the tests (module-scope fixtures),
-in this process."""
+:mod:`studies.strokes.stroke` (one truth).  The runs are shared by the tests (module-scope
+fixtures), in this process."""
 
 import contextlib
 import io
@@ -87,7 +87,7 @@ def test_the_plot_is_written(presets):
 
 
 def test_the_command_line_and_python_give_the_same_numbers(presets):
-    from studies.stroke import stroke_table
+    from studies.strokes.stroke import stroke_table
 
     cli = pd.read_json(presets["table"])
     api = stroke_table(STROKES, default_racket(), default_ball())
@@ -105,7 +105,7 @@ def test_the_command_line_and_python_give_the_same_numbers(presets):
 
 
 def test_a_stroke_of_ones_own_over_its_angles_in_the_units_typed(own):
-    from studies.stroke import sweep_angles
+    from studies.strokes.stroke import sweep_angles
 
     table, out = own["table"], own["out"]
     assert list(table["stroke"]) == ["own stroke"] * 4

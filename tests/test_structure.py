@@ -1,6 +1,9 @@
-"""The code's shape (issue 29): no module over 500 lines, no import circle between modules,
-and the physics packages (``ball``, ``beam``, ``racket``, ``common``) never importing
-plotting, tables or the studies on top of them.
+"""The code's shape (issues 29 and 43): no module over 500 lines, no import circle between
+modules, the physics packages (``ball``, ``beam``, ``racket``, ``bat``, ``common``) never
+importing plotting, tables or the studies on top of them, and the rooms of the developer
+guide's map (docs/developer.md, "The map of the code") each importing only the rooms below
+it: no arrow upwards, none from ``racket`` to ``bat``, and the model never reaching into the
+solver's rooms.
 
 The import graph is read from the sources with :mod:`ast`: every import, at module level or
 inside a function (a lazy import that closes a circle still closes it), each resolved to the
@@ -15,8 +18,8 @@ from pathlib import Path
 import pytest
 
 ROOT = Path(__file__).resolve().parent.parent
-PACKAGES = ("ball", "beam", "common", "racket", "studies")
-PHYSICS = ("ball", "beam", "common", "racket")
+PACKAGES = ("ball", "bat", "beam", "common", "racket", "studies")
+PHYSICS = ("ball", "bat", "beam", "common", "racket")
 """The layers below ``studies``: SI floats and arrays, no plots and no tables."""
 
 FORBIDDEN = ("matplotlib", "pandas", "studies")
@@ -217,3 +220,89 @@ def test_outside_racket_only_the_solvers_public_face_is_used():
             if isinstance(node, ast.ImportFrom) and node.module == SOLVER:
                 used |= {alias.name for alias in node.names}
     assert used <= face
+
+
+ROOMS = {
+    "common": set(),
+    "beam": {"common"},
+    "ball": {"common", "beam"},
+    "racket.strings": {"common", "ball"},
+    "racket": {"common", "beam", "ball", "racket.strings", "racket.specs", "racket.solver"},
+    "racket.specs": {"common", "beam", "racket", "racket.strings"},
+    "racket.solver": {"common", "ball", "racket", "racket.strings"},
+    "bat": {"common", "beam", "ball", "racket"},
+}
+"""The physics' rooms (docs/developer.md, "The map of the code") and the rooms each may
+import.  ``racket`` and ``racket.specs`` import each other's modules (a preset is a fitted
+spec sheet; a fit builds a racket), never in a circle of modules (the test above)."""
+
+STUDIES_TOP = {"studies.cli": ("studies.entry",), "studies.page": ("studies.cli.app",)}
+"""The top of the studies: the command line, reached only by the console entry point, and
+the page, reached only by the command line's ``app``."""
+
+
+def _room(module: str) -> str:
+    """The room of the map that holds ``module``: its longest enclosing room."""
+    rooms = [*ROOMS, *STUDIES_TOP, "studies"]
+    return max((r for r in rooms if module == r or module.startswith(r + ".")), key=len, default="")
+
+
+def test_every_module_has_a_room():
+    assert {m for m in MODULES if not _room(m)} == set()
+
+
+def test_each_physics_room_imports_only_the_rooms_below_it():
+    graph = _graph()
+    upwards = {
+        f"{module} -> {target}"
+        for module, targets in graph.items()
+        if _room(module) in ROOMS
+        for target in targets
+        if _room(target) != _room(module) and _room(target) not in ROOMS[_room(module)]
+    }
+    assert upwards == set()
+
+
+def test_a_racket_never_imports_a_bat():
+    """Bats build on the racket's hand, block system and solver; nothing of the racket (or
+    below it) knows a bat: the solver strikes either through :class:`racket.implement.Implement`."""
+    graph = _graph()
+    reached = {
+        f"{module} -> {target}"
+        for module in MODULES
+        if module.split(".")[0] in ("common", "beam", "ball", "racket")
+        for target in graph[module]
+        if target.split(".")[0] == "bat"
+    }
+    assert reached == set()
+    assert {"racket.racket", "bat.bat"} <= {
+        m for m in MODULES if "racket.implement" in graph[m]
+    }  # both implements derive from the solver's face
+
+
+def test_the_command_line_and_the_page_are_the_top():
+    graph = _graph()
+    reached = {
+        f"{module} -> {target}"
+        for module, targets in graph.items()
+        for target in targets
+        for top, users in STUDIES_TOP.items()
+        if _room(target) == top and _room(module) != top and module not in users
+    }
+    assert reached == set()
+
+
+def test_the_rooms_finder_and_the_layers_can_fail():
+    assert _room("racket.strings.bed") == "racket.strings"
+    assert _room("racket.solver.driver") == "racket.solver"
+    assert _room("studies.page.app") == "studies.page"
+    assert _room("studies.face.maps") == "studies"
+    assert "bat" not in ROOMS["racket"] and "racket" in ROOMS["bat"]
+
+
+def test_the_studies_root_holds_only_what_serves_many_jobs():
+    """Issue 43: the page, the bats, the strings, the strokes and the face each have a room;
+    at most 20 modules stay at ``studies/``' root, none of them named for one job."""
+    root = sorted(p.stem for p in (ROOT / "studies").glob("*.py"))
+    assert len(root) <= 20, root
+    assert [n for n in root if n.startswith(("page_", "bat_", "plots_"))] == []

@@ -24,7 +24,7 @@ from collections.abc import Callable, Iterator
 import griffe
 
 ROLE = re.compile(r":(?:py:)?(?:class|func|meth|attr|mod|data|exc|obj|const):`(?P<body>[^`]+)`")
-PACKAGES = {"ball", "beam", "common", "racket", "studies"}
+PACKAGES = {"ball", "bat", "beam", "common", "racket", "studies"}
 
 
 def convert(text: str, resolve: Callable[[str], str]) -> str:

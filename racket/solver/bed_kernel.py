@@ -11,7 +11,7 @@ energy W(w_max) = k w_max**2 (1/2 + s w_max**2 / 4) it stored: its deflection is
 curve's set back by delta (1 - F / F_max), with delta = 2 loss W(w_max) / F_max, the loop's
 area being delta F_max / 2 = loss W (the ball's linear law unloads the same way, on a line).
 The unloading curve keeps rising with F for a loss below a third
-(:data:`racket.racket.BED_LOSS_MAX`), so the force solve keeps a unique root.
+(:data:`racket.strings.bed.BED_LOSS_MAX`), so the force solve keeps a unique root.
 
 The solver's linear part of the bed (F / k, in the series compliance ``a`` with the frame's
 step) is unchanged; these functions give what the bed adds to it, h(F) = w(F) - F / k (+ the

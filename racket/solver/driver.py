@@ -41,8 +41,7 @@ from ball import Ball, SineLaw, warn_if_squashed
 from common.checks import finite, finite_array, in_range, shown
 from common.checks import speed as check_speed
 from common.typechecks import flag, instance
-from racket.bat import Bat
-from racket.racket import Racket
+from racket.implement import Implement
 from racket.solver import layout
 from racket.solver.dispatch import IMPACTS_PER_THREAD, LOCKSTEP_MIN, one_blas_thread, pool_size
 from racket.solver.dispatch import compile_notice as _compile_notice  # noqa: F401  (kept importable here)
@@ -89,7 +88,7 @@ CHUNK_POINTS = 4096
 
 
 def impact(
-    racket: Racket,
+    racket: Implement,
     ball: Ball,
     position,
     speed: float,
@@ -105,8 +104,9 @@ def impact(
 
     Parameters
     ----------
-    racket : Racket or Bat
-        The racket (or bat: struck on its own surface, :class:`racket.Bat`), initially still
+    racket : Implement
+        The racket (:class:`racket.Racket`) or bat (:class:`bat.Bat`, struck on its own
+        surface), initially still
         unless ``swing_speed`` > 0.
     ball : Ball
         The ball (any law of :mod:`ball`, the unhappy SineLaw included).
@@ -169,7 +169,7 @@ def impact(
     >>> round(r.e, 3), round(r.e_A, 3)
     (0.887, 0.442)
     """
-    instance("racket", racket, (Racket, Bat), "a racket.Racket or racket.Bat")
+    instance("racket", racket, Implement, "a racket.Racket or bat.Bat")
     instance("ball", ball, Ball, "a ball.Ball")
     if histories != "force":
         histories = flag("histories", histories)
@@ -189,7 +189,7 @@ def impact(
                 f"pivot must lie beyond the impact points and at most {PIVOT_BEYOND_BUTT:g} m "
                 f"beyond the butt, in ({x.max():g}, {reach:g}] m from the tip, got {shown(pivot)}"
             )
-    if isinstance(racket, Bat) and isinstance(ball.law, SineLaw):
+    if np.isinf(racket.contact.stiffness) and isinstance(ball.law, SineLaw):  # a bare surface
         raise ValueError(
             "the unhappy (sine-law) ball is for rackets: its Xo search takes a string bed in "
             "series; strike a bat with a monotone ball (e.g. ball.baseball)"
@@ -275,7 +275,7 @@ def _swing_speeds(swing_speed, count: int) -> np.ndarray:
         ) from None
 
 
-def _time_step_batches(racket: Racket, ball: Ball, closing: np.ndarray) -> list:
+def _time_step_batches(racket: Implement, ball: Ball, closing: np.ndarray) -> list:
     """The impacts (indices into ``closing``, the closing speeds [m/s]) that share a time
     step: one per closing speed (it sets the contact time of a non-linear ball), so that
     each impact's result depends on its own inputs only; a linear ball has one.  ValueError

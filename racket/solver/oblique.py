@@ -6,7 +6,7 @@ history, for all impact points at once.
 The coupling is one-way (:mod:`ball.grip`): the normal outcome is the head-on one to the
 last bit, whatever the tangential speed and spin; the tangential force moves the racket in
 the plane of its strings (:mod:`racket.in_plane`) and pulls the mains sideways
-(:mod:`racket.bed_sideways`).
+(:mod:`racket.strings.sideways`).
 """
 
 from __future__ import annotations
@@ -20,12 +20,12 @@ from ball.grip import Grip, slide
 from ball.spin import BallSpin
 from common.checks import SPEED_RANGE, finite_array
 from common.typechecks import instance
-from racket.bed_sideways import BedSideways, sideways
 from racket.in_plane import inverse_mass
 from racket.racket import Racket
 from racket.solver.dispatch import run_rows
 from racket.solver.driver import impact
 from racket.solver.outcome import Impact
+from racket.strings.sideways import BedSideways, sideways
 from racket.stroke import LIMITS
 
 GRIP_SUBSTEPS = 2
@@ -130,7 +130,7 @@ def oblique_impact(
         The ball's radius, inertia, tangential stiffness and offset (default
         :class:`ball.spin.BallSpin`, a tennis ball's; its radius is the ball's if it has one).
     side : BedSideways, optional
-        The bed sideways; default :func:`racket.bed_sideways.sideways` of the racket's bed.
+        The bed sideways; default :func:`racket.strings.sideways.sideways` of the racket's bed.
 
     Returns
     -------
@@ -139,7 +139,9 @@ def oblique_impact(
     instance("racket", racket, Racket, "a racket.Racket")
     instance("ball", ball, Ball, "a ball.Ball")
     instance("ball_spin", ball_spin, (BallSpin, type(None)), "a ball.spin.BallSpin or None")
-    instance("side", side, (BedSideways, type(None)), "a racket.bed_sideways.BedSideways or None")
+    instance(
+        "side", side, (BedSideways, type(None)), "a racket.strings.sideways.BedSideways or None"
+    )
     slip_velocity = _vectors("slip_velocity", slip_velocity, 2, "m/s", SPEED_RANGE[1])
     spin = _vectors("spin", spin, 3, "rad/s", SPIN_MAX)
     if ball_spin is None:

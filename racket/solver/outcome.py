@@ -35,7 +35,7 @@ class Impact:
     """Outcome of :func:`impact`; every attribute is an array over the impact positions
     (a float, or 1-D history, when a single position was given).
 
-    On a bat (:class:`racket.Bat`) "racket" reads "bat" and "strings" its bare surface: the
+    On a bat (:class:`bat.Bat`) "racket" reads "bat" and "strings" its bare surface: the
     string fields (``string_vibration``, ``string_loss``, ``string_deflection``) are 0.  A
     pivoted bat's ``v_cm`` and ``omega`` are its turn about the pivot (its dc motion), its
     ``effective_mass`` is I_pivot / d**2, and its ``mode_energy`` (of the free bat's modes,

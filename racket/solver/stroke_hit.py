@@ -10,9 +10,9 @@ from dataclasses import dataclass
 from ball.bodies import Ball
 from common.checks import finite
 from common.typechecks import instance
-from racket.bed_sideways import BedSideways
 from racket.racket import Racket
 from racket.solver.oblique import ObliqueImpact, oblique_impact
+from racket.strings.sideways import BedSideways
 from racket.stroke import Flight, Stroke
 
 
@@ -85,7 +85,7 @@ def hit(
     position : float, optional
         The impact point [m from the tip]; default the string bed's centre.
     side : BedSideways, optional
-        The bed sideways (default: the racket's bed's, :func:`racket.bed_sideways.sideways`).
+        The bed sideways (default: the racket's bed's, :func:`racket.strings.sideways.sideways`).
 
     Returns
     -------

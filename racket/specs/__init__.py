@@ -9,7 +9,8 @@ fitting in ``ivtools``).
 * :mod:`~racket.specs.stiffness`: the bending-stiffness profile and the flex test;
 * :mod:`~racket.specs.ra`: the first free frequency from the RA rating (a regression on 622
   measured rackets);
-* :mod:`~racket.specs.strings`: the string bed's stiffness from the tension;
+* :mod:`~racket.specs.restring`: a racket restrung at another tension (the bed's stiffness
+  from the tension is the string room's, :mod:`racket.strings.tension`);
 * :mod:`~racket.specs.fit`: the fitted beam and :func:`from_specs`;
 * :mod:`~racket.specs.catalog`: well-known rackets with sourced sheets.
 """
@@ -19,7 +20,6 @@ from racket.specs.parts import PARTS
 from racket.specs.ra import f1_from_ra, fit_ra_regression
 from racket.specs.sheet import SPEC_RANGES, SpecSheet, spec_sheet
 from racket.specs.stiffness import flex_test_stiffness
-from racket.specs.strings import string_bed_stiffness
 
 __all__ = [
     "PARTS",
@@ -32,5 +32,4 @@ __all__ = [
     "flex_test_stiffness",
     "from_specs",
     "spec_sheet",
-    "string_bed_stiffness",
 ]

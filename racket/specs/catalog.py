@@ -14,7 +14,7 @@ Nor what a racket is strung with: each entry's :attr:`Entry.strung` is **an assu
 fresh polyester 16L (the commonest string of the TWU string database: 406 polyesters against
 213 nylons and 15 guts) at the sheet's tension, in the racket's own pattern (TWU's racquet table,
 ``String Pattern``), so that a catalogue racket has a real string bed (its stretch and loss,
-:mod:`racket.stringing`).
+:mod:`racket.strings.stringing`).
 """
 
 from __future__ import annotations

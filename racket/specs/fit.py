@@ -14,7 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from beam import Beam
-from racket.racket import Racket, StringBed
+from racket.racket import Racket
 from racket.specs.mass_fit import fit_masses
 from racket.specs.parts import PARTS, Layout, layout
 from racket.specs.ra import f1_from_ra
@@ -25,7 +25,8 @@ from racket.specs.stiffness import (
     flex_test_stiffness,
     torsional_profile,
 )
-from racket.stringing import stringing
+from racket.strings.bed import StringBed
+from racket.strings.stringing import stringing
 
 EDGE_FRACTION = 0.02
 """A fitted part within this fraction of its range from an end is reported as at the edge
@@ -200,7 +201,7 @@ def from_specs(
         String tension [lb or N] (membrane model :func:`string_bed_stiffness`), or the
         string-plane stiffness [N/m].  Give one.
     string : str, optional
-        What the racket is strung with (:func:`racket.stringing.stringing`: a preset such
+        What the racket is strung with (:func:`racket.strings.stringing.stringing`: a preset such
         as ``"polyester"``, or ``"MAINS/CROSSES"``): the bed's stiffness then follows from
         the tension, the pattern and the state, and it gains the string's stretch and loss
         (with ``string_stiffness_n_m``, that stiffness is kept, as measured).  None
@@ -219,7 +220,7 @@ def from_specs(
     Racket
         Its beam has the fitted profile (:func:`fit_profile`), torsion included; its
         elliptical string bed has the head size and the membrane's stiffness profile (the
-        sheet's stiffness at the centre, rising towards the frame, :mod:`racket.membrane`).
+        sheet's stiffness at the centre, rising towards the frame, :mod:`racket.strings.membrane`).
 
     Raises
     ------

@@ -7,7 +7,7 @@ Seen face-on (x along the racket from the tip, y across it), a racket is
 * the **hoop**, the frame around the head with its grommets: an ellipse of uniform mass per
   arc length whose centre line is :data:`FRAME_INSET` outside the string bed;
 * the **strings**, spread evenly over the elliptical string bed (length / width
-  :data:`~racket.head.HEAD_ASPECT`, area the head size);
+  :data:`~racket.strings.head.HEAD_ASPECT`, area the head size);
 * the **throat**, from the bottom of the hoop to the handle, uniform along the racket, its
   two arms closing linearly from :data:`THROAT_SPREAD` of the head's half width to the
   axis;
@@ -30,7 +30,7 @@ import numpy as np
 
 from beam import SWINGWEIGHT_AXIS
 from common.units import IN2
-from racket.head import HEAD_ASPECT, Hoop, ellipse_axes
+from racket.strings.head import HEAD_ASPECT, Hoop, ellipse_axes
 
 
 @dataclass(frozen=True)

@@ -15,7 +15,7 @@ from beam import SWINGWEIGHT_AXIS
 from common import checks as slip  # the slips of unit: slip.CM_AS_M, ...
 from common.checks import finite, in_range, positive, shown
 from common.units import IN2, LB, POINT
-from racket.specs.strings import TENSION_RANGE_LB, string_bed_stiffness
+from racket.strings.tension import TENSION_RANGE_LB, string_bed_stiffness
 
 
 @dataclass(frozen=True)

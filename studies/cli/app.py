@@ -11,7 +11,7 @@ def add_app(sub) -> None:
     p.add_argument("--host", default="127.0.0.1", help="address to serve on (default 127.0.0.1)")
     p.add_argument(
         "--port", type=int, default=8050, help="port (default 8050; the docs' server takes 8000)"
-    )  # studies.app.DEFAULT_PORT, not imported here: Shiny is optional
+    )  # studies.page.app.DEFAULT_PORT, not imported here: Shiny is optional
     p.set_defaults(func=cmd_app)
 
 
@@ -19,7 +19,7 @@ def cmd_app(args) -> int:
     """``racket-impact app``."""
     port = int(_count("--port", args.port, 1024, 65535))
     try:
-        from studies.app import run
+        from studies.page.app import run
     except ImportError:
         raise ValueError("the page needs Shiny: pip install 'racket-impact[app]'") from None
 

@@ -1,7 +1,7 @@
 """``racket-impact bat sweep|bbcor|feel`` (issue 37): the exit speed along a bat's barrel for a
-swing and a pitch (:func:`studies.bat.bat_sweep`), the certification numbers
-(:func:`studies.bat_certification.bbcor_test`) and the handle's motion after an impact
-(:func:`studies.bat_feel.bat_feel`); positions in cm from the knob, speeds answered in the
+swing and a pitch (:func:`studies.bat.sweep.bat_sweep`), the certification numbers
+(:func:`studies.bat.certification.bbcor_test`) and the handle's motion after an impact
+(:func:`studies.bat.feel.bat_feel`); positions in cm from the knob, speeds answered in the
 unit typed.  One parser for the three: an option that does not apply to the question asked
 is refused in one line.
 """
@@ -12,6 +12,10 @@ from dataclasses import replace
 from pathlib import Path
 
 from ball import DEFAULT_BASEBALL
+from bat import DEFAULT_BAT, BatSwing
+from bat.bat import BAT_SUPPORTS
+from bat.pivot import CLAMP_OFFSET, PIVOT_FROM_KNOB
+from bat.swing import ANGULAR_VELOCITY_RANGE, CENTRE_BEYOND_KNOB, CM_SPEED_RANGE
 from common.checks import (
     INCH_AS_CM,
     M_AS_CM,
@@ -25,11 +29,9 @@ from common.checks import (
     too_fast,
 )
 from common.units import MPH, SPEED_SUFFIXES, SPEED_UNITS
-from racket import DEFAULT_BAT, BatSwing
-from racket.bat import BAT_SUPPORTS
-from racket.bat_swing import ANGULAR_VELOCITY_RANGE, CENTRE_BEYOND_KNOB, CM_SPEED_RANGE
-from racket.pivot import CLAMP_OFFSET, PIVOT_FROM_KNOB
-from studies.bat import (
+from studies.bat.certification import BBCOR_TEST_SPEED
+from studies.bat.feel import FEEL_DURATION, FEEL_FROM_KNOB, HANDLE_POINTS
+from studies.bat.sweep import (
     ANGULAR_VELOCITY,
     CM_SPEED,
     FASTEST_PITCH,
@@ -38,8 +40,6 @@ from studies.bat import (
     SWEEP_STEP,
     SWEET_ZONE_FRACTION,
 )
-from studies.bat_certification import BBCOR_TEST_SPEED
-from studies.bat_feel import FEEL_DURATION, FEEL_FROM_KNOB, HANDLE_POINTS
 from studies.cli.files import check_outputs, save_plot, say_conditions, write_table
 from studies.cli.options import (
     _ball_arg,
@@ -151,7 +151,7 @@ def _bats(args, support: str | None = None) -> list:
     """(label, Bat) of each ``--bat``, held by ``support`` or ``--support``, a pivoted one
     with ``--pivot-from-knob`` and ``--clamps``.
     """
-    from studies.bat_config import load_bat
+    from studies.bat.config import load_bat
 
     support = support or args.support
     bats = []
@@ -171,7 +171,7 @@ def _bats(args, support: str | None = None) -> list:
 
 
 def _pivot(args) -> float | None:
-    """``--pivot-from-knob`` [cm] checked (the rig's range, :class:`racket.Bat`), in m."""
+    """``--pivot-from-knob`` [cm] checked (the rig's range, :class:`bat.Bat`), in m."""
     if args.pivot_from_knob is None:
         return None
     return in_range("--pivot-from-knob", args.pivot_from_knob, 2.0, 50.0, "cm from the knob",
@@ -179,7 +179,7 @@ def _pivot(args) -> float | None:
 
 
 def _clamps(args) -> float | None:
-    """``--clamps`` [cm] checked (:class:`racket.Bat`'s range), in m."""
+    """``--clamps`` [cm] checked (:class:`bat.Bat`'s range), in m."""
     if args.clamps is None:
         return None
     return in_range("--clamps", args.clamps, 0.0, 5.0, "cm", slips=(MM_AS_CM,)) / 100
@@ -297,7 +297,7 @@ def _sweep(args) -> int:
     import numpy as np
     import pandas as pd
 
-    from studies.bat import bat_sweep
+    from studies.bat.sweep import bat_sweep
 
     unit = speed_unit(args, "pitch", "cm_speed")
     pitch = _pitch(args, PITCH_SPEED)
@@ -349,7 +349,7 @@ def _sweep(args) -> int:
 def _bbcor(args) -> int:
     import pandas as pd
 
-    from studies.bat_certification import bbcor_test
+    from studies.bat.certification import bbcor_test
 
     unit = speed_unit(args, "pitch")
     speed = _pitch(args, BBCOR_TEST_SPEED, fastest=False)
@@ -382,7 +382,7 @@ def _feel(args) -> int:
     import numpy as np
 
     from common.units import GRAVITY
-    from studies.bat_feel import DURATION_RANGE, bat_feel
+    from studies.bat.feel import DURATION_RANGE, bat_feel
 
     unit = speed_unit(args, "pitch", "cm_speed")
     speed = _pitch(args, PITCH_SPEED)

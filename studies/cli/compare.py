@@ -65,7 +65,7 @@ def cmd_compare(args) -> int:
     """``racket-impact compare``."""
     from dataclasses import replace
 
-    from studies.maps import compare_summary
+    from studies.face.maps import compare_summary
     from studies.sweeps import check_impacts, compare
 
     check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
@@ -149,9 +149,9 @@ def _strung(args, racket, value):
     if number is None:
         return racket
     if tension:
-        from racket.specs.strings import with_tension
+        from racket.specs.restring import with_tension
 
         return with_tension(racket, number)
-    from racket.stringing import restrung
+    from racket.strings.stringing import restrung
 
     return replace(racket, strings=restrung(racket.strings, stiffness=number))

@@ -1,6 +1,6 @@
 """``racket-impact court``: does this court play fast (issue 36)?  A ball's bounce on the court
 presets by name or a court of one's own, and each court's ITF pace rating; angles in degrees
-and spins in rpm as typed, in SI for the core (:mod:`studies.court`).
+and spins in rpm as typed, in SI for the core (:mod:`studies.strokes.court`).
 """
 
 from __future__ import annotations
@@ -75,7 +75,7 @@ def add_court(sub) -> None:
 def cmd_court(args) -> int:
     """``racket-impact court``."""
     from ball.court import Court
-    from studies.court import court_table
+    from studies.strokes.court import court_table
 
     check_outputs(tables=[("--out", args.out)])
     names = list(args.names) or list(COURTS)

@@ -53,7 +53,7 @@ def add_map(sub) -> None:
 
 def cmd_map(args) -> int:
     """``racket-impact map``."""
-    from studies.maps import FIELDS, check_map_points, face_map, face_points
+    from studies.face.maps import FIELDS, check_map_points, face_map, face_points
 
     check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
     scale = _scale(args)
@@ -106,8 +106,8 @@ def add_sweetspots(sub) -> None:
 
 def cmd_sweetspots(args) -> int:
     """``racket-impact sweetspots``."""
-    from studies.landmarks import HANDLE_REACH
-    from studies.sweetspots import sweet_spots
+    from studies.face.landmarks import HANDLE_REACH
+    from studies.face.sweetspots import sweet_spots
 
     check_outputs(tables=[("--out", args.out)])
     swing = _swing(args)

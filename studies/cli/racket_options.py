@@ -14,12 +14,12 @@ from common.checks import KN_AS_N, in_range, shown
 from common.units import GRAVITY, KP_PER_CM
 from racket import DEFAULT_RACKET, GRIPS, STRINGS, SUPPORTS
 from racket.racket import ADDED_MASS_MAX
-from racket.string_sizes import GAUGE_RANGE, GAUGES, diameter, parse_pattern
-from racket.stringing import restrung, stringing
+from racket.strings.sizes import GAUGE_RANGE, GAUGES, diameter, parse_pattern
+from racket.strings.stringing import restrung, stringing
 from studies.cli.options import _Once, _tension, given, refuse_unused, speed_unit
 from studies.conditions import conditions_line, racket_details
 from studies.config import RACKETS, load_racket
-from studies.string_inputs import DT_RANGE, LB_AS_KG, N_M_AS_KP_CM, TENSION_KG_RANGE
+from studies.strings.inputs import DT_RANGE, LB_AS_KG, N_M_AS_KP_CM, TENSION_KG_RANGE
 from studies.sweeps import STRING_STIFFNESS_RANGE
 
 _LEAD = re.compile(r"^\s*(\d+(?:\.\d*)?|\.\d+)\s*(?:g)?\s*@\s*(.+?)\s*$")
@@ -162,7 +162,7 @@ def stiffnesses(args) -> list[float] | None:
 
 def restring(racket, args, stiffness: float | None = None):
     """``racket`` strung as ``--string``, ``--gauge``, ``--pattern`` and ``--played`` say
-    (:func:`racket.stringing.restrung`: what is given replaces the racket's), with the bed's
+    (:func:`racket.strings.stringing.restrung`: what is given replaces the racket's), with the bed's
     ``stiffness`` [N/m] if given; each option checked and refused as typed.
     """
     gauge = args.gauge and diameter(args.gauge, "--gauge", "mm")
@@ -229,7 +229,7 @@ def racket_from(args, spec: str | None = None, grid: bool = False):
     else:
         racket = restring(replace(racket, support=supports[0]), args, stiffness and stiffness[0])
         if newtons:
-            from racket.specs.strings import with_tension
+            from racket.specs.restring import with_tension
 
             racket = with_tension(racket, newtons[0])
     if getattr(args, "grip", None):

@@ -40,7 +40,7 @@ def cmd_modes(args) -> int:
     """``racket-impact modes``."""
     import pandas as pd
 
-    from studies.landmarks import hand_pivot, rigid_centre_of_percussion
+    from studies.face.landmarks import hand_pivot, rigid_centre_of_percussion
 
     check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
     count = _count("--count", args.count, 1, MAX_MODES)
@@ -161,7 +161,7 @@ def cmd_specs(args) -> int:
 
 def bed_text(bed) -> str:
     """The string bed as ``specs`` prints it: its stiffness [N/m] and the ERT's DT [kp/cm],
-    and, for a strung bed, its stretch, loss and mass (:mod:`racket.stringing`).
+    and, for a strung bed, its stretch, loss and mass (:mod:`racket.strings.stringing`).
     """
     said = (
         f"string bed: {bed.stiffness:.0f} N/m at its centre (ERT dynamic tension "

@@ -106,7 +106,7 @@ def _with_unit(name: str, unit: str) -> str:
 
 
 def spots_view(spots):
-    """The sweet spots (:func:`studies.sweetspots.sweet_spots`) as printed: each spot in a
+    """The sweet spots (:func:`studies.face.sweetspots.sweet_spots`) as printed: each spot in a
     player's words, where it is, and what it means.
 
     Parameters
@@ -119,7 +119,7 @@ def spots_view(spots):
 
 
 def compare_view(summary, unit: str, swung: bool):
-    """The summary of ``compare`` (:func:`studies.maps.compare_summary`) as printed: one
+    """The summary of ``compare`` (:func:`studies.face.maps.compare_summary`) as printed: one
     column per racket, one row per quantity, its unit in a ``unit`` column (speeds in mph
     in ``unit``; positions from the tip, as everywhere).
 

@@ -1,5 +1,5 @@
 """``racket-impact strings``: one racket strung with each string in turn, for a stringer
-(:mod:`studies.strings`).
+(:mod:`studies.strings.table`).
 """
 
 from __future__ import annotations
@@ -22,7 +22,7 @@ from studies.sweeps import BALL_SPEED
 
 def add_strings(sub) -> None:
     """The ``strings`` subcommand, on the subparsers ``sub``."""
-    from racket.stringing import STRING_CHOICES
+    from racket.strings.stringing import STRING_CHOICES
 
     what = ("one racket strung with each string in turn: the bed's stiffness (DT), stretch "
             "and loss, power, dwell time and the serve")  # fmt: skip
@@ -41,8 +41,8 @@ def add_strings(sub) -> None:
 
 def cmd_strings(args) -> int:
     """``racket-impact strings``."""
-    from racket.stringing import stringing
-    from studies.strings import string_table
+    from racket.strings.stringing import stringing
+    from studies.strings.table import string_table
 
     check_outputs(tables=[("--out", args.out)])
     for name in args.strings:

@@ -1,6 +1,6 @@
 """``racket-impact stroke``: the ball's speed, launch and spin after a stroke (issue 36), for
 the presets by name or a stroke of one's own; angles in degrees and spins in rpm as typed,
-in SI for the core (:mod:`studies.stroke`).
+in SI for the core (:mod:`studies.strokes.stroke`).
 """
 
 from __future__ import annotations
@@ -119,8 +119,8 @@ def _angle(p, flag: str, field: str, what: str, many: bool = False) -> None:
 
 def cmd_stroke(args) -> int:
     """``racket-impact stroke``."""
-    from racket.bed_sideways import sideways
-    from studies.stroke import bed_words, stroke_table
+    from racket.strings.sideways import sideways
+    from studies.strokes.stroke import bed_words, stroke_table
 
     check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
     racket, ball = racket_from(args), load_ball(args.ball)
@@ -162,7 +162,7 @@ def cmd_stroke(args) -> int:
     if args.out:
         write_table(table, args.out)
     if args.plot:
-        from studies.stroke import plot_speed_spin
+        from studies.strokes.stroke import plot_speed_spin
 
         save_plot(plot_speed_spin(table, unit=unit, conditions=conditions), args.plot)
     return 0

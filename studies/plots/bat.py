@@ -20,12 +20,12 @@ def _many(results) -> list:
 
 def plot_exit_speed(sweeps, ax=None, unit: str | None = None, conditions: str | None = None):
     """The exit (batted-ball) speed along the bat of one sweep or several
-    (:class:`studies.bat.BatSweep`), each with its peak marked and its sweet zone shaded.
+    (:class:`studies.bat.sweep.BatSweep`), each with its peak marked and its sweet zone shaded.
 
     Parameters
     ----------
     sweeps : BatSweep or sequence of BatSweep
-        What :func:`studies.bat.bat_sweep` returned.
+        What :func:`studies.bat.sweep.bat_sweep` returned.
     ax : Axes, optional
         The Axes to draw on; None: a new figure's.
     unit : str, optional
@@ -56,19 +56,19 @@ def plot_exit_speed(sweeps, ax=None, unit: str | None = None, conditions: str | 
 
 
 def plot_bbcor(tests, ax=None, conditions: str | None = None):
-    """BBCOR along the barrel of one bat or several (:class:`studies.bat_certification.BbcorTest`),
+    """BBCOR along the barrel of one bat or several (:class:`studies.bat.certification.BbcorTest`),
     the location of its maximum marked, against the limit.
 
     Parameters
     ----------
     tests : BbcorTest or sequence of BbcorTest
-        What :func:`studies.bat_certification.bbcor_test` returned.
+        What :func:`studies.bat.certification.bbcor_test` returned.
     ax : Axes, optional
         The Axes to draw on; None: a new figure's.
     conditions : str, optional
         What the tests are of, drawn as the figure's heading; None: none drawn.
     """
-    from racket.certification import BBCOR_LIMIT
+    from bat.certification import BBCOR_LIMIT
 
     tests = _many(tests)
     made = ax is None
@@ -88,14 +88,14 @@ def plot_bbcor(tests, ax=None, conditions: str | None = None):
 
 
 def plot_handle(feel, ax=None, conditions: str | None = None):
-    """The handle's motion after an impact (:class:`studies.bat_feel.BatFeel`), at each point
+    """The handle's motion after an impact (:class:`studies.bat.feel.BatFeel`), at each point
     read: its displacement (the vibration's part dashed) and its velocity, against time (the
     contact shaded).  ``ax``: two Axes, or None for a new figure; returns them.
 
     Parameters
     ----------
     feel : BatFeel
-        What :func:`studies.bat_feel.bat_feel` returned.
+        What :func:`studies.bat.feel.bat_feel` returned.
     ax : sequence of 2 Axes, optional
         The displacement's and the velocity's Axes; None: a new figure's.
     conditions : str, optional

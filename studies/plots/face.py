@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.patches import Ellipse
 
-from studies.maps import SWEET_FRACTION
+from studies.face.maps import SWEET_FRACTION
 from studies.plots.axes import _axes
 from studies.plots.layout import FROM_TIP, finish
 from studies.plots.units import speed_scale
@@ -18,7 +18,7 @@ _AT_REST = ("e_A", "exit_speed")
 racket at rest, which is e_A times the ball's speed."""
 
 _LARGER_IS_BETTER = ("e", "exit_speed_swung")
-"""The other fields whose peak region (within :data:`studies.maps.SWEET_FRACTION` of their
+"""The other fields whose peak region (within :data:`studies.face.maps.SWEET_FRACTION` of their
 largest value) is drawn: players seek their largest values."""
 
 
@@ -29,10 +29,10 @@ def plot_face_map(
     unit: str = "m/s",
     conditions: str | None = None,
 ):
-    """A :class:`studies.maps.FaceMap` as filled contours over the face, tip up: the
+    """A :class:`studies.face.maps.FaceMap` as filled contours over the face, tip up: the
     string bed's outline, where the ball's centre may land (dotted), the first mode's node
     line, the centre of percussion for a hand at the grip, and the region of the field's own
-    largest values: the sweet area (e_A within :data:`studies.maps.SWEET_FRACTION` of its
+    largest values: the sweet area (e_A within :data:`studies.face.maps.SWEET_FRACTION` of its
     largest, with its area) over e_A and the exit speed off the racket at rest; over e and
     the swung racket's exit speed, where they are within that fraction of their own largest
     (marked); none over the vibration and the twist rate.
@@ -41,7 +41,7 @@ def plot_face_map(
     ----------
     face_map : FaceMap
     field : str
-        One of :data:`studies.maps.FIELDS` (default ``"e_A"``).
+        One of :data:`studies.face.maps.FIELDS` (default ``"e_A"``).
     ax : Axes, optional
         The Axes to draw on; None: a new figure's.
     unit : str
@@ -50,7 +50,7 @@ def plot_face_map(
     conditions : str, optional
         The run's conditions, drawn as the figure's heading; None: none drawn.
     """
-    from studies.maps import FIELDS
+    from studies.face.maps import FIELDS
 
     if field not in FIELDS or getattr(face_map, field) is None:
         have = [f for f in FIELDS if getattr(face_map, f) is not None]
@@ -108,7 +108,7 @@ def plot_face_map(
 def _peak_region(ax, face_map, field: str, y_cm, x_cm, values) -> None:
     """Draw the edge of the region of ``field``'s own largest values (red), labelled: the
     sweet area over the fields at rest that share it, else the region within
-    :data:`studies.maps.SWEET_FRACTION` of the field's largest value on the grid with that
+    :data:`studies.face.maps.SWEET_FRACTION` of the field's largest value on the grid with that
     value marked, for the fields players want large; nothing for the others.
     """
     if field in _AT_REST:

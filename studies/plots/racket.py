@@ -10,7 +10,7 @@ from matplotlib.patches import Ellipse, Rectangle
 
 from common.units import SPEED_SUFFIXES, SPEED_UNITS
 from racket import Racket
-from studies.landmarks import hand_pivot, percussion_centre, rigid_centre_of_percussion
+from studies.face.landmarks import hand_pivot, percussion_centre, rigid_centre_of_percussion
 from studies.plots.axes import _axes
 from studies.plots.layout import FROM_TIP, finish, legend_outside
 from studies.plots.units import speed_scale
@@ -146,7 +146,7 @@ def draw_racket(racket: Racket, ax, y0: float, height: float):
 
 def _simulated_cop(result, racket: Racket, pivot: float):
     """The centre of percussion [m from the tip] from one curve's impacts
-    (:func:`studies.landmarks.percussion_centre`), or None if they are not of a racket at
+    (:func:`studies.face.landmarks.percussion_centre`), or None if they are not of a racket at
     rest along its axis or it is not among them.
 
     Parameters
@@ -186,7 +186,7 @@ def plot_cor_along_racket(
     curves (sharing their x axis, in cm from the tip).
 
     Marks the mode-1 node, the centre of percussion for a pivot at the hand (default
-    :func:`studies.landmarks.hand_pivot`; from the impacts, :func:`studies.landmarks.
+    :func:`studies.face.landmarks.hand_pivot`; from the impacts, :func:`studies.face.landmarks.
     percussion_centre`, for one curve of a racket at rest, else the rigid-body formula),
     the points of largest e and largest e_A, and
     (with a cross) the unhappy-ball impacts that have no self-consistent Xo.  A sweep table
@@ -203,7 +203,7 @@ def plot_cor_along_racket(
         The Axes to draw on; None: a new figure's.
     pivot : float, optional
         Pivot of the centre of percussion [m from the tip]; None: the hand
-        (:func:`studies.landmarks.hand_pivot`).
+        (:func:`studies.face.landmarks.hand_pivot`).
     conditions : str, optional
         The run's conditions, drawn as the figure's heading; None: none drawn.
     """

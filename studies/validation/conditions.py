@@ -17,7 +17,7 @@ from ball.catalog import ITF_DROP_SPEED, TWU_SPEED
 from common.units import GRAVITY, LB
 from racket import CATALOG, GRIPS, Hand, from_specs, impact
 from racket.specs.ra import f1_from_ra
-from racket.stringing import stringing
+from racket.strings.stringing import stringing
 from racket.system import held_mode, held_system
 
 BALL = "itf-type-2"
@@ -37,7 +37,7 @@ CLAMPED_STRING = "nylon"
 """The string of the clamped-string drops, whose sources name none: nylon (synthetic gut) at
 its usual gauge, 16x19, **an assumption** (the commonest string before polyester spread in
 the 2000s).  The bed's stiffness is the row's; its stretch and loss follow from the string
-(:meth:`racket.stringing.Stringing.bed`)."""
+(:meth:`racket.strings.stringing.Stringing.bed`)."""
 
 STEEL_BALL = Ball(mass=0.0571, law=LinearSpring(k=5e7))
 """Kawazoe's steel ball, "a non-deforming ball": 5e7 N/m, about 1700 times the bed, at the
@@ -47,7 +47,7 @@ the COR depends on neither)."""
 
 def steel_ball_racket(racket):
     """``racket`` with its bed's moving mass left out, for :data:`STEEL_BALL`: **an
-    assumption**.  The bed's mass is its first mode's (:meth:`racket.stringing.Stringing.
+    assumption**.  The bed's mass is its first mode's (:meth:`racket.strings.stringing.Stringing.
     moving_mass`), the mass that moves with a contact longer than the bed's period (a tennis
     ball's 4-6 ms against the bed's 2 ms).  A steel ball's contact is far shorter: it moves
     the strings under it as a wave spreads, which one mass cannot stand for (a rigid ball
@@ -143,7 +143,7 @@ HAMORI_RACKETS = {
 """Hamori's rackets as spec sheets: the closest row of the TWU table
 (``tests/data/twu_racquets_half.csv``: head size, strung mass, balance, swingweight, free
 frequency; 27 in long; all 16x19), named beside each.  Each row's string is strung fresh at
-its usual gauge (:data:`racket.stringing.STRINGS`; **an assumption**: Hamori names the
+its usual gauge (:data:`racket.strings.stringing.STRINGS`; **an assumption**: Hamori names the
 material and the tension only): polyester and gut at one tension give the same stiffness
 (the membrane model, from the tension) but not the same stretch and loss."""
 
@@ -172,7 +172,7 @@ def _wall_compression_mm() -> float:
 
 def clamped_racket(stiffness: float, string: str = CLAMPED_STRING, tension_n=None):
     """The Pure Drive (2021) with its head clamped and a uniform bed of ``string`` (a preset
-    of :data:`racket.stringing.STRINGS`) of ``stiffness`` [N/m], or at ``tension_n`` [N]
+    of :data:`racket.strings.stringing.STRINGS`) of ``stiffness`` [N/m], or at ``tension_n`` [N]
     when ``stiffness`` is None: the frame does not take part, so any strung racket gives
     the same numbers.
 

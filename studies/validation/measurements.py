@@ -8,7 +8,7 @@ import math
 
 from ball import BALL_PRESETS
 from ball.catalog import DROP_COMPRESSION, DROP_CONTACT_TIME
-from racket.stringing import STRINGS
+from racket.strings.stringing import STRINGS
 from studies.validation.comparison import Comparison
 from studies.validation.conditions import (
     BALL,

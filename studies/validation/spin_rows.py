@@ -19,7 +19,7 @@ import numpy as np
 from ball.court import COURTS, LAB_SURFACES, bounce, court_pace_rating
 from common.units import LB, MPH
 from racket import STROKES, hit, oblique_impact
-from racket.bed_sideways import sideways
+from racket.strings.sideways import sideways
 from racket.stroke import RPM
 from studies.validation.comparison import Comparison
 from studies.validation.conditions import _ball, clamped_racket
@@ -107,11 +107,11 @@ def twu_spin(material: str, tension_lb: float, lubricated: bool = False,
     Parameters
     ----------
     material : str
-        A string preset (:data:`racket.stringing.STRINGS`).
+        A string preset (:data:`racket.strings.stringing.STRINGS`).
     tension_lb : float
         The tension [lb].
     lubricated : bool, optional
-        Lubricated strings (:data:`racket.bed_sideways.LUBRICATED_FRICTION`).
+        Lubricated strings (:data:`racket.strings.sideways.LUBRICATED_FRICTION`).
     test : tuple, optional
         The test (:data:`TWU_CLAMPED`, or the first three of :data:`TWU_LUBRICATED`).
     """

@@ -1,0 +1,78 @@
+"""The string bed as the user types it, on the command line and in TOML: the tension in kg
+and the ERT's dynamic tension (their ranges and slips of unit), and a ``[racket.strings]``
+table applied to a racket's bed (:func:`strings_from_table`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+from common.checks import loose_tension
+from common.typechecks import choice
+from common.units import GRAVITY, KP_PER_CM, LB
+from racket import StringBed
+from racket.strings.sizes import diameter, parse_pattern
+from racket.strings.stringing import STATES, restrung, stringing
+from racket.strings.tension import TENSION_RANGE_LB
+from studies.sweeps import STRING_STIFFNESS_RANGE
+
+TENSION_KG_RANGE = tuple(t * LB / GRAVITY for t in TENSION_RANGE_LB)
+"""The string tensions [kg] a racket may be strung at: 20-80 lb in kg (9.07-36.3 kg)."""
+
+DT_RANGE = tuple(k / KP_PER_CM for k in STRING_STIFFNESS_RANGE)
+"""The ERT dynamic tensions [kp/cm] a bed may have: a sweep's string stiffnesses."""
+
+LB_AS_KG = (LB / GRAVITY, "lb typed as kg?", "lb")
+"""A slip of unit: a tension in lb where kg are asked for."""
+
+N_M_AS_KP_CM = (1.0 / KP_PER_CM, "N/m typed as kp/cm?", "N/m")
+"""A slip of unit: a string bed's stiffness in N/m where the ERT's kp/cm are asked for."""
+
+STRING_KEYS = {"stiffness", "extent", "profile", "string", "gauge", "pattern", "state",
+               "tension_lb", "tension_kg", "dt_kp_cm"}  # fmt: skip
+"""The keys of a ``[racket.strings]`` table."""
+
+BED_KEYS = ("tension_lb", "tension_kg", "stiffness", "dt_kp_cm")
+"""The ``[racket.strings]`` keys that each set the bed's stiffness: one at most."""
+
+
+def strings_from_table(bed: StringBed, table: dict) -> tuple[StringBed, float | None]:
+    """``bed`` as a ``[racket.strings]`` table changes it, each key given replacing the
+    bed's (:func:`racket.strings.stringing.restrung`), and the tension it gives [N] or None (for
+    :func:`racket.specs.restring.with_tension`).  The keys and their ranges are
+    :mod:`studies.config`'s to check first.
+
+    Parameters
+    ----------
+    bed : StringBed
+        The racket's bed.
+    table : dict
+        The ``[racket.strings]`` table (``string``, ``gauge`` [mm or a name], ``pattern``,
+        ``state``, ``tension_lb`` [lb], ``tension_kg`` [kg], ``stiffness`` [N/m],
+        ``dt_kp_cm`` [kp/cm], ``extent`` [m from the tip], ``profile``).
+    """
+    where = "[racket.strings]"
+    typed = [key for key in BED_KEYS if key in table]
+    if len(typed) > 1:
+        raise ValueError(f"{where} takes one of {', '.join(BED_KEYS)}; got {' and '.join(typed)}")
+    if "tension_lb" in table:  # asked about as --tension-lb is (kg typed as lb?)
+        loose_tension(f"{where} tension_lb", table["tension_lb"])
+    gauge = table.get("gauge")
+    gauge = None if gauge is None else diameter(gauge, f"{where} gauge", "mm")
+    pattern = table.get("pattern")
+    pattern = None if pattern is None else parse_pattern(pattern, f"{where} pattern")
+    state = table.get("state") and choice(f"{where} state", table["state"], STATES)
+    stiffness = table.get("stiffness", KP_PER_CM * table.get("dt_kp_cm", 0.0)) or None
+    if "string" in table:
+        stringing(table["string"], gauge, argument=f"{where} string")  # refused as typed
+    elif bed.stringing is None and (gauge or pattern or state):
+        raise ValueError(
+            f"{where} gauge, pattern and state describe a string, and this bed is a plain "
+            "spring with none: add string, e.g. string = 'polyester'"
+        )
+    bed = replace(bed, extent=tuple(table.get("extent", bed.extent)),
+                  profile=table.get("profile", bed.profile))  # fmt: skip
+    if bed.stringing is not None or "string" in table or stiffness is not None:
+        bed = restrung(bed, table.get("string"), gauge, pattern, state, stiffness)
+    tension = table.get("tension_lb", 0.0) * LB or table.get("tension_kg", 0.0) * GRAVITY
+    return bed, tension or None

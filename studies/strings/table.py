@@ -1,0 +1,92 @@
+"""What the strings do, for a stringer: one racket strung with each string in turn (issue 35).
+
+For each string (a preset of :data:`racket.strings.stringing.STRINGS` or a hybrid), at the racket's
+tension, pattern and state: the bed's numbers (its stiffness and the ERT's DT, its stretch,
+its loss, its mass) and what they do at the string centre: the apparent COR e_A (the
+power a stationary racket gives), e, the dwell time, and the serve at a head speed
+(:func:`studies.serve.serve`, the swing about the wrist).
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+import pandas as pd
+
+from ball import Ball
+from common.checks import speed as check_speed
+from common.typechecks import instance
+from common.units import KP_PER_CM
+from racket import Racket, Swing, impact
+from racket.strings.stringing import STRING_CHOICES, restrung
+from studies.serve import serve
+
+
+def string_table(
+    racket: Racket,
+    ball: Ball,
+    speed: float,
+    head_speed: float,
+    strings=STRING_CHOICES,
+) -> pd.DataFrame:
+    """``racket`` strung with each of ``strings`` in turn, at its own tension, pattern and
+    state (the racket's bed must have a string: :attr:`racket.StringBed.stringing`).
+
+    Parameters
+    ----------
+    racket : Racket
+        The racket and its bed (its stringing gives the tension, pattern and state).
+    ball : Ball
+        The ball.
+    speed : float
+        Ball speed onto the racket at rest [m/s] (e, e_A and the dwell time).
+    head_speed : float
+        Racket-head (string centre) speed of the serve [m/s], about the wrist.
+    strings : sequence of str
+        Presets or "MAINS/CROSSES" hybrids.
+
+    Returns
+    -------
+    pandas.DataFrame
+        One row per string: ``string`` (material and gauge; the pattern, tension and state
+        are the racket's), ``dt_kp_cm``, ``stiffness_kN_m``, ``stretch_1_m2``,
+        ``loss_percent``, ``bed_mass_g``, ``moving_mass_g`` (the strings inside the
+        head, and the part moving with the ball), ``e``, ``e_A``, ``dwell_ms``, ``serve_m_s`` and
+        ``serve_ratio`` (the serve over the head speed).
+    """
+    instance("racket", racket, Racket, "a racket.Racket")
+    instance("ball", ball, Ball, "a ball.Ball")
+    speed = check_speed("speed", speed)
+    head_speed = check_speed("head_speed", head_speed)
+    if racket.strings.stringing is None:
+        raise ValueError(
+            "the racket's string bed has no string (the paper's spring): string it first, "
+            "e.g. --string polyester"
+        )
+    rows = []
+    for name in strings:
+        strung = replace(racket, strings=restrung(racket.strings, string=name))
+        rows.append(_row(strung, ball, speed, head_speed))
+    return pd.DataFrame(rows)
+
+
+def _row(racket: Racket, ball: Ball, speed: float, head_speed: float) -> dict:
+    bed, centre = racket.strings, racket.strings.center
+    hit = impact(racket, ball, centre, speed)
+    served = serve(racket, ball, centre, Swing(head_speed))
+    strung = bed.stringing
+    pattern = f" {strung.pattern[0]}x{strung.pattern[1]}"  # the racket's, in the conditions
+    return {
+        "string": strung.describe().rsplit(pattern, 1)[0],
+        "dt_kp_cm": bed.stiffness / KP_PER_CM,
+        "stiffness_kN_m": bed.stiffness / 1e3,
+        "stretch_1_m2": bed.stretch,
+        "loss_percent": 100.0 * bed.loss,
+        "bed_mass_g": 1e3 * bed.stringing.mass(bed.area, bed.aspect),
+        "moving_mass_g": 1e3 * bed.moving_mass,
+        "e": hit.e,
+        "e_A": hit.e_A,
+        "dwell_ms": 1e3 * hit.contact_time,
+        "serve_m_s": served["serve_simulated_m_s"],
+        "serve_ratio": served["ratio_simulated"],
+    }

@@ -1,0 +1,281 @@
+"""Strokes hit (issue 36): the ball's speed, launch and spin after each :class:`racket.Stroke`,
+one row per stroke, in a player's units (degrees, rpm, ms), and the speed plotted against the
+spin.
+
+Each row is one :func:`racket.hit` (the oblique impact on the face at the stroke's closing
+speed, the racket's motion superposed): the stroke as given (head speed, path, face, swing
+across, the incoming ball), then the ball after it (exit speed, launch angle, spin and its
+topspin, sidespin and rifle-spin parts), the contact time, whether the ball slid on the
+strings for the whole contact or gripped them, and the part of the ball's speed away from
+the face that the racket's own speed gave it.  What the strings do sideways (the mains
+sliding on the crosses, dry or lubricated, or held still) is a
+:class:`racket.strings.sideways.BedSideways` (``side``; :func:`racket.strings.sideways.sideways`),
+said in words by :func:`bed_words`.
+
+Angles are in degrees and spins in rpm in the tables (the :class:`racket.Stroke` itself
+takes radians and rad/s); speeds are in m/s, and also in mph or km/h with ``unit``.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+
+import numpy as np
+import pandas as pd
+
+from common.checks import finite, finite_array, shown
+from common.typechecks import choice, flag, instance
+from common.units import SPEED_SUFFIXES, SPEED_UNITS
+from racket import Stroke, hit
+from racket.strings.sideways import BedSideways
+from racket.stroke import RPM
+from studies.arguments import ball_argument, racket_argument
+from studies.tables import speeds_in
+
+SPEED_COLUMNS = ("head_speed", "ball_speed", "exit_speed")
+"""The speeds of a stroke table (``*_m_s``, and ``*_mph`` or ``*_kmh`` with ``unit``): the
+racket point's and the incoming ball's before, the ball's after."""
+
+
+def _strokes(strokes) -> list[tuple[str, Stroke]]:
+    """``strokes`` as (name, Stroke) pairs: a dict name -> Stroke, or a sequence of pairs
+    (a name may repeat: a grid of one stroke's angles).
+    """
+    pairs = list(strokes.items()) if isinstance(strokes, dict) else list(strokes)
+    if not pairs:
+        raise ValueError("strokes must hold one stroke or more, got none")
+    checked = []
+    for k, pair in enumerate(pairs):
+        if not (isinstance(pair, tuple | list) and len(pair) == 2):
+            raise ValueError(
+                f"strokes must be a dict name -> Stroke or (name, Stroke) pairs, got "
+                f"{shown(pair)} at {k}"
+            )
+        name, stroke = pair
+        instance(f"strokes[{k}] name", name, str, "a str")
+        instance(f"stroke {name!r}", stroke, Stroke, "a racket.Stroke")
+        checked.append((name, stroke))
+    return checked
+
+
+def _degrees(name: str, values, default: float) -> list[float]:
+    """Angles [deg] to sweep, finite (the Stroke checks their range); ``default`` [rad]
+    alone for None.
+    """
+    if values is None:
+        return [math.degrees(default)]
+    array = np.atleast_1d(finite_array(name, values, "deg"))
+    if array.ndim != 1 or array.size == 0:
+        raise ValueError(f"{name} must be one angle or more [deg], got {shown(values)}")
+    return [float(a) for a in array]
+
+
+def _deg(angle: float) -> float:
+    """An input angle [rad] in degrees, as typed: -12, not -12.000000000000002."""
+    return round(math.degrees(angle), 9)
+
+
+def stroke_row(name: str, stroke: Stroke, impact) -> dict:
+    """One row of :func:`stroke_table`: the stroke and the ball after it (SI speeds, angles in
+    degrees, spins in rpm).
+
+    Parameters
+    ----------
+    name : str
+        The stroke's name.
+    stroke : Stroke
+        The stroke.
+    impact : StrokeImpact
+        Its :func:`racket.hit`.
+    """
+    f = impact.flight
+    return {
+        "stroke": name,
+        "shaft": stroke.shaft,
+        "head_speed_m_s": stroke.head_speed,
+        "path_deg": _deg(stroke.path_angle),
+        "face_deg": _deg(stroke.face_angle),
+        "across_deg": _deg(stroke.swing_across),
+        "ball_speed_m_s": stroke.ball_speed,
+        "ball_angle_deg": _deg(stroke.ball_angle),
+        "ball_topspin_rpm": stroke.topspin / RPM,
+        "ball_sidespin_rpm": stroke.sidespin / RPM,
+        "position_from_tip_cm": 100.0 * impact.position,
+        "exit_speed_m_s": f.speed,
+        "launch_deg": math.degrees(f.launch_angle),
+        "direction_deg": math.degrees(f.direction),
+        "spin_rpm": f.spin_rate / RPM,
+        "topspin_rpm": f.topspin / RPM,
+        "sidespin_rpm": f.sidespin / RPM,
+        "rifle_spin_rpm": f.rifle_spin / RPM,
+        "contact_time_ms": 1e3 * impact.contact_time,
+        "contact": "slid" if impact.slid_throughout else "gripped",
+        "grip_time_ms": 1e3 * float(np.atleast_1d(impact.oblique.grip.grip_time)[0]),
+        "racket_share": impact.racket_share,
+    }
+
+
+def stroke_table(
+    strokes, racket, ball, position=None, side: BedSideways | None = None, unit: str = "m/s"
+) -> pd.DataFrame:
+    """The ball after each stroke, one row per stroke.
+
+    Parameters
+    ----------
+    strokes : dict or sequence
+        Name -> :class:`racket.Stroke` (e.g. :data:`racket.STROKES`), or (name, Stroke)
+        pairs (a name may repeat).
+    racket : Racket
+        The racket (free or hand-held).
+    ball : Ball
+        The ball.
+    position : float, optional
+        The impact point [m from the tip]; default the string bed's centre.
+    side : BedSideways, optional
+        The bed sideways (:func:`racket.strings.sideways.sideways`); default the racket's bed's,
+        dry strings whose mains slide.
+    unit : str, optional
+        "m/s", "mph" or "km/h": the speeds also in this unit (``*_mph``, ``*_kmh``), the one
+        the user typed.
+
+    Returns
+    -------
+    DataFrame
+        ``stroke`` (the name), ``shaft``, the inputs ``head_speed_m_s``, ``path_deg``,
+        ``face_deg``, ``across_deg``, ``ball_speed_m_s``, ``ball_angle_deg``,
+        ``ball_topspin_rpm``, ``ball_sidespin_rpm``, the impact point
+        ``position_from_tip_cm``, and the ball after: ``exit_speed_m_s``, ``launch_deg``
+        (above the horizontal), ``direction_deg`` (+ to the left), ``spin_rpm`` (its rate),
+        ``topspin_rpm``, ``sidespin_rpm``, ``rifle_spin_rpm``, ``contact_time_ms``,
+        ``contact`` ("slid": the ball slid on the strings throughout; "gripped"),
+        ``grip_time_ms`` and ``racket_share`` [-] (the part of the ball's speed away from
+        the face that the racket's speed gave it).
+
+    Examples
+    --------
+    >>> from racket import STROKES, default_ball, default_racket
+    >>> table = stroke_table({"volley": STROKES["volley"]}, default_racket(), default_ball())
+    >>> table["contact"].iloc[0] in ("slid", "gripped")
+    True
+    """
+    pairs = _strokes(strokes)
+    racket, ball = racket_argument(racket), ball_argument(ball)
+    if position is not None:
+        position = finite("position", position, "m from the tip")
+    instance("side", side, BedSideways | type(None), "a BedSideways or None",
+             " (racket.strings.sideways.sideways(racket.strings) makes one)")  # fmt: skip
+    choice("unit", unit, tuple(SPEED_UNITS))
+    rows = [stroke_row(name, s, hit(s, racket, ball, position, side=side)) for name, s in pairs]
+    return speeds_in(pd.DataFrame(rows), unit, SPEED_COLUMNS)
+
+
+def sweep_angles(
+    base: Stroke,
+    path_angles_deg,
+    face_angles_deg,
+    racket,
+    ball,
+    position=None,
+    side: BedSideways | None = None,
+    name: str = "stroke",
+    unit: str = "m/s",
+) -> pd.DataFrame:
+    """The ball after ``base`` with each racket path and face angle: one row per
+    combination, the paths outermost (:func:`stroke_table`'s columns).
+
+    Parameters
+    ----------
+    base : Stroke
+        The stroke whose angles vary.
+    path_angles_deg, face_angles_deg : float or sequence of float or None
+        The racket paths and face angles [deg] (:class:`racket.Stroke`: path + rising, face
+        + open); None: the base's.
+    racket, ball, position, side, unit :
+        As in :func:`stroke_table`.
+    name : str, optional
+        Every row's ``stroke``.
+
+    Raises
+    ------
+    ValueError
+        For an angle out of its range, or a combination where the racket misses the ball
+        (before any impact).
+    """
+    instance("base", base, Stroke, "a racket.Stroke")
+    instance("name", name, str, "a str")
+    paths = _degrees("path_angles_deg", path_angles_deg, base.path_angle)
+    faces = _degrees("face_angles_deg", face_angles_deg, base.face_angle)
+    strokes = [
+        (name, replace(base, path_angle=math.radians(p), face_angle=math.radians(f)))
+        for p in paths
+        for f in faces
+    ]
+    return stroke_table(strokes, racket, ball, position, side, unit)
+
+
+def bed_words(side: BedSideways, lubricated: bool = False) -> str:
+    """What the ball meets sideways, in words for a conditions line: "ball-string friction
+    0.444, mains sliding on dry crosses (friction 0.086)", "... on lubricated crosses",
+    "... mains held still".
+
+    Parameters
+    ----------
+    side : BedSideways
+        The bed sideways.
+    lubricated : bool, optional
+        The strings were lubricated (said as such).
+    """
+    instance("side", side, BedSideways, "a BedSideways")
+    lubricated = flag("lubricated", lubricated)
+    said = f"ball-string friction {side.ball_friction:.3g}"
+    if not side.slides:
+        return f"{said}, mains held still"
+    dry = "lubricated" if lubricated else "dry"
+    return f"{said}, mains sliding on {dry} crosses (friction {side.string_friction:.3g})"
+
+
+def plot_speed_spin(table: pd.DataFrame, ax=None, unit: str = "m/s", conditions=None):
+    """The ball's exit speed against its spin after each stroke (a table of
+    :func:`stroke_table`), each stroke labelled: by its name beside its point, or for a
+    stroke of several rows (angles swept) one line per face angle, along the path, in a
+    legend beside the Axes.
+
+    Parameters
+    ----------
+    table : DataFrame
+        A table of :func:`stroke_table` or :func:`sweep_angles`.
+    ax : Axes, optional
+        The Axes to draw on; None: a new figure's.
+    unit : str, optional
+        The speed's unit, "m/s", "mph" or "km/h" (the table must hold its column).
+    conditions : str, optional
+        What the strokes were hit with, drawn as the figure's heading; None: none drawn.
+    """
+    from studies.plots.axes import _axes
+    from studies.plots.layout import finish, legend_outside
+
+    choice("unit", unit, tuple(SPEED_UNITS))
+    column = f"exit_speed_{SPEED_SUFFIXES[unit]}"
+    if column not in table:
+        raise ValueError(f"table has no {column} column: make it with unit={unit!r}")
+    made = ax is None
+    ax = _axes(ax, 1)
+    several = table["stroke"].duplicated().any()
+    # a swept stroke: one line per face angle, its points in the order of the path
+    keys = ["stroke", "face_deg"] if several else ["stroke"]
+    groups = list(table.sort_values("path_deg").groupby(keys, sort=False))
+    for key, group in groups:
+        name = f"{key[0]}, face {key[1]:+g} deg" if several else key[0]
+        ax.plot(group["spin_rpm"], group[column], "o-" if len(group) > 1 else "o", label=name)
+        if not several:
+            row = group.iloc[0]
+            ax.annotate(name, (row["spin_rpm"], row[column]), xytext=(5, 4),
+                        textcoords="offset points", fontsize="small")  # fmt: skip
+    ax.set_xlabel("spin after the stroke [rpm]")
+    ax.set_ylabel(f"ball's exit speed [{unit}]")
+    ax.margins(0.15)
+    ax.set_xlim(left=0.0)  # a spin rate: from none
+    if several:
+        legend_outside(ax)
+    return finish(ax, conditions, made)
