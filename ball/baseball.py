@@ -225,22 +225,16 @@ class BaseballPreset:
 
     Attributes
     ----------
-    name : str
-        Preset name.
-    description : str
-        One line for a person.
+    name, description, radius, sources
+        As in :class:`ball.catalog.BallPreset`.
     mass : float
         Mass [kg].
-    radius : float
-        Radius [m].
     k1 : float
         Stiffness coefficient of the loading [N/m**alpha].
     alpha : float
         Loading exponent [-].
     e0 : float
         COR on a rigid object [-].
-    sources : tuple of str
-        Where each number comes from; assumptions say so.
     """
 
     name: str

@@ -57,9 +57,7 @@ def unhappy_cor(k0: float, k2: float) -> float:
 
     References
     ----------
-    .. [1] R. Cross, "The coefficient of restitution for collisions of happy balls, unhappy
-       balls, and tennis balls", Am. J. Phys. 68, 1025-1031 (2000),
-       doi:10.1119/1.1285945.
+    .. [1] R. Cross, Am. J. Phys. 68, 1025-1031 (2000), doi:10.1119/1.1285945.
 
     Examples
     --------
@@ -126,10 +124,8 @@ def unhappy_solution(t, m1: float, m2: float, k0: float, k2: float, v1: float) -
         Mass of the unhappy ball [kg], > 0.
     m2 : float
         Mass of the happy ball [kg], > 0.
-    k0 : float
-        The unhappy ball's Fo / Xo [N/m], > 0.
-    k2 : float
-        Stiffness of the happy ball [N/m], > 0.
+    k0, k2
+        As in :func:`unhappy_cor`.
     v1 : float
         Speed of the unhappy ball at first touch [m/s], > 0.
     """
@@ -173,9 +169,7 @@ def serve_speed(e: float, m1: float, m2: float, v2: float) -> float:
 
     References
     ----------
-    .. [1] R. Cross, "The coefficient of restitution for collisions of happy balls, unhappy
-       balls, and tennis balls", Am. J. Phys. 68, 1025-1031 (2000),
-       doi:10.1119/1.1285945.
+    .. [1] R. Cross, Am. J. Phys. 68, 1025-1031 (2000), doi:10.1119/1.1285945.
 
     Examples
     --------
@@ -198,22 +192,16 @@ def energy_loss_fraction_lab(e: float, m1: float, m2: float, v1: float, v2: floa
 
     Parameters
     ----------
-    e : float
-        Coefficient of restitution [-], 0 <= e <= 1.
-    m1 : float
-        Ball mass [kg], > 0.
+    e, m1, v2
+        As in :func:`serve_speed`.
     m2 : float
         Effective mass of the racket [kg], > 0.
     v1 : float
         Ball speed before the impact [m/s], >= 0.
-    v2 : float
-        Racket speed before the impact [m/s], >= 0.
 
     References
     ----------
-    .. [1] R. Cross, "The coefficient of restitution for collisions of happy balls, unhappy
-       balls, and tennis balls", Am. J. Phys. 68, 1025-1031 (2000),
-       doi:10.1119/1.1285945.
+    .. [1] R. Cross, Am. J. Phys. 68, 1025-1031 (2000), doi:10.1119/1.1285945.
 
     Examples
     --------

@@ -48,27 +48,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from ball.grip_layout import (
-    ENERGY_IN,
-    ENERGY_OUT,
-    GRIP_TIME,
-    LAYER_ENERGY,
-    LAYER_LOSS,
-    LAYER_PEAK,
-    N_OUT,
-    OFFSET_WORK,
-    P_ACROSS,
-    P_ALONG,
-    REVERSALS,
-    SLIP_LOSS,
-    SURFACE_ENERGY,
-    U_ACROSS,
-    U_ALONG,
-    V_ACROSS,
-    V_ALONG,
-    W_ALONG,
-    W_NORMAL,
-)  # fmt: skip
+from ball import grip_layout as col
 from ball.spin import BallSpin
 from common.checks import finite_array, in_range, non_negative, whole
 
@@ -267,7 +247,7 @@ def slide(
             in_range("layer friction", layer.friction, *FRICTION_RANGE),
         ]
     substeps = max(whole("substeps", substeps, 1, 4096), stable_substeps(spin, mass, dt, layer))
-    out = np.zeros((n, N_OUT))
+    out = np.zeros((n, col.N_OUT))
     args = (force, dt, substeps, float(mass), spin.radius, spin.inertia(mass),
             spin.tangential_stiffness, spin.offset, mu, inv_mass, stack, v, w, out)  # fmt: skip
     from ball.grip_kernel import grip_kernel  # numba loads on first use
@@ -277,18 +257,18 @@ def slide(
     else:
         runner(grip_kernel, args, n)
     return Grip(
-        velocity=out[:, V_ALONG : V_ACROSS + 1],
-        spin=out[:, W_ALONG : W_NORMAL + 1],
-        surface_velocity=out[:, U_ALONG : U_ACROSS + 1],
-        impulse=out[:, P_ALONG : P_ACROSS + 1],
-        slip_loss=out[:, SLIP_LOSS],
-        layer_loss=out[:, LAYER_LOSS],
-        offset_work=out[:, OFFSET_WORK],
-        layer_energy=out[:, LAYER_ENERGY],
-        surface_energy=out[:, SURFACE_ENERGY],
-        grip_time=out[:, GRIP_TIME],
-        reversals=out[:, REVERSALS].astype(int),
-        layer_peak=out[:, LAYER_PEAK],
-        energy_in=out[:, ENERGY_IN],
-        energy_out=out[:, ENERGY_OUT],
+        velocity=out[:, col.V_ALONG : col.V_ACROSS + 1],
+        spin=out[:, col.W_ALONG : col.W_NORMAL + 1],
+        surface_velocity=out[:, col.U_ALONG : col.U_ACROSS + 1],
+        impulse=out[:, col.P_ALONG : col.P_ACROSS + 1],
+        slip_loss=out[:, col.SLIP_LOSS],
+        layer_loss=out[:, col.LAYER_LOSS],
+        offset_work=out[:, col.OFFSET_WORK],
+        layer_energy=out[:, col.LAYER_ENERGY],
+        surface_energy=out[:, col.SURFACE_ENERGY],
+        grip_time=out[:, col.GRIP_TIME],
+        reversals=out[:, col.REVERSALS].astype(int),
+        layer_peak=out[:, col.LAYER_PEAK],
+        energy_in=out[:, col.ENERGY_IN],
+        energy_out=out[:, col.ENERGY_OUT],
     )

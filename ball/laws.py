@@ -189,10 +189,8 @@ def falling_cor_parameters(e0, slope) -> tuple[float, float]:
 
     Parameters
     ----------
-    e0 : float
-        COR of a vanishingly slow bounce [-].
-    slope : float
-        Fall of the COR per metre of peak compression [1/m].
+    e0, slope
+        As in :func:`falling_cor`.
     """
     e0 = finite("e0", e0)
     if not COR_FLOOR < e0 <= 1.0:

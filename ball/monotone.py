@@ -75,18 +75,18 @@ def monotone_contact(
     turning.terminal, turning.direction = True, -1
     # The integration span is an upper bound only; the events end each phase.
     t_max = 1e4 * t_ref
-    ph1 = solve_ivp(
-        loading,
-        (0.0, t_max),
-        [0.0, closing_speed],
-        method="DOP853",
-        rtol=_RTOL,
-        atol=atol,
-        events=turning,
-        dense_output=True,
-    )
-    if ph1.status != 1:
-        raise RuntimeError(f"contact did not reach maximum compression: {ph1.message}")
+
+    def phase(rhs, start: float, state: list, event, what: str):
+        """One phase, DOP853 from ``start`` [s] and ``state`` (z [m], z' [m/s]) until
+        ``event``; RuntimeError saying ``what`` did not happen if it never comes.
+        """
+        sol = solve_ivp(rhs, (start, start + t_max), state, method="DOP853", rtol=_RTOL,
+                        atol=atol, events=event, dense_output=True)  # fmt: skip
+        if sol.status != 1:
+            raise RuntimeError(f"contact did not {what}: {sol.message}")
+        return sol
+
+    ph1 = phase(loading, 0.0, [0.0, closing_speed], turning, "reach maximum compression")
     t1, (z_max, _) = ph1.t_events[0][0], ph1.y_events[0][0]
     f_max = float(series_force(laws, z_max, 0.0))
     z_open = float(series_compression(laws, 0.0, f_max))
@@ -105,18 +105,7 @@ def monotone_contact(
             return s[0] - z_open
 
         opened.terminal, opened.direction = True, -1
-        ph2 = solve_ivp(
-            unloading,
-            (t1, t1 + t_max),
-            [z_max, 0.0],
-            method="DOP853",
-            rtol=_RTOL,
-            atol=atol,
-            events=opened,
-            dense_output=True,
-        )
-        if ph2.status != 1:
-            raise RuntimeError(f"contact did not open: {ph2.message}")
+        ph2 = phase(unloading, t1, [z_max, 0.0], opened, "open")
         t_end, speed_end = ph2.t_events[0][0], ph2.y_events[0][0][1]
         phases.append((ph2, t1, t_end))
     t = np.concatenate([np.linspace(ta, tb, samples) for _, ta, tb in phases])

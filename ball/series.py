@@ -51,12 +51,8 @@ def series_compliance(laws: Sequence[MonotoneLaw], f, f_max):
 
     Parameters
     ----------
-    laws : sequence of MonotoneLaw
-        The force laws in series.
-    f : float or array_like
-        Force they carry [N], >= 0.
-    f_max : float or array_like
-        Largest force reached so far [N]; broadcasts with ``f``.
+    laws, f, f_max
+        As in :func:`series_compression`.
     """
     f = np.asarray(f, dtype=float)
     branch_max = np.maximum(f, f_max)

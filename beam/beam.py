@@ -325,9 +325,7 @@ class Beam:
 
         References
         ----------
-        .. [1] R. Cross, "The coefficient of restitution for collisions of happy balls, unhappy
-           balls, and tennis balls", Am. J. Phys. 68, 1025-1031 (2000),
-           doi:10.1119/1.1285945.
+        .. [1] R. Cross, Am. J. Phys. 68, 1025-1031 (2000), doi:10.1119/1.1285945.
 
         Examples
         --------

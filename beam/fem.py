@@ -117,10 +117,8 @@ def assemble(stations, mass_per_length, bending_stiffness, point_masses, element
 
     Parameters
     ----------
-    stations : array (S + 1,)
-        Segment boundaries [m from the tip].
-    mass_per_length, bending_stiffness : array (S,)
-        Per segment [kg/m] and [N m^2].
+    stations, mass_per_length, bending_stiffness
+        As in :func:`element_properties`.
     point_masses : array (P, 2)
         Rows (position [m from the tip], mass [kg]).
     elements : int
@@ -192,16 +190,10 @@ def bending_modes(
 
     Parameters
     ----------
-    stations : array (S + 1,)
-        Segment boundaries [m from the tip].
-    mass_per_length, bending_stiffness : array (S,)
-        Per segment [kg/m] and [N m^2].
-    point_masses : array (P, 2)
-        Rows (position [m from the tip], mass [kg]).
+    stations, mass_per_length, bending_stiffness, point_masses, elements
+        As in :func:`assemble`.
     n_modes : int
         Bending modes to keep.
-    elements : int
-        About how many elements along the beam.
     """
     nodes, k, m = assemble(stations, mass_per_length, bending_stiffness, point_masses, elements)
     _, rho, ei = element_properties(stations, mass_per_length, bending_stiffness, nodes)
@@ -292,14 +284,8 @@ def static_flexibility(stations, mass_per_length, bending_stiffness, point_masse
 
     Parameters
     ----------
-    stations : array (S + 1,)
-        Segment boundaries [m from the tip].
-    mass_per_length, bending_stiffness : array (S,)
-        Per segment [kg/m] and [N m^2].
-    point_masses : array (P, 2)
-        Rows (position [m from the tip], mass [kg]).
-    elements : int
-        About how many elements along the beam.
+    stations, mass_per_length, bending_stiffness, point_masses, elements
+        As in :func:`assemble`.
     """
     nodes, k, m = assemble(stations, mass_per_length, bending_stiffness, point_masses, elements)
     return flexibility_of(nodes, k, m)
@@ -311,12 +297,8 @@ def flexibility_of(nodes, k, m, shear=None):
 
     Parameters
     ----------
-    nodes : ndarray (N,)
-        Mesh nodes [m from the tip].
-    k, m : ndarray (2N, 2N)
-        Stiffness and mass matrices [SI].
-    shear : ndarray or None
-        Each element's shear parameter [-] (:func:`hermite`); None for Euler-Bernoulli.
+    nodes, k, m, shear
+        As in :func:`modes_of`.
     """
     n_dof = k.shape[0]
     rigid = np.zeros((n_dof, 2))

@@ -87,15 +87,11 @@ def assemble(stations, profile, point_masses, elements: int):
 
     Parameters
     ----------
-    stations : array (S + 1,)
-        Segment boundaries [m from the tip].
+    stations, point_masses, elements
+        As in :func:`beam.fem.assemble`.
     profile : tuple of 4 arrays (S,)
         Per segment: mass per length [kg/m], rotary inertia per length [kg m], bending
         stiffness EI [N m^2] and shear stiffness kappa G A [N].
-    point_masses : array (P, 2)
-        Rows (position [m from the tip], mass [kg]).
-    elements : int
-        About how many elements along the beam.
 
     Returns
     -------
@@ -117,16 +113,12 @@ def bending_modes(stations, profile, point_masses, n_modes: int, elements: int):
 
     Parameters
     ----------
-    stations : array (S + 1,)
-        Segment boundaries [m from the tip].
+    stations, point_masses, elements
+        As in :func:`assemble`.
     profile : tuple of 4 arrays (S,)
         As in :func:`assemble` [SI].
-    point_masses : array (P, 2)
-        Rows (position [m from the tip], mass [kg]).
     n_modes : int
         Bending modes to keep.
-    elements : int
-        About how many elements along the beam.
     """
     nodes, k, m, shear, rho_a, ei = assemble(stations, profile, point_masses, elements)
     return fem.modes_of(nodes, k, m, rho_a, ei, n_modes, shear)
@@ -138,14 +130,8 @@ def static_flexibility(stations, profile, point_masses, elements: int):
 
     Parameters
     ----------
-    stations : array (S + 1,)
-        Segment boundaries [m from the tip].
-    profile : tuple of 4 arrays (S,)
-        As in :func:`assemble` [SI].
-    point_masses : array (P, 2)
-        Rows (position [m from the tip], mass [kg]).
-    elements : int
-        About how many elements along the beam.
+    stations, profile, point_masses, elements
+        As in :func:`bending_modes`.
     """
     nodes, k, m, shear, _, _ = assemble(stations, profile, point_masses, elements)
     return fem.flexibility_of(nodes, k, m, shear)

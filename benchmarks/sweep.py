@@ -18,7 +18,7 @@ to the targets, not the absolute times; the load average is printed before and a
   1.3 at most); and the same sweep of oblique impacts of a spinning ball against head-on
   (issue 36's 1.5 at most);
 * one position (a new one each call); 1e5 positions in one call and 1e6 impacts through
-  ``studies.sweep`` (untraced, then the peak of traced memory in a second run); the unhappy
+  ``studies.sweeps.sweep`` (untraced, then the peak of traced memory in a second run); the unhappy
   ball's 200-point sweep (its Xo search included); the default accuracy against 16 times the
   steps; the hand-held sweep and the fit to a spec sheet; a 15 x 9 face map (issue 13);
 * whole processes: ``python -c "import racket"``, a cached ``racket-impact sweep`` and
@@ -299,7 +299,7 @@ def main() -> None:
     along = np.linspace(0, 0.32, 1000)
     t0 = time.perf_counter()
     sweep(racket, ball, along, **grid)
-    _row("1e6 impacts through studies.sweep, untraced", time.perf_counter() - t0, "s", 12.0)
+    _row("1e6 impacts through studies.sweeps.sweep, untraced", time.perf_counter() - t0, "s", 12.0)
     seconds, peak = _traced(lambda: sweep(racket, ball, along, **grid))
     _row("  the same traced (tracemalloc)", seconds, "s", 30.0)
     _row("  peak traced memory", peak, "GiB", 0.5)

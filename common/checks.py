@@ -104,12 +104,8 @@ def positive(name: str, value, unit: str = "") -> float:
 
     Parameters
     ----------
-    name : str
-        The argument's name, as the message quotes it.
-    value : object
-        The value to check, in ``unit``.
-    unit : str, optional
-        Its unit, as the message quotes it (e.g. ``"m/s"``); "" for none.
+    name, value, unit
+        As in :func:`finite`.
     """
     x = finite(name, value, unit)
     if x <= 0.0:
@@ -122,12 +118,8 @@ def non_negative(name: str, value, unit: str = "") -> float:
 
     Parameters
     ----------
-    name : str
-        The argument's name, as the message quotes it.
-    value : object
-        The value to check, in ``unit``.
-    unit : str, optional
-        Its unit, as the message quotes it (e.g. ``"m/s"``); "" for none.
+    name, value, unit
+        As in :func:`finite`.
     """
     x = finite(name, value, unit)
     if x < 0.0:
@@ -246,14 +238,10 @@ def in_range(
 
     Parameters
     ----------
-    name : str
-        The argument's name, as the message quotes it.
-    value : object
-        The value to check, in ``unit``.
+    name, value, unit
+        As in :func:`finite`.
     low, high : float
         The bounds [``unit``], inclusive, in ``unit``.
-    unit : str, optional
-        Its unit, as the message quotes it (e.g. ``"m/s"``); "" for none.
     hint : str, optional
         Appended to the message, e.g. a likely cause.
     slips : sequence of tuple, optional
@@ -370,8 +358,8 @@ def too_fast(
 
     Parameters
     ----------
-    name : str
-        The argument's name, as the message quotes it.
+    name, instead
+        As in :func:`suspect`.
     value : float
         The speed typed [``unit``].
     unit : str
@@ -380,9 +368,6 @@ def too_fast(
         The fastest plausible speed [m/s]: :data:`FASTEST_STROKE` or :data:`FASTEST_HEAD`.
     what : str
         What ``fastest`` is, as the message says it ("the serve record").
-    instead : callable, optional
-        Given the unit a fitting slip's value was likely typed in, the text that follows
-        that slip, e.g. the option to use (:func:`slip_hints`).
     kind : str, optional
         What the speed is of, as the message says it: "stroke" (default), "pitch".
     """
@@ -437,12 +422,10 @@ def finite_array(name: str, values, unit: str = "") -> np.ndarray:
 
     Parameters
     ----------
-    name : str
-        The argument's name, as the message quotes it.
+    name, unit
+        As in :func:`finite`.
     values : array_like
         The values to check [``unit``], in ``unit``.
-    unit : str, optional
-        Its unit, as the message quotes it (e.g. ``"m/s"``); "" for none.
     """
     try:
         if isinstance(values, str | bytes | os.PathLike):  # numpy would read "4" as 4.0

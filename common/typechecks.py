@@ -41,10 +41,8 @@ def flag(name: str, value) -> bool:
 
     Parameters
     ----------
-    name : str
-        The argument's name, as the message quotes it.
-    value : object
-        The value to check.
+    name, value
+        As in :func:`instance`.
     """
     return bool(instance(name, value, bool | np.bool_, "True or False"))
 
@@ -55,10 +53,8 @@ def choice(name: str, value, choices) -> str:
 
     Parameters
     ----------
-    name : str
-        The argument's name, as the message quotes it.
-    value : object
-        The value to check.
+    name, value
+        As in :func:`instance`.
     choices : sequence of str
         The words it may be.
     """
@@ -77,10 +73,8 @@ def file_path(name: str, value) -> str:
 
     Parameters
     ----------
-    name : str
-        The argument's name, as the message quotes it.
-    value : object
-        The value to check.
+    name, value
+        As in :func:`instance`.
     """
     path = os.fspath(instance(name, value, str | os.PathLike, "a path (str or os.PathLike)"))
     return instance(name, path, str, "a path (str or os.PathLike)")

@@ -142,10 +142,8 @@ class Swing:
 
         Parameters
         ----------
-        racket : Racket
-            The racket swung.
-        position : array_like
-            Impact points [m from the tip].
+        racket, position
+            As in :meth:`Swing.reach`.
         head, pivot : (str, float, str, float), optional
             How the caller's user gave the head speed and the pivot, for the message: the
             name, the value as typed, its unit and the unit's size [m/s or m], e.g.

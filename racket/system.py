@@ -263,7 +263,7 @@ def held_blocks(stiffness, damping, slow: float, rigid: tuple, null=None) -> Blo
     rigid : tuple of int
         The coordinates of the rigid-body motion (the dc motion's rows).
     null : ndarray or None
-        A free motion of the whole, a unit vector (N,), or None.
+        A free motion of the whole (N,), a unit vector [-], or None.
     """
     n = stiffness.shape[0]
     turn = np.eye(n)

@@ -74,10 +74,8 @@ def check_protocol(address: str, flag: str = "scheduler") -> str:
 
     Parameters
     ----------
-    address : str
-        The scheduler's address.
-    flag : str
-        The input's name as the user typed it (``--scheduler``).
+    address, flag
+        As in :func:`check_scheduler`.
     """
     protocol = _SCHEDULER.match(address).group(1) or "tcp"
     if protocol in _UNSUPPORTED:
@@ -118,10 +116,8 @@ def check_answers(address: str, flag: str = "scheduler", timeout: float = SCHEDU
 
     Parameters
     ----------
-    address : str
-        The scheduler's address.
-    flag : str
-        The input's name as the user typed it (``--scheduler``).
+    address, flag
+        As in :func:`check_scheduler`.
     timeout : float
         The longest the check takes [s].
     """
@@ -150,10 +146,8 @@ def connected(address: str, flag: str = "scheduler", timeout: float = SCHEDULER_
 
     Parameters
     ----------
-    address : str
-        The scheduler's address.
-    flag : str
-        The input's name as the user typed it (``--scheduler``).
+    address, flag
+        As in :func:`check_scheduler`.
     timeout : float
         The longest the whole check takes [s].
     """

@@ -16,6 +16,7 @@ import os
 import subprocess
 import sys
 
+import pytest
 from hypothesis import Phase, settings
 
 settings.register_profile(
@@ -73,3 +74,10 @@ def pytest_unconfigure(config):
     if process is not None:
         process.terminate()
         process.wait()
+
+
+@pytest.fixture
+def workdir(tmp_path, monkeypatch):
+    """An empty folder made the working directory (where the relative paths typed land)."""
+    monkeypatch.chdir(tmp_path)
+    return tmp_path

@@ -25,12 +25,6 @@ import racket as racket_api
 from ball import (
     WALL,
     Ball,
-    GrowingHysteresis,
-    LinearHysteresis,
-    LinearSpring,
-    PowerLawHysteresis,
-    SineLaw,
-    StiffeningHysteresis,
     baseball,
     collide,
     energy_loss_fraction,
@@ -42,6 +36,8 @@ from ball import (
     unhappy_solution,
     warn_if_squashed,
 )
+from ball.laws import GrowingHysteresis, LinearHysteresis, LinearSpring, PowerLawHysteresis, SineLaw
+from ball.stiffening import StiffeningHysteresis
 from bat import Bat, BatSwing
 from bat.presets import r161_beam
 from beam import Beam, ThickBeam

@@ -5,6 +5,7 @@ file runs in seconds."""
 
 import numpy as np
 import pytest
+from clihelpers import refusal
 
 from ball import WALL, Ball, LinearHysteresis, PowerLawHysteresis, collide
 from beam import Beam
@@ -194,22 +195,14 @@ CASES += [
 ]
 
 
-def _run(argv) -> int:
-    """main's exit status, the parser's own errors (SystemExit) included."""
-    try:
-        return main(list(argv))
-    except SystemExit as done:
-        return done.code
-
-
 @pytest.fixture
-def workdir(tmp_path, monkeypatch):
+def workdir(workdir):
+    """The working directory holding the bad files."""
     for name, (text, _) in {**TOML, **BALL_TOML}.items():
-        path = tmp_path / f"{name}.toml"
+        path = workdir / f"{name}.toml"
         path.write_bytes(text if isinstance(text, bytes) else text.encode())
-    (tmp_path / "file.txt").write_text("not a directory\n")
-    monkeypatch.chdir(tmp_path)
-    return tmp_path
+    (workdir / "file.txt").write_text("not a directory\n")
+    return workdir
 
 
 def test_there_are_at_least_a_hundred_cases():
@@ -217,16 +210,8 @@ def test_there_are_at_least_a_hundred_cases():
 
 
 @pytest.mark.parametrize("argv, names", CASES, ids=[" ".join(a) for a, _ in CASES])
-def test_bad_input_one_line_exit_2_nothing_written(argv, names, workdir, capsys):
-    before = sorted(workdir.rglob("*"))
-    status = _run(argv)
-    _, err = capsys.readouterr()
-    assert status == 2, err
-    lines = err.strip().splitlines()
-    assert len(lines) == 1, err
-    assert names in lines[0]
-    assert "Traceback" not in err
-    assert sorted(workdir.rglob("*")) == before  # nothing written
+def test_bad_input_one_line_exit_2_nothing_written(argv, names, workdir):
+    assert names in refusal(argv, quiet=False, folder=workdir)  # (a header may come before)
 
 
 def test_same_file_name_in_two_directories_gives_two_rackets(workdir, capsys):

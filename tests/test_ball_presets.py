@@ -8,6 +8,7 @@ from dataclasses import replace
 
 import numpy as np
 import pytest
+from helpers import assert_round_trips_through_toml
 
 from ball import WALL, Ball, LinearSpring, collide
 from ball.catalog import (
@@ -173,19 +174,11 @@ def test_bad_parameters_are_refused(kwargs, match):
 # ----- the presets in the command line, TOML and the studies --------------------------
 @pytest.mark.parametrize("name", list(BALL_PRESETS))
 def test_every_preset_round_trips_through_toml(name, tmp_path):
-    from studies.config import load_ball
-
     ball = BALL_PRESETS[name].ball()
-    by_name = tmp_path / "named.toml"
-    by_name.write_text(f'[ball]\npreset = "{name}"\n')
     law = ball.law
-    by_numbers = tmp_path / "numbers.toml"
-    by_numbers.write_text(
-        f'[ball]\nmass = {ball.mass!r}\nradius = {ball.radius!r}\nlaw = "stiffening-hysteresis"\n'
-        f"k = {law.k!r}\nx_lim = {law.x_lim!r}\ne0 = {law.e0!r}\nslope = {law.slope!r}\n"
-    )
-    assert load_ball(str(by_name)) == ball
-    assert load_ball(str(by_numbers)) == ball
+    keys = (f'law = "stiffening-hysteresis"\nk = {law.k!r}\nx_lim = {law.x_lim!r}\n'
+            f"e0 = {law.e0!r}\nslope = {law.slope!r}\n")  # fmt: skip
+    assert_round_trips_through_toml(name, ball, keys, tmp_path)
 
 
 def test_the_default_ball_is_the_real_one_for_every_racket_the_papers_too(tmp_path, monkeypatch):

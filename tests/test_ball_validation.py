@@ -4,16 +4,8 @@ import math
 
 import pytest
 
-from ball import (
-    WALL,
-    Ball,
-    LinearHysteresis,
-    LinearSpring,
-    PowerLawHysteresis,
-    SineLaw,
-    collide,
-    series_cor,
-)
+from ball import WALL, Ball, collide, series_cor
+from ball.laws import LinearHysteresis, LinearSpring, PowerLawHysteresis, SineLaw
 
 
 @pytest.mark.parametrize(

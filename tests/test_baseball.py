@@ -9,6 +9,7 @@ from dataclasses import replace
 
 import numpy as np
 import pytest
+from helpers import assert_round_trips_through_toml
 
 from ball import (
     BASEBALL_PRESETS,
@@ -225,16 +226,9 @@ def test_softball_stiffness_refuses_a_non_positive_force():
 def test_every_preset_loads_by_name_and_round_trips_through_toml(name, tmp_path):
     ball = BASEBALL_PRESETS[name].ball()
     assert BALLS[name]() == ball and load_ball(name) == ball
-    by_name = tmp_path / "named.toml"
-    by_name.write_text(f'[ball]\npreset = "{name}"\n')
     law = ball.law
-    by_numbers = tmp_path / "numbers.toml"
-    by_numbers.write_text(
-        f'[ball]\nmass = {ball.mass!r}\nradius = {ball.radius!r}\nlaw = "power-law"\n'
-        f"k = {law.k!r}\na = {law.a!r}\ne = {BASEBALL_PRESETS[name].e0!r}\n"
-    )
-    assert load_ball(str(by_name)) == ball
-    assert load_ball(str(by_numbers)) == ball
+    keys = f'law = "power-law"\nk = {law.k!r}\na = {law.a!r}\ne = {BASEBALL_PRESETS[name].e0!r}\n'
+    assert_round_trips_through_toml(name, ball, keys, tmp_path)
 
 
 def test_the_ball_command_bounces_a_baseball_without_the_tennis_balls_static_test(capsys):

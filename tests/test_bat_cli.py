@@ -6,50 +6,31 @@ every bad input refused in one line naming the option, status 2, nothing written
 that belongs to another question refused; a bat of one's own from TOML.  Each run is in this
 process (the R161's modes are built once)."""
 
-import contextlib
-import io
 import json
 
 import pandas as pd
 import pytest
+from clihelpers import help_text, refusal, run_main, run_ok, run_writing, sidecar
 
 from ball import BASEBALL_PRESETS, DEFAULT_BASEBALL
 from bat import DEFAULT_BAT
 from common.units import MPH
 from studies.bat.sweep import DEFAULT_SWING, PITCH_SPEED, _preset, bat_sweep
-from studies.cli import build_parser, main
+from studies.cli import build_parser
 from studies.cli.show import WIDTH
-
-
-def _main(argv) -> tuple[int, str, str]:
-    """``main(argv)``'s status, stdout and stderr (the parser's own exits as their status)."""
-    out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        try:
-            status = main(list(argv))
-        except SystemExit as done:
-            status = done.code
-    return status, out.getvalue(), err.getvalue()
 
 
 @pytest.fixture(scope="module")
 def default(tmp_path_factory):
     """``racket-impact bat --out t.json --plot p.png``: Nathan's high-speed case."""
-    folder = tmp_path_factory.mktemp("bat")
-    table, plot = folder / "t.json", folder / "p.png"
-    status, out, err = _main(["bat", "--out", str(table), "--plot", str(plot)])
-    assert status == 0, err
-    return {"out": out, "err": err, "table": table, "plot": plot}
+    return run_writing(["bat"], tmp_path_factory.mktemp("bat"), "t.json", "p.png")
 
 
 def test_the_command_defaults_to_the_one_bat_ball_pitch_and_swing():
     args = build_parser().parse_args(["bat"])
     assert args.action == "sweep" and args.bat == [DEFAULT_BAT] and args.ball == DEFAULT_BASEBALL
     assert args.pitch is None and args.omega is None  # the studies' own defaults, said in help
-    with pytest.raises(SystemExit):  # the help quotes the same constants
-        with contextlib.redirect_stdout(io.StringIO()) as said:
-            main(["bat", "--help"])
-    text = " ".join(said.getvalue().split())
+    text = help_text("bat")  # the help quotes the same constants
     for default in (f"default {PITCH_SPEED:g} m/s", f"default {DEFAULT_SWING.cm_speed:g} m/s",
                     f"default {DEFAULT_SWING.angular_velocity:g}"):  # fmt: skip
         assert default in text
@@ -75,28 +56,23 @@ def test_the_table_and_its_sidecar_are_the_studys_numbers(default):
     )
     total = rows["position_from_knob_cm"] + rows["position_from_tip_cm"]
     assert total.to_numpy() == pytest.approx(84.0)
-    sidecar = json.loads(default["table"].with_name("t.json.meta.json").read_text())
-    assert sidecar["command"][0] == "bat"
-    said = " ".join(default["out"].split("\n  "))
-    assert sidecar["conditions"] in said
+    assert sidecar(default)["command"][0] == "bat"
 
 
 def test_the_unit_typed_is_the_unit_answered(tmp_path):
     table = tmp_path / "mph.csv"
-    status, out, err = _main(["bat", "--pitch-mph", "90", "--cm-speed-mph", "54", "--points",
-                              "5", "--out", str(table)])  # fmt: skip
-    assert status == 0, err
+    out, _ = run_ok(["bat", "--pitch-mph", "90", "--cm-speed-mph", "54", "--points", "5",
+                     "--out", str(table)])  # fmt: skip
     assert "90 mph" in out and "54 mph" in out and "[mph]" in out and "[m/s]" not in out
     rows = pd.read_csv(table)
     assert rows["exit_speed_mph"].to_numpy() == pytest.approx(rows["exit_speed_m_s"] / MPH)
-    status, out, _ = _main(["bat", "--pitch-kmh", "145", "--points", "3"])
+    status, out, _ = run_main(["bat", "--pitch-kmh", "145", "--points", "3"])
     assert status == 0 and "145 km/h" in out and "[km/h]" in out
 
 
 def test_bbcor_prints_and_writes_the_certification_numbers(tmp_path):
     table = tmp_path / "c.csv"
-    status, out, err = _main(["bat", "bbcor", "--pitch-mph", "136", "--out", str(table)])
-    assert status == 0, err
+    out, _ = run_ok(["bat", "bbcor", "--pitch-mph", "136", "--out", str(table)])
     rows = pd.read_csv(table)
     assert list(rows["method"]) == ["pivoted rig", "free bat"]
     for column in ("bbcor", "collision_efficiency", "besr", "bpf", "passes", "test_speed_mph"):
@@ -107,9 +83,8 @@ def test_bbcor_prints_and_writes_the_certification_numbers(tmp_path):
 
 def test_feel_writes_the_handles_motion_at_the_points_asked(tmp_path):
     table = tmp_path / "f.csv"
-    status, out, err = _main(["bat", "feel", "--handle", "6", "13", "--duration-ms", "3",
-                              "--out", str(table)])  # fmt: skip
-    assert status == 0, err
+    out, _ = run_ok(["bat", "feel", "--handle", "6", "13", "--duration-ms", "3", "--out",
+                     str(table)])  # fmt: skip
     rows = pd.read_csv(table)
     assert sorted(set(rows["point_from_knob_cm"])) == [6.0, 13.0]
     assert rows["t_s"].max() == pytest.approx(3e-3, rel=0.01)
@@ -117,10 +92,8 @@ def test_feel_writes_the_handles_motion_at_the_points_asked(tmp_path):
 
 
 def test_nathans_pivoted_case_runs_from_the_command_line():
-    status, out, err = _main(["bat", "--support", "pivoted", "--pivot-from-knob", "15",
-                              "--clamps", "0", "--omega", "56", "--from", "50", "--points",
-                              "3"])  # fmt: skip
-    assert status == 0, err
+    out, _ = run_ok(["bat", "--support", "pivoted", "--pivot-from-knob", "15", "--clamps", "0",
+                     "--omega", "56", "--from", "50", "--points", "3"])  # fmt: skip
     assert "pivoted 15 cm from the knob, a single pivot point" in out
     assert "turning at 56 rad/s about 15 cm from the knob" in out
 
@@ -150,18 +123,13 @@ def test_nathans_pivoted_case_runs_from_the_command_line():
         (["--ball", "nope"], "unknown ball preset 'nope'"),
     ],
 )
-def test_a_bad_input_is_refused_in_one_line_and_nothing_is_written(words, says, tmp_path,
-                                                                   monkeypatch):  # fmt: skip
-    monkeypatch.chdir(tmp_path)
+def test_a_bad_input_is_refused_in_one_line_and_nothing_is_written(words, says, workdir):
     words = words if words[0] in ("bbcor", "feel") else ["sweep", *words]
-    status, out, err = _main(["bat", *words, "--out", "t.csv", "--plot", "p.png"])
-    assert status == 2 and out == "", err
-    assert err.strip().splitlines() == [err.strip()] and says in err, err
-    assert list(tmp_path.iterdir()) == []
+    assert says in refusal(["bat", *words, "--out", "t.csv", "--plot", "p.png"], folder=workdir)
 
 
 def test_an_option_twice_is_refused_by_the_parser():
-    status, _, err = _main(["bat", "--omega", "50", "--omega", "51"])
+    status, _, err = run_main(["bat", "--omega", "50", "--omega", "51"])
     assert status == 2 and "--omega given twice" in err
 
 
@@ -179,9 +147,7 @@ def test_a_bat_of_ones_own_from_toml_beside_a_preset(tmp_path):
     path = tmp_path / "ash.toml"
     path.write_text(BAT_TOML)
     table = tmp_path / "two.csv"
-    status, out, err = _main(["bat", "--bat", str(path), "r161", "--points", "3", "--out",
-                              str(table)])  # fmt: skip
-    assert status == 0, err
+    out, _ = run_ok(["bat", "--bat", str(path), "r161", "--points", "3", "--out", str(table)])
     assert "bat ash (my ash bat" in out and "bat r161 (R161 (wood)" in out
     assert sorted(set(pd.read_csv(table)["bat"])) == ["ash", "r161"]
 
@@ -189,15 +155,15 @@ def test_a_bat_of_ones_own_from_toml_beside_a_preset(tmp_path):
 def test_a_bad_toml_bat_is_refused_with_its_unit_slip(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     (tmp_path / "mm.toml").write_text(BAT_TOML.replace("0.0643", "64.3"))
-    status, _, err = _main(["bat", "--bat", "mm.toml", "--out", "t.csv"])
+    status, _, err = run_main(["bat", "--bat", "mm.toml", "--out", "t.csv"])
     assert status == 2 and "mm typed as m? 64.3 mm would be 0.0643 m" in err
     assert sorted(p.name for p in tmp_path.iterdir()) == ["mm.toml"]
 
 
 def test_rerun_makes_the_same_table(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
-    assert _main(["bat", "--points", "3", "--out", "t.csv"])[0] == 0
+    assert run_main(["bat", "--points", "3", "--out", "t.csv"])[0] == 0
     first = (tmp_path / "t.csv").read_bytes()
     (tmp_path / "t.csv").unlink()
-    assert _main(["rerun", "t.csv.meta.json"])[0] == 0
+    assert run_main(["rerun", "t.csv.meta.json"])[0] == 0
     assert (tmp_path / "t.csv").read_bytes() == first

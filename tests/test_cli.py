@@ -46,22 +46,10 @@ def test_sweep_outputs(tmp_path, capsys, suffix):
 
 
 def test_sweep_toml_racket_mph_and_plot(tmp_path, capsys):
-    status, _out, _ = run(
-        capsys,
-        "sweep",
-        "--racket",
-        str(EXAMPLES / "stiff_racket.toml"),
-        "--ball",
-        str(EXAMPLES / "hertz_ball.toml"),
-        "--speed-mph",
-        "45",
-        "--points",
-        "5",
-        "--csv",
-        str(tmp_path / "s.csv"),
-        "--plot",
-        str(tmp_path / "e.svg"),
-    )
+    status, _out, _ = run(capsys, "sweep", "--racket", str(EXAMPLES / "stiff_racket.toml"),
+                          "--ball", str(EXAMPLES / "hertz_ball.toml"), "--speed-mph", "45",
+                          "--points", "5", "--csv", str(tmp_path / "s.csv"),
+                          "--plot", str(tmp_path / "e.svg"))  # fmt: skip
     assert status == 0
     assert (tmp_path / "e.svg").read_text().startswith("<?xml")
     assert len(pd.read_csv(tmp_path / "s.csv")) == 5
@@ -133,16 +121,9 @@ def test_specs_of_a_catalogue_racket(capsys):
 
 
 def test_specs_of_the_example_sheet_with_lead_tape(tmp_path, capsys):
-    status, out, _ = run(
-        capsys,
-        "specs",
-        "--racket",
-        str(EXAMPLES / "my_racket_specs.toml"),
-        "--out",
-        str(tmp_path / "m_eff.csv"),
-        "--plot",
-        str(tmp_path / "modes.png"),
-    )
+    status, out, _ = run(capsys, "specs", "--racket", str(EXAMPLES / "my_racket_specs.toml"),
+                         "--out", str(tmp_path / "m_eff.csv"),
+                         "--plot", str(tmp_path / "modes.png"))  # fmt: skip
     assert status == 0
     assert "added point masses" in out
     table = pd.read_csv(tmp_path / "m_eff.csv")

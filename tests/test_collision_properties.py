@@ -4,46 +4,25 @@ import math
 
 import numpy as np
 import pytest
+from helpers import drawn_law
 from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
-from ball import (
-    WALL,
-    Ball,
-    GrowingHysteresis,
-    LinearHysteresis,
-    LinearSpring,
-    PowerLawHysteresis,
-    SineLaw,
-    collide,
-)
+from ball import WALL, Ball, collide
 from ball.baseball import BASEBALL_PRESETS, nathan_law
+from ball.laws import GrowingHysteresis, LinearHysteresis, LinearSpring, PowerLawHysteresis, SineLaw
 from ball.series import series_compression, series_force
 from ball.stiffening import StiffeningHysteresis
 
-stiffness = st.floats(1e3, 1e6)
-cor = st.floats(0.0, 1.0)
+STIFFNESS, COR = (1e3, 1e6), (0.0, 1.0)  # [N/m], [-]
+stiffness = st.floats(*STIFFNESS)
 monotone_laws = st.one_of(
-    st.builds(LinearSpring, stiffness),
-    st.builds(LinearHysteresis, stiffness, cor),
-    st.builds(
-        PowerLawHysteresis.with_cor, st.floats(1e4, 1e8), st.floats(1.0, 2.0), st.floats(0.2, 1.0)
-    ),
-    st.builds(
-        GrowingHysteresis,
-        st.floats(1e4, 1e8),
-        st.floats(1.0, 2.0),
-        st.floats(0.3, 1.0),
-        st.floats(0.0, 20.0),
-    ),
-    st.builds(
-        StiffeningHysteresis,
-        stiffness,
-        st.floats(0.005, 0.05),
-        st.floats(0.3, 1.0),
-        st.floats(0.0, 20.0),
-    ),
-    st.builds(nathan_law, st.floats(0.2, 1.0)),  # A. M. Nathan's baseball (ball.baseball)
+    drawn_law(LinearSpring, STIFFNESS),
+    drawn_law(LinearHysteresis, STIFFNESS, COR),
+    drawn_law(PowerLawHysteresis.with_cor, (1e4, 1e8), (1.0, 2.0), (0.2, 1.0)),
+    drawn_law(GrowingHysteresis, (1e4, 1e8), (1.0, 2.0), (0.3, 1.0), (0.0, 20.0)),
+    drawn_law(StiffeningHysteresis, STIFFNESS, (0.005, 0.05), (0.3, 1.0), (0.0, 20.0)),
+    drawn_law(nathan_law, (0.2, 1.0)),  # A. M. Nathan's baseball (ball.baseball)
 )
 mass = st.floats(1e-3, 1.0)
 speed = st.floats(-30.0, 30.0)

@@ -5,40 +5,24 @@ the table and its sidecar written together; and the same numbers from the comman
 :func:`ball.court.bounce` and :func:`ball.court.court_pace_rating` (one truth).  The default
 run is shared by the tests (a module-scope fixture), in this process."""
 
-import contextlib
-import io
 import json
 import math
 
 import pandas as pd
 import pytest
+from clihelpers import help_text, refusal, run_ok, run_writing, sidecar
 
 from ball import BALL_PRESETS, DEFAULT_BALL
 from ball.court import COURTS, CPR_ANGLE, CPR_SPEED, Court, bounce, court_pace_rating
 from common.units import KMH, MPH
 from racket.stroke import RPM
-from studies.cli import main
 from studies.cli.show import WIDTH
-
-
-def _main(argv) -> tuple[int, str, str]:
-    """``main(argv)``'s status, stdout and stderr (the parser's own exits as their status)."""
-    out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        try:
-            status = main(list(argv))
-        except SystemExit as done:
-            status = done.code
-    return status, out.getvalue(), err.getvalue()
 
 
 @pytest.fixture(scope="module")
 def presets(tmp_path_factory):
     """``racket-impact court`` (grass, clay, hard at the ITF test), with its table."""
-    table = tmp_path_factory.mktemp("courts") / "courts.json"
-    status, out, err = _main(["court", "--out", str(table)])
-    assert status == 0, err
-    return {"out": out, "table": table}
+    return run_writing(["court"], tmp_path_factory.mktemp("courts"), "courts.json")
 
 
 def _rows(out: str, name: str) -> list[list[str]]:
@@ -70,10 +54,8 @@ def test_grass_plays_fast_and_clay_slow_in_the_printed_table(presets):
 def test_the_table_and_its_sidecar_are_written_with_the_conditions(presets):
     rows = json.loads(presets["table"].read_text())
     assert [row["court"] for row in rows] == list(COURTS)
-    sidecar = json.loads(presets["table"].with_name("courts.json.meta.json").read_text())
-    assert sidecar["command"][0] == "court"
-    said = " ".join(presets["out"].split("\n  "))  # the header line, unwrapped
-    assert sidecar["conditions"] in said and "16 deg above the court" in sidecar["conditions"]
+    record = sidecar(presets)
+    assert record["command"][0] == "court" and "16 deg above the court" in record["conditions"]
     for row in rows:
         assert row["contact"] in ("slid", "gripped") and 1 <= row["category"] <= 5
 
@@ -104,15 +86,13 @@ def test_the_command_line_gives_what_the_python_api_gives(presets):
 
 def test_mph_in_mph_out_and_km_h_in_km_h_out(tmp_path):
     path = tmp_path / "c.csv"
-    status, out, err = _main(["court", "clay", "--speed-mph", "60", "--out", str(path)])
-    assert status == 0, err
+    out, _ = run_ok(["court", "clay", "--speed-mph", "60", "--out", str(path)])
     assert "[mph]" in out and "[m/s]" not in out and "at 60 mph" in out
     table = pd.read_csv(path)
     assert table["speed_after_mph"].to_numpy() == pytest.approx(table["speed_after_m_s"] / MPH)
     after = bounce(COURTS["clay"], 60 * MPH, CPR_ANGLE)
     assert table["speed_after_mph"].iloc[0] == pytest.approx(after.speed_after / MPH, rel=1e-10)
-    status, out, err = _main(["court", "grass", "--speed-kmh", "90"])
-    assert status == 0, err
+    out, _ = run_ok(["court", "grass", "--speed-kmh", "90"])
     assert "[km/h]" in out and "[m/s]" not in out and "at 90 km/h" in out
 
 
@@ -120,8 +100,7 @@ def test_a_court_of_ones_own_with_the_ball_as_typed(tmp_path):
     path = tmp_path / "own.csv"
     argv = ["court", "grass", "--friction", "0.45", "--cor", "0.85", "--angle", "20",
             "--topspin", "-1500", "--speed", "25", "--out", str(path)]  # fmt: skip
-    status, out, err = _main(argv)
-    assert status == 0, err
+    out, _ = run_ok(argv)
     assert "1500 rpm backspin" in out and "20 deg above the court" in out
     table = pd.read_csv(path)
     assert list(table["court"]) == ["grass", "own court"]
@@ -160,35 +139,13 @@ def test_a_court_of_ones_own_with_the_ball_as_typed(tmp_path):
         (["--ball", "nosuchball"], "nosuchball"),
     ],
 )
-def test_bad_input_is_one_line_naming_the_option_exit_2_nothing_written(
-    argv, said, tmp_path, monkeypatch
-):
-    monkeypatch.chdir(tmp_path)
+def test_bad_input_is_one_line_naming_the_option_exit_2_nothing_written(argv, said, workdir):
     output = [] if "--out" in argv else ["--out", "t.csv"]  # would be written
-    status, out, err = _main(["court", *argv, *output])
-    lines = err.strip().splitlines()
-    assert status == 2 and out == "", err
-    assert len(lines) == 1 and said in lines[0] and "Traceback" not in err, err
-    assert list(tmp_path.iterdir()) == []
-
-
-@pytest.mark.parametrize(
-    "argv, asked",
-    [
-        (["--topspin", "200"], "rad/s typed as rpm? 200 rad/s would be 1910 rpm"),
-        (["--angle", "0.28"], "radians typed as deg? 0.28 rad would be 16.04 deg"),
-        (["--speed", "75"], "--speed 75 m/s is faster than any recorded stroke"),
-    ],
-)
-def test_a_value_that_looks_like_another_unit_is_asked_about(argv, asked):
-    status, _, err = _main(["court", "grass", *argv])
-    assert status == 0 and "warning" in err and asked in err, err
+    assert said in refusal(["court", *argv, *output], folder=workdir)
 
 
 def test_the_help_names_the_courts_and_the_units():
-    status, out, _ = _main(["court", "--help"])
-    assert status == 0
-    said = " ".join(out.split())
+    said = help_text("court")
     for words in (*COURTS, "[deg]", "[rpm]", "[mph]", "--speed-kmh", "--friction", "--cor"):
         assert words in said, words
 

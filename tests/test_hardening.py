@@ -7,6 +7,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from clihelpers import refusal
 
 from racket import CATALOG, TENNIS_BALL_RADIUS, Swing, impact, paper_ball, paper_racket
 from racket.feel import hand_feel
@@ -26,19 +27,6 @@ PAPERS = ["--racket", "paper", "--ball", "paper"]  # the paper's racket and ball
 @pytest.fixture(scope="module")
 def racket():
     return CATALOG["pure-drive-2021"].racket()
-
-
-def _one_line_exit_2(argv, capsys) -> str:
-    """The one error line of a refused command (exit 2, nothing on stdout)."""
-    try:
-        status = main(argv)
-    except SystemExit as done:
-        status = done.code
-    _, err = capsys.readouterr()
-    assert status == 2, err
-    lines = err.strip().splitlines()
-    assert len(lines) == 1 and "Traceback" not in err, err
-    return lines[0]
 
 
 # ----- 1. TOML balls have a radius ---------------------------------------------------------
@@ -147,10 +135,10 @@ def test_library_refusals_are_one_line_naming_the_argument(racket, call, message
          "the string centre, at most 100 cm beyond the butt (an arm), got 180"),
     ],
 )  # fmt: skip
-def test_cli_quotes_what_the_user_typed(argv, expected, tmp_path, monkeypatch, capsys):
+def test_cli_quotes_what_the_user_typed(argv, expected, tmp_path, monkeypatch):
     (tmp_path / "long.toml").write_text(LONG_STRINGS)
     monkeypatch.chdir(tmp_path)
-    line = _one_line_exit_2(argv, capsys)
+    line = refusal(argv)
     assert expected in line
 
 
@@ -184,16 +172,16 @@ def test_a_pivot_among_the_impact_points_is_named_in_the_library():
 
 
 # ----- 6. Absurd sizes, refused with the count and the limit -------------------------------
-def test_a_huge_map_is_refused_with_its_count_and_the_limit(racket, capsys):
-    line = _one_line_exit_2(["map", "--grid", "1000", "1000"], capsys)
+def test_a_huge_map_is_refused_with_its_count_and_the_limit(racket):
+    line = refusal(["map", "--grid", "1000", "1000"])
     assert "--grid 1000 1000 asks for 1,000,000 points" in line and f"{MAX_MAP_POINTS:,}" in line
     with pytest.raises(ValueError, match=r"grid \(1000, 1000\) asks for 1,000,000 points"):
         face_map(racket, paper_ball(), grid=(1000, 1000))
 
 
-def test_a_sweep_of_1e8_impacts_is_refused_with_its_count_and_the_limit(capsys):
+def test_a_sweep_of_1e8_impacts_is_refused_with_its_count_and_the_limit():
     speeds = [f"{v:g}" for v in np.linspace(1.0, 50.0, 1000)]
-    line = _one_line_exit_2(["sweep", "--points", "100000", "--speed", *speeds], capsys)
+    line = refusal(["sweep", "--points", "100000", "--speed", *speeds])
     assert "--points 100000 x 1000 --speed values ask for 100,000,000 impacts" in line
     assert f"{MAX_IMPACTS:,}" in line
     racket, ball = paper_racket(), paper_ball()
@@ -223,11 +211,11 @@ def test_a_sweep_of_1e8_impacts_is_refused_with_its_count_and_the_limit(capsys):
          "[ball] radius must be in [0.005, 0.15] m, got 3.35 (cm typed as m?"),
     ],
 )  # fmt: skip
-def test_toml_unit_slips_are_refused_with_a_hint(kind, text, expected, tmp_path, capsys):
+def test_toml_unit_slips_are_refused_with_a_hint(kind, text, expected, tmp_path):
     path = tmp_path / "slip.toml"
     path.write_text(text)
     argv = ["ball", str(path)] if kind == "ball" else ["modes", "--racket", str(path)]
-    assert expected in _one_line_exit_2(argv, capsys)
+    assert expected in refusal(argv)
 
 
 @pytest.mark.parametrize(

@@ -6,14 +6,8 @@ import warnings
 import numpy as np
 import pytest
 
-from ball import (
-    Ball,
-    GrowingHysteresis,
-    LinearHysteresis,
-    LinearSpring,
-    PowerLawHysteresis,
-    SineLaw,
-)
+from ball import Ball
+from ball.laws import GrowingHysteresis, LinearHysteresis, LinearSpring, PowerLawHysteresis, SineLaw
 from ball.stiffening import StiffeningHysteresis
 from racket import impact, paper_ball, paper_racket
 from racket.solver import ball_kernel as kernel

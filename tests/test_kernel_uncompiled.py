@@ -4,12 +4,8 @@ Compilation must change nothing but the speed: a hand-held racket (coupled modes
 blocks), a linear and a power-law ball, near the tip and at the centre.
 """
 
-import json
-import os
-import subprocess
-import sys
-
 import numpy as np
+from helpers import run_uncompiled
 
 from ball import Ball, PowerLawHysteresis
 from racket import impact, paper_ball, paper_racket
@@ -28,15 +24,7 @@ print(json.dumps(out))
 
 
 def test_compiled_kernel_matches_the_uncompiled_code():
-    env = dict(os.environ, NUMBA_DISABLE_JIT="1")
-    run = subprocess.run(
-        [sys.executable, "-W", "ignore", "-c", SCRIPT],
-        capture_output=True,
-        text=True,
-        env=env,
-        check=True,
-    )
-    uncompiled = json.loads(run.stdout)
+    uncompiled = run_uncompiled(SCRIPT)
     for name, ball in (
         ("linear", paper_ball()),
         ("power", Ball(0.057, PowerLawHysteresis(2e6, 1.5, 3.0))),

@@ -2,29 +2,20 @@
 (racket.solver.kernel): the same numbers bit for bit, for every support, law, offset and
 swing; and the batch switch (racket.solver.dispatch.run_kernel) choosing each of them."""
 
-import json
-import os
-import subprocess
-import sys
 from dataclasses import replace
 from functools import cache
 
 import numpy as np
 import pytest
+from helpers import drawn_law, run_uncompiled
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from ball import (
-    Ball,
-    GrowingHysteresis,
-    LinearHysteresis,
-    LinearSpring,
-    PowerLawHysteresis,
-    SineLaw,
-)
+from ball import Ball
+from ball.laws import GrowingHysteresis, LinearHysteresis, LinearSpring, PowerLawHysteresis, SineLaw
 from ball.stiffening import StiffeningHysteresis
 from racket import CATALOG, Hand, impact, paper_ball, paper_racket
-from racket.solver import dispatch, kernel, layout, lockstep
+from racket.solver import dispatch, kernel, layout, lockstep, tile_layout
 from racket.solver.stepper import Stepper
 
 
@@ -56,24 +47,12 @@ RACKETS = [
 ]
 
 LAWS = st.one_of(
-    st.builds(LinearHysteresis, st.floats(2e4, 8e4), st.floats(0.4, 0.95)),
-    st.builds(LinearSpring, st.floats(2e4, 8e4)),
-    st.builds(PowerLawHysteresis, st.floats(1e6, 4e6), st.floats(1.2, 1.8), st.floats(2.0, 4.0)),
-    st.builds(
-        GrowingHysteresis,
-        st.floats(5e5, 2e6),
-        st.floats(1.2, 1.6),
-        st.floats(0.7, 0.9),
-        st.floats(0.0, 10.0),
-    ),
-    st.builds(
-        StiffeningHysteresis,
-        st.floats(2.5e4, 5e4),
-        st.floats(0.025, 0.045),
-        st.floats(0.7, 0.9),
-        st.floats(0.0, 8.0),
-    ),
-    st.builds(SineLaw, st.floats(2e4, 6e4)),
+    drawn_law(LinearHysteresis, (2e4, 8e4), (0.4, 0.95)),
+    drawn_law(LinearSpring, (2e4, 8e4)),
+    drawn_law(PowerLawHysteresis, (1e6, 4e6), (1.2, 1.8), (2.0, 4.0)),
+    drawn_law(GrowingHysteresis, (5e5, 2e6), (1.2, 1.6), (0.7, 0.9), (0.0, 10.0)),
+    drawn_law(StiffeningHysteresis, (2.5e4, 5e4), (0.025, 0.045), (0.7, 0.9), (0.0, 8.0)),
+    drawn_law(SineLaw, (2e4, 6e4)),
 )
 
 
@@ -131,9 +110,9 @@ def test_lockstep_equals_the_scalar_kernel_bit_for_bit(
         ("held, hand's mass", Ball(0.057, PowerLawHysteresis(2e6, 1.5, 3.0)), 40),
         ("face held", Ball(0.057, StiffeningHysteresis(3.75e4, 0.0335, 0.8, 7.3)), 40),
         ("free", Ball(0.057, SineLaw(4e4)), 40),  # the Xo search runs in lockstep too
-        # several tiles (lockstep.TILE = 64) and a ragged last one, with offsets
-        ("face free", paper_ball(), 2 * lockstep.TILE + 22),
-        ("face held", paper_ball(), 2 * lockstep.TILE + 22),
+        # several tiles (tile_layout.TILE = 64) and a ragged last one, with offsets
+        ("face free", paper_ball(), 2 * tile_layout.TILE + 22),
+        ("face held", paper_ball(), 2 * tile_layout.TILE + 22),
     ],
 )
 def test_whole_impacts_come_out_the_same(name, ball, count):
@@ -190,15 +169,7 @@ print(json.dumps([*r.e.tolist(), *r.vibration_energy.tolist(), *r.contact_time.t
 
 
 def test_the_lockstep_kernel_runs_uncompiled_with_the_same_numbers():
-    env = dict(os.environ, NUMBA_DISABLE_JIT="1")
-    run = subprocess.run(
-        [sys.executable, "-W", "ignore", "-c", SCRIPT],
-        capture_output=True,
-        text=True,
-        env=env,
-        check=True,
-    )
-    uncompiled = json.loads(run.stdout)
+    uncompiled = run_uncompiled(SCRIPT)
     with dispatch.lockstep_from(0):
         r = impact(paper_racket("hand-held"), paper_ball(), [0.02, 0.16, 0.3], 10.0,
                    steps_per_contact=60)  # fmt: skip

@@ -258,8 +258,8 @@ def test_first_compilation_is_announced_on_stderr(capsys):
 
 @pytest.mark.parametrize("threads", [2, 3])
 def test_threads_share_the_points_and_change_no_number(monkeypatch, threads):
-    # T threads take points t, t + T, ... (racket.solver.driver._run_on_threads): every point once,
-    # each with the same numbers as on one thread.
+    # T threads take points t, t + T, ... (racket.solver.dispatch._run_on_threads): every point
+    # once, each with the same numbers as on one thread.
     from numba import config
 
     x = np.linspace(0.0, 0.32, 53)

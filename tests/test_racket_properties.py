@@ -1,6 +1,7 @@
 """Property tests of racket impacts: momentum conserved, 0 <= e <= 1, budget closes."""
 
 import numpy as np
+from helpers import drawn_law
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -10,25 +11,11 @@ from beam import Beam
 from racket import Racket, StringBed, impact
 
 laws = st.one_of(
-    st.builds(LinearSpring, st.floats(1e4, 1e5)),
-    st.builds(LinearHysteresis, st.floats(1e4, 1e5), st.floats(0.3, 1.0)),
-    st.builds(
-        PowerLawHysteresis.with_cor, st.floats(1e5, 1e7), st.floats(1.0, 1.8), st.floats(0.4, 1.0)
-    ),
-    st.builds(
-        GrowingHysteresis,
-        st.floats(1e5, 1e7),
-        st.floats(1.0, 1.8),
-        st.floats(0.4, 1.0),
-        st.floats(0.0, 15.0),
-    ),
-    st.builds(
-        StiffeningHysteresis,
-        st.floats(1e4, 1e5),
-        st.floats(0.02, 0.04),
-        st.floats(0.4, 1.0),
-        st.floats(0.0, 15.0),
-    ),
+    drawn_law(LinearSpring, (1e4, 1e5)),
+    drawn_law(LinearHysteresis, (1e4, 1e5), (0.3, 1.0)),
+    drawn_law(PowerLawHysteresis.with_cor, (1e5, 1e7), (1.0, 1.8), (0.4, 1.0)),
+    drawn_law(GrowingHysteresis, (1e5, 1e7), (1.0, 1.8), (0.4, 1.0), (0.0, 15.0)),
+    drawn_law(StiffeningHysteresis, (1e4, 1e5), (0.02, 0.04), (0.4, 1.0), (0.0, 15.0)),
 )
 
 

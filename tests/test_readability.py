@@ -198,7 +198,7 @@ _SAID = re.compile(r"\d\s?(mph|m/s|lb|Hz|cm|mm|ms|kg|g|N/m|N|J|s|m|%)(?![\w/])")
 def _drawn(argv, tmp_path, monkeypatch):
     """The Axes a command would save with --plot."""
     made = []
-    for module in ("sweep", "face", "compare", "serve", "balls", "rackets", "validate"):
+    for module in ("sweep", "files", "serve", "balls", "validate"):
         monkeypatch.setattr(f"studies.cli.{module}.save_plot", lambda axes, path: made.append(axes))
     assert main([*argv, "--plot", str(tmp_path / "p.png")]) == 0
     assert len(made) == 1

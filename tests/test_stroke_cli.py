@@ -5,43 +5,28 @@ written together (or nothing), the plot, and the same numbers from the command l
 :mod:`studies.strokes.stroke` (one truth).  The runs are shared by the tests (module-scope
 fixtures), in this process."""
 
-import contextlib
-import io
 import json
 import math
 
 import matplotlib
 import pandas as pd
 import pytest
+from clihelpers import help_text, refusal, run_main, run_ok, run_writing, sidecar
 
 matplotlib.use("Agg")
 
 from common.units import KMH, MPH
 from racket import DEFAULT_RACKET, STROKES, default_ball, default_racket
 from racket.stroke import RPM
-from studies.cli import main
 from studies.cli.show import WIDTH
-
-
-def _main(argv) -> tuple[int, str, str]:
-    """``main(argv)``'s status, stdout and stderr (the parser's own exits as their status)."""
-    out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        try:
-            status = main(list(argv))
-        except SystemExit as done:
-            status = done.code
-    return status, out.getvalue(), err.getvalue()
 
 
 @pytest.fixture(scope="module")
 def presets(tmp_path_factory):
     """``racket-impact stroke`` for every preset, with its table and plot."""
-    folder = tmp_path_factory.mktemp("presets")
-    table, plot = folder / "strokes.json", folder / "strokes.png"
-    status, out, err = _main(["stroke", "--out", str(table), "--plot", str(plot)])
-    assert status == 0, err
-    return {"out": out, "table": table, "plot": plot, "folder": folder}
+    return run_writing(
+        ["stroke"], tmp_path_factory.mktemp("presets"), "strokes.json", "strokes.png"
+    )
 
 
 @pytest.fixture(scope="module")
@@ -50,9 +35,7 @@ def own(tmp_path_factory):
     table = tmp_path_factory.mktemp("own") / "own.csv"
     argv = ["stroke", "--head-speed-mph", "50", "--path", "10", "20", "--face", "2", "6",
             "--ball-speed-kmh", "72", "--topspin", "1500", "--out", str(table)]  # fmt: skip
-    status, out, err = _main(argv)
-    assert status == 0, err
-    return {"out": out, "table": pd.read_csv(table)}
+    return {"out": run_ok(argv)[0], "table": pd.read_csv(table)}
 
 
 def test_the_presets_print_within_100_columns_each_header_with_its_unit(presets):
@@ -72,10 +55,8 @@ def test_the_presets_print_within_100_columns_each_header_with_its_unit(presets)
 def test_the_table_and_its_sidecar_are_written_with_the_conditions(presets):
     rows = json.loads(presets["table"].read_text())
     assert [row["stroke"] for row in rows] == list(STROKES)
-    sidecar = json.loads(presets["table"].with_name("strokes.json.meta.json").read_text())
-    assert sidecar["command"][0] == "stroke"
-    said = " ".join(presets["out"].split("\n  "))  # the header line, unwrapped
-    assert sidecar["conditions"] in said and "ball-string friction" in sidecar["conditions"]
+    record = sidecar(presets)
+    assert record["command"][0] == "stroke" and "ball-string friction" in record["conditions"]
     for row in rows:
         assert row["contact"] in ("slid", "gripped") and 0.0 < row["racket_share"] <= 1.0
         assert 1.0 < row["contact_time_ms"] < 10.0 and row["spin_rpm"] >= 0.0
@@ -136,11 +117,9 @@ def test_a_grid_prints_the_angles_swept_with_the_ball_after(own):
 
 
 def test_mph_in_mph_out_and_km_h_in_km_h_out():
-    status, out, err = _main(["stroke", "volley", "--head-speed-mph", "12"])
-    assert status == 0, err
+    out, _ = run_ok(["stroke", "volley", "--head-speed-mph", "12"])
     assert "[mph]" in out and "[m/s]" not in out
-    status, out, err = _main(["stroke", "volley", "--ball-speed-kmh", "60"])
-    assert status == 0, err
+    out, _ = run_ok(["stroke", "volley", "--ball-speed-kmh", "60"])
     assert "[km/h]" in out and "[m/s]" not in out
 
 
@@ -148,8 +127,7 @@ def test_the_bed_sideways_is_said_and_changes_the_spin(tmp_path):
     spins = {}
     for how in ([], ["--lubricated"], ["--stiff-bed"]):
         path = tmp_path / f"k{len(spins)}.csv"
-        status, out, err = _main(["stroke", "kick-serve", *how, "--out", str(path)])
-        assert status == 0, err
+        out, _ = run_ok(["stroke", "kick-serve", *how, "--out", str(path)])
         header = " ".join(out.split("\n  "))
         said = {(): "on dry crosses", ("--lubricated",): "on lubricated crosses",
                 ("--stiff-bed",): "mains held still"}[tuple(how)]  # fmt: skip
@@ -192,29 +170,9 @@ def test_the_bed_sideways_is_said_and_changes_the_spin(tmp_path):
         (["--out", "nodir/s.csv"], "--out: directory 'nodir'"),
     ],
 )
-def test_bad_input_is_one_line_naming_the_option_exit_2_nothing_written(
-    argv, said, tmp_path, monkeypatch
-):
-    monkeypatch.chdir(tmp_path)
+def test_bad_input_is_one_line_naming_the_option_exit_2_nothing_written(argv, said, workdir):
     output = ["--plot", "p.png"] if "--out" in argv else ["--out", "t.csv"]  # would be written
-    status, out, err = _main(["stroke", *argv, *output])
-    lines = [line for line in err.strip().splitlines() if "compiling the solver" not in line]
-    assert status == 2 and out == "", err
-    assert len(lines) == 1 and said in lines[0] and "Traceback" not in err, err
-    assert list(tmp_path.iterdir()) == []
-
-
-@pytest.mark.parametrize(
-    "argv, asked",
-    [
-        (["--topspin", "200"], "rad/s typed as rpm? 200 rad/s would be 1910 rpm"),
-        (["--face", "0.2"], "radians typed as deg? 0.2 rad would be 11.46 deg"),
-        (["--head-speed-mph", "120"], "--head-speed-mph 120 mph is faster than any recorded"),
-    ],
-)
-def test_a_value_that_looks_like_another_unit_is_asked_about(argv, asked):
-    status, _, err = _main(["stroke", "volley", *argv])
-    assert status == 0 and "warning" in err and asked in err, err
+    assert said in refusal(["stroke", *argv, *output], notice=True, folder=workdir)
 
 
 def test_a_run_that_fails_late_leaves_no_table_and_no_sidecar(tmp_path, monkeypatch):
@@ -223,15 +181,13 @@ def test_a_run_that_fails_late_leaves_no_table_and_no_sidecar(tmp_path, monkeypa
 
     monkeypatch.setattr("studies.cli.stroke.save_plot", failing)
     table = tmp_path / "t.csv"
-    status, _, err = _main(["stroke", "volley", "--out", str(table), "--plot",
-                            str(tmp_path / "p.png")])  # fmt: skip
+    status, _, err = run_main(["stroke", "volley", "--out", str(table), "--plot",
+                               str(tmp_path / "p.png")])  # fmt: skip
     assert status == 2 and "No space left on device" in err
     assert list(tmp_path.iterdir()) == []
 
 
 def test_the_help_names_the_presets_and_the_units():
-    status, out, _ = _main(["stroke", "--help"])
-    assert status == 0
-    said = " ".join(out.split())
+    said = help_text("stroke")
     for words in (*STROKES, "[deg]", "[rpm]", "[mph]", "--head-speed-kmh", "--stiff-bed"):
         assert words in said, words

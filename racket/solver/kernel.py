@@ -111,7 +111,7 @@ def run_impacts(frame, points, ball, controls, out, start, stop, step):
         histories of the first T steps (if recorded).
     start, stop, step : int
         The slice of the P impacts to run (compiled with ``nogil``, so that threads can run
-        slices at once: :func:`racket.solver.driver._run_on_threads`).
+        slices at once: :func:`racket.solver.dispatch._run_on_threads`).
     """
     for p in range(start, stop, step):
         _one_impact(frame, points, ball, controls, out, p)

@@ -22,61 +22,12 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from racket.solver import lockstep_slot as slot
+from racket.solver import tile_layout as tl
 from racket.solver.bed_kernel import bed_active
 from racket.solver.bed_mass_kernel import BED_MEMO_ROWS
 from racket.solver.contact_kernel import MEMO_ROWS, contact_force
 from racket.solver.layout import H_FORCE, LINEAR, SINE
-from racket.solver.lockstep_slot import (
-    after_step,
-    finish,
-    massed_force,
-    massed_opening,
-    move_slot,
-    opening,
-    sine_force,
-    start_slot,
-)
-from racket.solver.tile_layout import (
-    C0,
-    C1,
-    C2,
-    DAMPING,
-    DONE,
-    F2,
-    F2_BEFORE,
-    F2_NEW,
-    F2_PEAK,
-    F_BEFORE,
-    F_NEW,
-    F_PEAK_,
-    FORCE,
-    GIN0_0,
-    GIN0_1,
-    GIN1_0,
-    GIN1_1,
-    IMPACT,
-    N_FLAGS,
-    N_ROWS,
-    N_SCALARS,
-    NEED,
-    OUT_D0,
-    OUT_D1,
-    POWER,
-    POWER_PREV,
-    RECONTACT,
-    ROW,
-    S0,
-    S1,
-    STOP_AT,
-    TAU,
-    TILE,
-    U_P,
-    UD,
-    UD_P,
-    A,
-    U,
-    Z,
-)
 
 
 @njit(cache=True, nogil=True)
@@ -85,13 +36,13 @@ def run_lockstep(frame, points, ball, controls, out, start, stop, step):
     lockstep; the same arguments and outputs as :func:`racket.solver.kernel.run_impacts`.
     """
     nb = frame.trans.shape[0]
-    w = np.empty((N_ROWS, nb, TILE))
-    v = np.empty((N_SCALARS, TILE))
-    memo = np.empty((max(MEMO_ROWS, BED_MEMO_ROWS), TILE))  # the contacts' memos
-    flags = np.empty((N_FLAGS, TILE), dtype=np.int64)
+    w = np.empty((tl.N_ROWS, nb, tl.TILE))
+    v = np.empty((tl.N_SCALARS, tl.TILE))
+    memo = np.empty((max(MEMO_ROWS, BED_MEMO_ROWS), tl.TILE))  # the contacts' memos
+    flags = np.empty((tl.N_FLAGS, tl.TILE), dtype=np.int64)
     scratch = np.empty((nb, 2))
     ids = np.arange(start, stop, step)
-    tiles = -(-ids.size // TILE)
+    tiles = -(-ids.size // tl.TILE)
     size = -(-ids.size // max(tiles, 1))  # tiles of even size: no narrow last one
     for first in range(0, ids.size, size):
         _tile(frame, points, ball, controls, out, ids[first : first + size], w, v, flags, scratch,
@@ -111,7 +62,7 @@ def _tile(frame, points, ball, controls, out, ids, w, v, flags, scratch, memo):
     dt = controls.dt
     h = dt * dt / (6.0 * bed[2]) if massed else 0.0
     for i in range(n):
-        start_slot(frame, points, ball, out, ids[i], i, w, v, flags, record, h)
+        slot.start_slot(frame, points, ball, out, ids[i], i, w, v, flags, record, h)
         memo[0, i] = -1.0
         memo[3, i], memo[4, i] = 0.0, -1.0
     step = 0
@@ -119,13 +70,25 @@ def _tile(frame, points, ball, controls, out, ids, w, v, flags, scratch, memo):
     g00, g01, g10, g11 = ball.g0[0], ball.g0[1], ball.g1[0], ball.g1[1]
     tol = controls.force_tol if sine else 0.0
     # Views made once (making one in the loop costs two atomic reference counts).
-    s0, s1, out_d0, out_d1, trans = w[S0], w[S1], w[OUT_D0], w[OUT_D1], frame.trans
-    gin0_0, gin0_1, gin1_0, gin1_1 = w[GIN0_0], w[GIN0_1], w[GIN1_0], w[GIN1_1]
-    u, ud, u_p, ud_p, z, tau = v[U], v[UD], v[U_P], v[UD_P], v[Z], v[TAU]
-    force, f_new, f_before, f_peak = v[FORCE], v[F_NEW], v[F_BEFORE], v[F_PEAK_]
-    power, power_prev, damping, need, row = v[POWER], v[POWER_PREV], v[DAMPING], v[NEED], v[ROW]
-    c0, c1, c2, stop_at, recontacts = v[C0], v[C1], v[C2], flags[STOP_AT], flags[RECONTACT]
-    f_frame, f_frame_new = (v[F2], v[F2_NEW]) if massed else (force, f_new)  # on the frame
+    s0, s1, out_d0, out_d1, trans = w[tl.S0], w[tl.S1], w[tl.OUT_D0], w[tl.OUT_D1], frame.trans
+    gin0_0, gin0_1, gin1_0, gin1_1 = w[tl.GIN0_0], w[tl.GIN0_1], w[tl.GIN1_0], w[tl.GIN1_1]
+    u, ud, u_p, ud_p, z, tau = v[tl.U], v[tl.UD], v[tl.U_P], v[tl.UD_P], v[tl.Z], v[tl.TAU]
+    force, f_new, f_before, f_peak = v[tl.FORCE], v[tl.F_NEW], v[tl.F_BEFORE], v[tl.F_PEAK_]
+    power, power_prev, damping, need, row = (
+        v[tl.POWER],
+        v[tl.POWER_PREV],
+        v[tl.DAMPING],
+        v[tl.NEED],
+        v[tl.ROW],
+    )
+    c0, c1, c2, stop_at, recontacts = (
+        v[tl.C0],
+        v[tl.C1],
+        v[tl.C2],
+        flags[tl.STOP_AT],
+        flags[tl.RECONTACT],
+    )
+    f_frame, f_frame_new = (v[tl.F2], v[tl.F2_NEW]) if massed else (force, f_new)  # on the frame
     while n > 0 and step < controls.max_steps:
         # The free step (the force going from `force` to 0): ball, blocks, the point.
         _ball_free(t00, t01, t10, t11, g00, g01, u, ud, force, u_p, ud_p, z, n)
@@ -133,8 +96,8 @@ def _tile(frame, points, ball, controls, out, ids, w, v, flags, scratch, memo):
         # The force at the step's end.
         if massed:
             for i in range(n):
-                k_bed = 1.0 / points.inv_ks[flags[IMPACT, i]]
-                massed_force(law, params, bed, k_bed, v, i, dt, h, memo)
+                k_bed = 1.0 / points.inv_ks[flags[tl.IMPACT, i]]
+                slot.massed_force(law, params, bed, k_bed, v, i, dt, h, memo)
         elif law == LINEAR and plain:
             _linear_force(u_p, z, c0, c1, c2, f_peak, f_new, n)
         else:
@@ -142,12 +105,12 @@ def _tile(frame, points, ball, controls, out, ids, w, v, flags, scratch, memo):
                 z[i] = u_p[i] - z[i]  # z_pred
             for i in range(n):
                 if sine:
-                    sine_force(params[0], controls, out, v, flags, i, step)
+                    slot.sine_force(params[0], controls, out, v, flags, i, step)
                 else:
                     coef = (c0[i], c1[i], c2[i])
                     guess = 2.0 * force[i] - f_before[i]
-                    inv_ks = points.inv_ks[flags[IMPACT, i]]
-                    f_new[i] = contact_force(law, params, coef, bed, inv_ks, v[A, i], z[i],
+                    inv_ks = points.inv_ks[flags[tl.IMPACT, i]]
+                    f_new[i] = contact_force(law, params, coef, bed, inv_ks, v[tl.A, i], z[i],
                                              f_peak[i], guess, memo, i)  # fmt: skip
         # The response to the force at the step's end.
         _ball_force(g10, g11, u_p, ud_p, f_new, u, ud, tau, n)
@@ -155,38 +118,38 @@ def _tile(frame, points, ball, controls, out, ids, w, v, flags, scratch, memo):
         if massed:
             for i in range(n):  # the ball left the bed within the step: placed there
                 if f_new[i] == 0.0 and force[i] > 0.0:
-                    massed_opening(ball, law, params, v, i, dt, h)
-                v[F2_BEFORE, i], v[F2, i] = v[F2, i], v[F2_NEW, i]
-                v[F2_PEAK, i] = max(v[F2_PEAK, i], v[F2, i])
+                    slot.massed_opening(ball, law, params, v, i, dt, h)
+                v[tl.F2_BEFORE, i], v[tl.F2, i] = v[tl.F2, i], v[tl.F2_NEW, i]
+                v[tl.F2_PEAK, i] = max(v[tl.F2_PEAK, i], v[tl.F2, i])
         elif not sine:
             for i in range(n):  # the contact opened within the step: placed there
                 if f_new[i] == 0.0 and force[i] > 0.0:
-                    opening(ball, law, params, points, flags[IMPACT, i], w, v, i, nb)
+                    slot.opening(ball, law, params, points, flags[tl.IMPACT, i], w, v, i, nb)
         _powers(frame.damp_blocks, frame.damp_rows, s0, s1, power, row, n)
         _bookkeep(power, power_prev, damping, force, f_new, f_before, f_peak, need, stop_at,
                   recontacts, dt, tol, n)  # fmt: skip
         step += 1
         if record and not full and step < out.history.shape[2]:
             for i in range(n):
-                if not flags[DONE, i]:
-                    out.history[H_FORCE, flags[IMPACT, i], step] = force[i]
+                if not flags[tl.DONE, i]:
+                    out.history[H_FORCE, flags[tl.IMPACT, i], step] = force[i]
         for i in range(n):
-            if (full or need[i] != 0.0) and not flags[DONE, i]:
+            if (full or need[i] != 0.0) and not flags[tl.DONE, i]:
                 left = force[i] == 0.0 and f_before[i] > 0.0
-                after_step(frame, points, ball, controls, out, w, v, flags, scratch, i, step, left,
-                            memo)  # fmt: skip
+                slot.after_step(frame, points, ball, controls, out, w, v, flags, scratch, i, step,
+                                left, memo)  # fmt: skip
         # Impacts that have ended leave the tile; the last takes each one's place.
         i = 0
         while i < n:
-            if flags[DONE, i] or step == flags[STOP_AT, i] or step >= controls.max_steps:
-                if not flags[DONE, i]:
-                    finish(out, v, flags, i, step)
+            if flags[tl.DONE, i] or step == flags[tl.STOP_AT, i] or step >= controls.max_steps:
+                if not flags[tl.DONE, i]:
+                    slot.finish(out, v, flags, i, step)
                 n -= 1
-                move_slot(w, v, flags, memo, n, i, nb)
+                slot.move_slot(w, v, flags, memo, n, i, nb)
             else:
                 i += 1
     for i in range(n):  # (only if the budget allowed no step at all)
-        finish(out, v, flags, i, step)
+        slot.finish(out, v, flags, i, step)
 
 
 @njit(cache=True)

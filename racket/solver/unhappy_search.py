@@ -32,20 +32,10 @@ def unhappy_x_o(racket, ball, x, y, speed, swing_speed, pivot, stepper: Stepper)
 
     Parameters
     ----------
-    racket : Racket
-        The racket.
+    racket, x, y, speed, swing_speed, pivot
+        As in :class:`~racket.solver.stepper.Stepper`.
     ball : Ball
         The unhappy ball (sine law).
-    x : ndarray
-        Impact points [m from the tip].
-    y : ndarray or None
-        Their offsets [m from the long axis], None on the axis.
-    speed : float
-        Ball speed [m/s] towards the strings before impact.
-    swing_speed : float or ndarray
-        Speed [m/s] of each impact point towards the ball from the racket's swing.
-    pivot : float or None
-        The swing's centre of rotation [m from the tip], None for pure translation.
     stepper : Stepper
         The impacts' kernel inputs with the full steps.
     """

@@ -103,26 +103,32 @@ _TENNISADDICT = (
 _TENNIS_COM = "tennis.com, 'Racquet review: Babolat Pure Drive' (2025), strung values"
 _TENNIS_EXPRESS = "tennisexpress.com, 'Wilson Pro Staff 97L CV tennis racquet review'"
 
+
+def _sheet(**quoted) -> dict:
+    """An :class:`Entry`'s ``specs`` and ``sources`` from pairs (the number, where it comes
+    from), one keyword of :func:`racket.specs.from_specs` each, so that every number sits
+    beside its source.
+    """
+    return dict(
+        specs={key: number for key, (number, _) in quoted.items()},
+        sources={key: source for key, (_, source) in quoted.items()},
+    )
+
+
 CATALOG = {
     "pure-drive-2021": Entry(
         name="Babolat Pure Drive (2021)",
-        specs=dict(
-            length_m=0.6858,
-            mass_kg=0.321,
-            balance_cm=33.0,
-            swingweight_kgcm2=325.0,
-            head_size_cm2=645.0,
-            ra=66.0,
-            tension_lb=55.0,
-        ),
-        sources=dict(
-            length_m="27 in, the standard length; Pure Drive: tennis.com review (Length 27 in)",
-            mass_kg=_TENNISADDICT + ": masse 321 g",
-            balance_cm=_TENNISADDICT + ": equilibre 330 mm",
-            swingweight_kgcm2=_TENNISADDICT + ": inertie 325",
-            head_size_cm2=_TENNISADDICT + ": tamis 645 cm2",
-            ra=_TENNISADDICT + ": RA 66 strung (68 unstrung)",
-            tension_lb=PAPER_TENSION,
+        **_sheet(
+            length_m=(
+                0.6858,
+                "27 in, the standard length; Pure Drive: tennis.com review (Length 27 in)",
+            ),
+            mass_kg=(0.321, _TENNISADDICT + ": masse 321 g"),
+            balance_cm=(33.0, _TENNISADDICT + ": equilibre 330 mm"),
+            swingweight_kgcm2=(325.0, _TENNISADDICT + ": inertie 325"),
+            head_size_cm2=(645.0, _TENNISADDICT + ": tamis 645 cm2"),
+            ra=(66.0, _TENNISADDICT + ": RA 66 strung (68 unstrung)"),
+            tension_lb=(55.0, PAPER_TENSION),
         ),
         notes="RA 66 strung (68 unstrung) measured by tennisaddict.fr; Babolat quotes 72.",
         strung_sources=STRUNG_SOURCES
@@ -130,46 +136,28 @@ CATALOG = {
     ),
     "pure-drive-2025": Entry(
         name="Babolat Pure Drive (2025)",
-        specs=dict(
-            length_m=0.6858,
-            mass_kg=11.1 * OUNCE,
-            balance_pts_hl=4.0,
-            swingweight_kgcm2=315.0,
-            head_size_in2=100.0,
-            ra=69.0,
-            tension_lb=55.0,
-        ),
-        sources=dict(
-            length_m=_TENNIS_COM + ": Length 27 in",
-            mass_kg=_TENNIS_COM + ": Weight 11.1 oz",
-            balance_pts_hl=_TENNIS_COM + ": Balance 4 pts HL",
-            swingweight_kgcm2=_TENNIS_COM + ": Swingweight 315",
-            head_size_in2=_TENNIS_COM + ": Head Size 100 sq. in.",
-            ra=_RECORDED,
-            tension_lb=PAPER_TENSION,
+        **_sheet(
+            length_m=(0.6858, _TENNIS_COM + ": Length 27 in"),
+            mass_kg=(11.1 * OUNCE, _TENNIS_COM + ": Weight 11.1 oz"),
+            balance_pts_hl=(4.0, _TENNIS_COM + ": Balance 4 pts HL"),
+            swingweight_kgcm2=(315.0, _TENNIS_COM + ": Swingweight 315"),
+            head_size_in2=(100.0, _TENNIS_COM + ": Head Size 100 sq. in."),
+            ra=(69.0, _RECORDED),
+            tension_lb=(55.0, PAPER_TENSION),
         ),
         strung_sources=STRUNG_SOURCES
         | dict(pattern=_TWU_PATTERN.format("Pure Drives (2012-2021, every one 16x19)")),
     ),
     "pro-staff-97l-cv": Entry(
         name="Wilson Pro Staff 97L CV",
-        specs=dict(
-            length_m=0.6858,
-            mass_kg=10.7 * OUNCE,
-            balance_pts_hl=6.0,
-            swingweight_kgcm2=313.0,
-            head_size_in2=97.0,
-            ra=68.0,
-            tension_lb=55.0,
-        ),
-        sources=dict(
-            length_m=_TENNIS_EXPRESS + ": Length 27 inches",
-            mass_kg=_TENNIS_EXPRESS + ": Weight strung 10.7 oz",
-            balance_pts_hl=_TENNIS_EXPRESS + ": Balance 6 Pts Head Light",
-            swingweight_kgcm2=_TENNIS_EXPRESS + ": Swing Weight 313",
-            head_size_in2=_TENNIS_EXPRESS + ": Head Size 97 sq. in.",
-            ra=_RECORDED,
-            tension_lb=PAPER_TENSION,
+        **_sheet(
+            length_m=(0.6858, _TENNIS_EXPRESS + ": Length 27 inches"),
+            mass_kg=(10.7 * OUNCE, _TENNIS_EXPRESS + ": Weight strung 10.7 oz"),
+            balance_pts_hl=(6.0, _TENNIS_EXPRESS + ": Balance 6 Pts Head Light"),
+            swingweight_kgcm2=(313.0, _TENNIS_EXPRESS + ": Swing Weight 313"),
+            head_size_in2=(97.0, _TENNIS_EXPRESS + ": Head Size 97 sq. in."),
+            ra=(68.0, _RECORDED),
+            tension_lb=(55.0, PAPER_TENSION),
         ),
         strung_sources=STRUNG_SOURCES
         | dict(pattern=_TWU_PATTERN.format("Wilson Pro Staff 97L Countervail CAMO: 16x19")),

@@ -147,10 +147,8 @@ def swing_kwargs(bat: Bat, swing: BatSwing | None, x) -> dict:
 
     Parameters
     ----------
-    bat : Bat
-        The bat.
-    swing : BatSwing or None
-        Its swing.
+    bat, swing
+        As in :func:`swing_argument`.
     x : float or ndarray
         The impact points [m from the tip].
     """
@@ -220,10 +218,8 @@ def swing_words(bat: Bat, swing: BatSwing | None, unit: str = "m/s") -> str:
 
     Parameters
     ----------
-    bat : Bat
-        The bat.
-    swing : BatSwing or None
-        Its swing.
+    bat, swing
+        As in :func:`swing_argument`.
     unit : str
         The unit of the speeds: "m/s", "mph" or "km/h".
     """

@@ -11,7 +11,7 @@ from ball.catalog import ITF_DROP
 from ball.collision import largest_closing_speed, too_fast_to_store
 from common.checks import CM_AS_M, SPEED_RANGE, in_range, shown
 from common.units import SPEED_SUFFIXES, SPEED_UNITS
-from studies.cli.files import check_outputs, save_plot, say_conditions, write_table
+from studies.cli.files import add_outputs, check_outputs, save_plot, say_conditions, write_table
 from studies.cli.options import (
     _ball_arg,
     _Named,
@@ -220,7 +220,7 @@ def add_ball(sub) -> None:
     from studies.bounce import DEFAULT_SPEEDS
 
     _speed_option(p, "speeds", [round(v, 2) for v in DEFAULT_SPEEDS], "impact speeds", True)
-    p.add_argument("--out", metavar="FILE", help="table file: .csv, .json or .parquet")
+    add_outputs(p)
     p.add_argument(
         "--plot",
         metavar="FILE",

@@ -40,7 +40,7 @@ from studies.bat.sweep import (
     SWEEP_STEP,
     SWEET_ZONE_FRACTION,
 )
-from studies.cli.files import check_outputs, save_plot, say_conditions, write_table
+from studies.cli.files import add_outputs, check_table_and_plot, say_conditions, write_outputs
 from studies.cli.options import (
     _ball_arg,
     _count,
@@ -127,14 +127,13 @@ def add_bat(sub) -> None:
     p.add_argument("--duration-ms", type=float, metavar="MS",
                    help=f"feel: how long to follow the bat [ms] (default "
                    f"{1e3 * FEEL_DURATION:g})")  # fmt: skip
-    p.add_argument("--out", metavar="FILE", help="table file: .csv, .json or .parquet")
-    p.add_argument("--plot", metavar="FILE", help="plot (.png, .svg, .pdf)")
+    add_outputs(p, plot="plot")
     p.set_defaults(func=cmd_bat)
 
 
 def cmd_bat(args) -> int:
     """``racket-impact bat``."""
-    check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
+    check_table_and_plot(args)
     for dest in _ONLY[args.action]:  # (``given`` would say --from as "--from-")
         if getattr(args, f"_seen_{dest}", False):
             flag = "--" + dest.rstrip("_").replace("_", "-")
@@ -337,13 +336,13 @@ def _sweep(args) -> int:
               f"{100 * sweep.peak_from_knob:.1f} cm from the knob; sweet zone (within "
               f"{100 * SWEET_ZONE_FRACTION:g} % of it) {100 * low:.1f}-{100 * high:.1f} cm from "
               "the knob")  # fmt: skip
-    if args.out:
-        write_table(table, args.out)
-    if args.plot:
+
+    def draw():
         from studies.plots.bat import plot_exit_speed
 
-        save_plot(plot_exit_speed(sweeps, unit=unit, conditions=conditions), args.plot)
-    return 0
+        return plot_exit_speed(sweeps, unit=unit, conditions=conditions)
+
+    return write_outputs(args, table, draw)
 
 
 def _bbcor(args) -> int:
@@ -369,13 +368,13 @@ def _bbcor(args) -> int:
               f"{100 * test.from_knob:.1f} cm from the knob {verdict} the limit "
               f"{test.table['limit'].iloc[0]:.3f} (ball's own COR "
               f"{test.ball_cor:.4f})")  # fmt: skip
-    if args.out:
-        write_table(table, args.out)
-    if args.plot:
+
+    def draw():
         from studies.plots.bat import plot_bbcor
 
-        save_plot(plot_bbcor(tests, conditions=conditions), args.plot)
-    return 0
+        return plot_bbcor(tests, conditions=conditions)
+
+    return write_outputs(args, table, draw)
 
 
 def _feel(args) -> int:
@@ -424,10 +423,10 @@ def _feel(args) -> int:
     _print_table(modes.rename(columns={"frequency_Hz": "frequency [Hz]", "nodes_from_knob_cm":
                                        "nodes [cm from the knob]", "energy_J": "energy [J]",
                                        "share": "share [-]", "mode": "mode"}).head(8))  # fmt: skip
-    if args.out:
-        write_table(feel.table, args.out)
-    if args.plot:
+
+    def draw():
         from studies.plots.bat import plot_handle
 
-        save_plot(plot_handle(feel, conditions=conditions), args.plot)
-    return 0
+        return plot_handle(feel, conditions=conditions)
+
+    return write_outputs(args, feel.table, draw)

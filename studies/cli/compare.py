@@ -4,25 +4,26 @@ from __future__ import annotations
 
 from common.checks import shown
 from racket import DEFAULT_RACKET
-from studies.cli.files import check_outputs, save_plot, say_conditions, write_table
+from studies.cli.files import check_table_and_plot, say_conditions, write_outputs
 from studies.cli.options import (
-    _ball_arg,
     _check_swing,
     _count,
     _labels,
     _print_table,
     _scale,
     _scale_options,
-    _speed,
-    _speed_option,
-    _swing,
     _swing_options,
     speed_unit,
+    swing_and_speed,
 )
-from studies.cli.racket_options import add_racket_options, racket_conditions, racket_from
+from studies.cli.racket_options import (
+    add_ball_speed,
+    add_racket_options,
+    racket_conditions,
+    racket_from,
+)
 from studies.cli.show import compare_view
 from studies.config import load_ball
-from studies.sweeps import BALL_SPEED
 
 SECOND_RACKET = "pro-staff-97l-cv"
 """The racket ``compare`` sets beside the default one when none is named."""
@@ -39,8 +40,7 @@ def add_compare(sub) -> None:
         help="a racket, as PRESET_OR_TOML or LABEL=PRESET_OR_TOML (repeat; default: "
         f"{DEFAULT_RACKET} and {SECOND_RACKET})",
     )
-    _ball_arg(p)
-    _speed_option(p, "speed", BALL_SPEED, "ball speed towards the strings")
+    add_ball_speed(p)
     p.add_argument("--points", type=int, default=101, help="impact points per racket")
     _swing_options(p)
     p.add_argument(
@@ -68,11 +68,10 @@ def cmd_compare(args) -> int:
     from studies.face.maps import compare_summary
     from studies.sweeps import check_impacts, compare
 
-    check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
+    check_table_and_plot(args)
     scale = _scale(args)
     points = _count("--points", args.points, 2, 100_000)
-    swing = _swing(args)
-    speed = _speed(args, "speed", allow_zero=swing is not None)
+    swing, speed = swing_and_speed(args)
     names = args.racket or [DEFAULT_RACKET, SECOND_RACKET]
     if len(names) < 2:
         raise ValueError(f"compare needs two or more --racket, got {len(names)}")
@@ -113,14 +112,14 @@ def cmd_compare(args) -> int:
     _print_table(compare_view(summary, unit, swung=swing is not None))
     for note in summary.attrs["notes"]:  # each "-" of the table said
         print(note)
-    if args.out:
-        write_table(table if args.long else summary, args.out)
-    if args.plot:
+
+    def draw():
         from studies.plots import plot_cor_comparison
 
         groups = {k: g for k, g in table.groupby("racket", sort=False)}
-        save_plot(plot_cor_comparison(groups, conditions=conditions), args.plot)
-    return 0
+        return plot_cor_comparison(groups, conditions=conditions)
+
+    return write_outputs(args, table if args.long else summary, draw)
 
 
 def _strings_grid(args) -> list:

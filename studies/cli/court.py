@@ -6,7 +6,6 @@ and spins in rpm as typed, in SI for the core (:mod:`studies.strokes.court`).
 from __future__ import annotations
 
 import math
-import warnings
 
 from ball.court import (
     COR_RANGE,
@@ -24,14 +23,13 @@ from common.checks import (
     finite,
     in_range,
     shown,
-    slip_hints,
     too_fast,
 )
 from common.units import SPEED_SUFFIXES
 from racket.stroke import RPM
-from studies.cli.files import check_outputs, say_conditions, write_table
+from studies.cli.files import add_outputs, check_outputs, say_conditions, write_table
 from studies.cli.options import _ball_arg, _print_table, _speed_option, _typed, speed_unit
-from studies.cli.stroke import SLOW_SPIN_RPM, SMALL_ANGLE_DEG
+from studies.cli.stroke import ask_slow_spin, ask_small_angle, check_names, presets_parser
 from studies.conditions import speed_text
 from studies.config import load_ball
 
@@ -47,12 +45,10 @@ PERCENT_AS_FRACTION = (0.01, "percent typed as a fraction?", "%")
 
 def add_court(sub) -> None:
     """The ``court`` subcommand, on the subparsers ``sub``."""
-    p = sub.add_parser("court", help="a ball's bounce on a court and the court's ITF pace "
-                       "rating (presets or your own)")  # fmt: skip
-    p.add_argument(
-        "names", nargs="*", metavar="NAME",
-        help=f"courts: {', '.join(COURTS)} (default: all three; ball/court.py gives each "
-        f"number's source or says it is an assumption), or Cross's lab surfaces "
+    p = presets_parser(
+        sub, "court", "a ball's bounce on a court and the court's ITF pace rating",
+        f"courts: {', '.join(COURTS)} (default: all three; ball/court.py gives each number's "
+        f"source or says it is an assumption), or Cross's lab surfaces "
         f"{', '.join(repr(s) for s in LAB_SURFACES)}",
     )  # fmt: skip
     p.add_argument("--friction", type=float, metavar="X", help=f"your court's sliding "
@@ -68,7 +64,7 @@ def add_court(sub) -> None:
                    "test's)")  # fmt: skip
     p.add_argument("--topspin", type=float, metavar="RPM", help=f"the ball's spin before [rpm], "
                    f"within +-{SPIN_LIMIT_RPM:.0f}, negative: backspin (default none)")  # fmt: skip
-    p.add_argument("--out", metavar="FILE", help="table file: .csv, .json or .parquet")
+    add_outputs(p)
     p.set_defaults(func=cmd_court)
 
 
@@ -79,16 +75,9 @@ def cmd_court(args) -> int:
 
     check_outputs(tables=[("--out", args.out)])
     names = list(args.names) or list(COURTS)
-    known = {**COURTS, **LAB_SURFACES}
-    for name in names:
-        if name not in known:
-            raise ValueError(
-                f"unknown court {name!r}; the courts: {', '.join(COURTS)} (and the lab "
-                f"surfaces: {', '.join(repr(s) for s in LAB_SURFACES)}), or your own with "
-                "--friction and --cor"
-            )
-        if names.count(name) > 1:
-            raise ValueError(f"court {name!r} is named twice; name it once")
+    check_names(names, {**COURTS, **LAB_SURFACES}, "court", f"the courts: {', '.join(COURTS)} "
+                f"(and the lab surfaces: {', '.join(repr(s) for s in LAB_SURFACES)}), or your "
+                "own with --friction and --cor")  # fmt: skip
     courts = list(names)
     own = _own(args)
     if own is not None:
@@ -158,7 +147,7 @@ def _ball_speed(args) -> float:
 
 def _angle(value) -> float:
     """``--angle`` [deg] in (0, 90) (the ITF test's without one); one below
-    :data:`SMALL_ANGLE_DEG` asked about (radians typed as degrees?).
+    :data:`studies.cli.stroke.SMALL_ANGLE_DEG` asked about (radians typed as degrees?).
     """
     if value is None:
         return CPR_ANGLE_DEG
@@ -169,25 +158,18 @@ def _angle(value) -> float:
         raise ValueError(
             f"--angle must be in (0, 90) deg above the court, got {shown(value)}{hint}"
         )
-    if x < SMALL_ANGLE_DEG:
-        slipped = slip_hints(x, 0.0, 90.0, "deg", ((180 / math.pi, "radians typed as deg?",
-                                                    "rad"),))  # fmt: skip
-        warnings.warn(f"--angle {shown(x)} deg is a very small angle: {slipped}", stacklevel=2)
+    ask_small_angle("--angle", x, 0.0, 90.0)
     return x
 
 
 def _spin(value) -> float:
     """``--topspin`` [rpm] in :func:`ball.court.bounce`'s range, in rad/s (none without one);
-    one slower than :data:`SLOW_SPIN_RPM` asked about (rad/s typed as rpm?).
+    one slower than :data:`studies.cli.stroke.SLOW_SPIN_RPM` asked about (rad/s typed as rpm?).
     """
     if value is None:
         return 0.0
     x = in_range("--topspin", value, -SPIN_LIMIT_RPM, SPIN_LIMIT_RPM, "rpm")
-    if 0.0 < abs(x) < SLOW_SPIN_RPM:
-        slipped = slip_hints(x, -SPIN_LIMIT_RPM, SPIN_LIMIT_RPM, "rpm",
-                             ((1 / RPM, "rad/s typed as rpm?", "rad/s"),))  # fmt: skip
-        warnings.warn(f"--topspin {shown(x)} rpm is slower than balls in play spin (about "
-                      f"{SLOW_SPIN_RPM:g} rpm and more): {slipped}", stacklevel=2)  # fmt: skip
+    ask_slow_spin("--topspin", x, -SPIN_LIMIT_RPM, SPIN_LIMIT_RPM)
     return x * RPM
 
 

@@ -5,34 +5,33 @@ from __future__ import annotations
 import textwrap
 
 from common.checks import M_AS_CM, in_range
-from studies.cli.files import check_outputs, save_plot, say_conditions, write_table
+from studies.cli.files import (
+    add_outputs,
+    check_outputs,
+    check_table_and_plot,
+    say_conditions,
+    write_outputs,
+)
 from studies.cli.options import (
-    _ball_arg,
     _check_swing,
     _count,
     _print_table,
     _scale,
     _scale_options,
     _speed,
-    _speed_option,
     _swing,
-    _swing_options,
     refuse_unused,
     speed_unit,
+    swing_and_speed,
 )
-from studies.cli.racket_options import add_racket_options, racket_conditions, racket_from
+from studies.cli.racket_options import impact_parser, racket_conditions, racket_from
 from studies.cli.show import WIDTH, spots_view
 from studies.config import load_ball
-from studies.sweeps import BALL_SPEED
 
 
 def add_map(sub) -> None:
     """The ``map`` subcommand, on the subparsers ``sub``."""
-    p = sub.add_parser("map", help="e, e_A, exit speed, vibration and twist over the face")
-    add_racket_options(p)
-    _ball_arg(p)
-    _speed_option(p, "speed", BALL_SPEED, "ball speed towards the strings")
-    _swing_options(p)
+    p = impact_parser(sub, "map", "e, e_A, exit speed, vibration and twist over the face")
     p.add_argument(
         "--grid",
         type=int,
@@ -45,8 +44,7 @@ def add_map(sub) -> None:
         "--field", default="e_A", help="what the plot shows: e, e_A, exit_speed, "
         "exit_speed_swung, vibration_energy or roll_rate (default e_A)",
     )  # fmt: skip
-    p.add_argument("--out", metavar="FILE", help="table file: .csv, .json or .parquet")
-    p.add_argument("--plot", metavar="FILE", help="the map (.png, .svg, .pdf)")
+    add_outputs(p, plot="the map")
     _scale_options(p)
     p.set_defaults(func=cmd_map)
 
@@ -55,7 +53,7 @@ def cmd_map(args) -> int:
     """``racket-impact map``."""
     from studies.face.maps import FIELDS, check_map_points, face_map, face_points
 
-    check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
+    check_table_and_plot(args)
     scale = _scale(args)
     if args.field not in FIELDS:
         raise ValueError(f"--field must be one of {list(FIELDS)}, got {args.field!r}")
@@ -77,22 +75,18 @@ def cmd_map(args) -> int:
     for line in result.summary(unit):
         said = textwrap.fill(line.replace(" o'clock", "_o'clock"), WIDTH, subsequent_indent="  ")
         print(said.replace("_o'clock", " o'clock"))  # "3 o'clock" kept on one line
-    if args.out:
-        write_table(result.to_frame(), args.out)
-    if args.plot:
+
+    def draw():
         from studies.plots import plot_face_map
 
-        save_plot(plot_face_map(result, args.field, unit=unit, conditions=conditions), args.plot)
-    return 0
+        return plot_face_map(result, args.field, unit=unit, conditions=conditions)
+
+    return write_outputs(args, result.to_frame(), draw)
 
 
 def add_sweetspots(sub) -> None:
     """The ``sweetspots`` subcommand, on the subparsers ``sub``."""
-    p = sub.add_parser("sweetspots", help="nodes, centre of percussion, power spots, sweet area")
-    add_racket_options(p)
-    _ball_arg(p)
-    _speed_option(p, "speed", BALL_SPEED, "ball speed towards the strings")
-    _swing_options(p)
+    p = impact_parser(sub, "sweetspots", "nodes, centre of percussion, power spots, sweet area")
     p.add_argument(
         "--hand-cm-from-tip",
         type=float,
@@ -100,7 +94,7 @@ def add_sweetspots(sub) -> None:
         help="where the hand pivots, for the centre of percussion [cm from the tip] (default: "
         "the middle of the racket's grip)",
     )
-    p.add_argument("--out", metavar="FILE", help="table file: .csv, .json or .parquet")
+    add_outputs(p)
     p.set_defaults(func=cmd_sweetspots)
 
 
@@ -110,8 +104,7 @@ def cmd_sweetspots(args) -> int:
     from studies.face.sweetspots import sweet_spots
 
     check_outputs(tables=[("--out", args.out)])
-    swing = _swing(args)
-    speed = _speed(args, "speed", allow_zero=swing is not None)
+    swing, speed = swing_and_speed(args)
     racket, ball = racket_from(args), load_ball(args.ball)
     if racket.support == "clamped-head":
         refuse_unused(args, ("hand_cm_from_tip",), "to a racket with its head clamped (no "
@@ -137,6 +130,4 @@ def cmd_sweetspots(args) -> int:
         table.loc[fastest, "unit"] = unit
         table.loc[fastest, "meaning"] = f"swung at {speed_text(swing.head_speed, unit)} head speed"
     _print_table(spots_view(table), "{:.4g}")
-    if args.out:
-        write_table(table, args.out)
-    return 0
+    return write_outputs(args, table)

@@ -66,6 +66,36 @@ def check_outputs(tables=(), plots=(), directories=()) -> None:
         _check_directory(flag, existing, path)
 
 
+def add_outputs(p, table: str = "table file", plot: str | None = None) -> None:
+    """A command's ``--out`` (``table``: what its table is, said with :data:`TABLE_FORMATS`)
+    and, with ``plot`` (what it shows, said with :data:`PLOT_FORMATS`), its ``--plot``, on
+    the subparser ``p``.
+    """
+    *firsts, last = TABLE_FORMATS
+    p.add_argument("--out", metavar="FILE", help=f"{table}: {', '.join(firsts)} or {last}")
+    if plot is not None:
+        p.add_argument("--plot", metavar="FILE", help=f"{plot} ({', '.join(PLOT_FORMATS)})")
+
+
+def check_table_and_plot(args) -> None:
+    """:func:`check_outputs` of a command's ``--out`` (a table) and ``--plot``, before any
+    work.
+    """
+    check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
+
+
+def write_outputs(args, table: pd.DataFrame, draw=None) -> int:
+    """Write ``table`` to ``--out`` (:func:`write_table`) and the plot that ``draw()`` makes
+    (its Axes) to ``--plot`` (:func:`save_plot`), each if the command line gave it; ``draw``
+    is called only then (a plot imports matplotlib).  Returns 0, the command's exit status.
+    """
+    if args.out:
+        write_table(table, args.out)
+    if draw is not None and args.plot:
+        save_plot(draw(), args.plot)
+    return 0
+
+
 def _check_parquet(flag: str) -> None:
     """A Parquet table needs an engine pandas writes it with (pyarrow, or fastparquet):
     ValueError with the fix before any work, not after it.

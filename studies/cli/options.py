@@ -267,6 +267,20 @@ def _swing(args):
     return Swing(_speed(args, "swing_speed"), _pivot(args))
 
 
+def swing_and_speed(args) -> tuple:
+    """The racket's swing (:func:`_swing`: a Swing, or None) and the ball's ``--speed`` [m/s]
+    (a list for a many-valued option), checked in that order: a swung racket may meet a
+    ball at rest (0).
+
+    Parameters
+    ----------
+    args : argparse.Namespace
+        The parsed command line.
+    """
+    swing = _swing(args)
+    return swing, _speed(args, "speed", allow_zero=swing is not None)
+
+
 def _check_swing(args, swing, racket, positions, name: str = "swing_speed") -> None:
     """``swing`` (of the speed option ``--NAME[-mph|-kmh]`` and ``--pivot-cm-from-tip``)
     checked for the impact points ``positions`` [m from the tip], the message quoting the

@@ -16,11 +16,20 @@ from racket import DEFAULT_RACKET, GRIPS, STRINGS, SUPPORTS
 from racket.racket import ADDED_MASS_MAX
 from racket.strings.sizes import GAUGE_RANGE, GAUGES, diameter, parse_pattern
 from racket.strings.stringing import restrung, stringing
-from studies.cli.options import _Once, _tension, given, refuse_unused, speed_unit
+from studies.cli.options import (
+    _ball_arg,
+    _Once,
+    _speed_option,
+    _swing_options,
+    _tension,
+    given,
+    refuse_unused,
+    speed_unit,
+)
 from studies.conditions import conditions_line, racket_details
 from studies.config import RACKETS, load_racket
 from studies.strings.inputs import DT_RANGE, LB_AS_KG, N_M_AS_KP_CM, TENSION_KG_RANGE
-from studies.sweeps import STRING_STIFFNESS_RANGE
+from studies.sweeps import BALL_SPEED, STRING_STIFFNESS_RANGE
 
 _LEAD = re.compile(r"^\s*(\d+(?:\.\d*)?|\.\d+)\s*(?:g)?\s*@\s*(.+?)\s*$")
 
@@ -103,6 +112,35 @@ def add_racket_options(
         help="lead tape: grams per side at a clock position of the head, e.g. 3@12 (the "
         "tip), 2@3/9 (both sides), 4@6 (the throat)",
     )  # fmt: skip
+
+
+def add_ball_speed(p, many: bool = False) -> None:
+    """``--ball`` and its speed towards the strings, ``--speed`` (or ``--speed-mph``,
+    ``--speed-kmh``; default :data:`studies.sweeps.BALL_SPEED`), on the subparser ``p``;
+    ``many``: several speeds (a grid).
+    """
+    _ball_arg(p)
+    if many:
+        _speed_option(p, "speed", [BALL_SPEED], "ball speed(s) towards the strings", many=True)
+    else:
+        _speed_option(p, "speed", BALL_SPEED, "ball speed towards the strings")
+
+
+def impact_parser(
+    sub, name: str, what: str, swing: bool = True, support_default=None, many: bool = False
+):
+    """The subparser ``name`` (``what``: its help) on the subparsers ``sub`` of a command of
+    impacts on a racket: the racket's options (:func:`add_racket_options`; ``many`` and
+    ``support_default`` as there), the ball and its speed (:func:`add_ball_speed`) and, with
+    ``swing``, the racket's swing (``--swing-speed``, ``--pivot-cm-from-tip``); the command
+    adds its own.
+    """
+    p = sub.add_parser(name, help=what)
+    add_racket_options(p, many=many, support_default=support_default)
+    add_ball_speed(p, many=many)
+    if swing:
+        _swing_options(p)
+    return p
 
 
 class _OnceTrue(_Once):

@@ -12,11 +12,12 @@ from beam.beam import MAX_MODES
 from common.checks import M_AS_CM, S_AS_MS, in_range
 from common.units import KP_PER_CM
 from racket.specs.ra import ra_note
-from studies.cli.files import check_outputs, save_plot, say_conditions, write_table
-from studies.cli.options import _ball_arg, _count, _print_table, _speed, _speed_option
+from studies.cli.files import add_outputs, check_table_and_plot, say_conditions, write_outputs
+from studies.cli.options import _ball_arg, _count, _print_table, _speed
 from studies.cli.racket_options import (
     add_racket_options,
     check_offset,
+    impact_parser,
     modes_options,
     racket_conditions,
     racket_from,
@@ -28,12 +29,46 @@ from studies.sweeps import BALL_SPEED
 
 def add_modes(sub) -> None:
     """The ``modes`` subcommand, on the subparsers ``sub``."""
-    p = sub.add_parser("modes", help="frequencies, nodes, mass properties, swingweight")
-    add_racket_options(p)
-    p.add_argument("--count", type=int, default=6, help="bending modes listed (default 6)")
-    p.add_argument("--out", metavar="FILE", help="mode table: .csv, .json or .parquet")
-    p.add_argument("--plot", metavar="FILE", help="mode shapes (.png, .svg, .pdf)")
+    what = "frequencies, nodes, mass properties, swingweight"
+    p = _modes_parser(sub, "modes", what, 6, "mode table: .csv, .json or .parquet")
     p.set_defaults(func=cmd_modes)
+
+
+def _modes_parser(sub, name: str, what: str, count: int, table: str, ball: str | None = None):
+    """The subparser of ``modes`` or ``specs`` (``name``; ``what``: its help) on the
+    subparsers ``sub``: the racket's options, with ``ball`` (what the ball is for) ``--ball``,
+    ``--count`` (the bending modes listed, ``count`` by default), ``--out`` (``table``: its
+    help) and ``--plot`` (the mode shapes).
+    """
+    p = sub.add_parser(name, help=what)
+    add_racket_options(p)
+    if ball is not None:
+        _ball_arg(p, what=ball)
+    p.add_argument(
+        "--count", type=int, default=count, help=f"bending modes listed (default {count})"
+    )
+    p.add_argument("--out", metavar="FILE", help=table)
+    p.add_argument("--plot", metavar="FILE", help="mode shapes (.png, .svg, .pdf)")
+    return p
+
+
+def _modes_counted(args) -> int:
+    """The outputs of ``modes`` or ``specs`` checked, then ``--count``: the modes listed."""
+    check_table_and_plot(args)
+    return _count("--count", args.count, 1, MAX_MODES)
+
+
+def _modes_written(args, table, racket, count: int, conditions: str) -> int:
+    """``table`` to ``--out`` and the shapes of the ``count`` first modes of ``racket`` to
+    ``--plot``, as given; 0.
+    """
+
+    def draw():
+        from studies.plots import plot_modes
+
+        return plot_modes(racket, count=count, conditions=conditions)
+
+    return write_outputs(args, table, draw)
 
 
 def cmd_modes(args) -> int:
@@ -42,8 +77,7 @@ def cmd_modes(args) -> int:
 
     from studies.face.landmarks import hand_pivot, rigid_centre_of_percussion
 
-    check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
-    count = _count("--count", args.count, 1, MAX_MODES)
+    count = _modes_counted(args)
     modes_options(args)
     racket = racket_from(args)
     beam, modes = racket.beam, racket.beam.modes
@@ -79,25 +113,14 @@ def cmd_modes(args) -> int:
     table = pd.DataFrame(rows)
     print()
     _print_table(table, "{:.1f}")
-    if args.out:
-        write_table(table, args.out)
-    if args.plot:
-        from studies.plots import plot_modes
-
-        save_plot(plot_modes(racket, count=count, conditions=conditions), args.plot)
-    return 0
+    return _modes_written(args, table, racket, count, conditions)
 
 
 def add_specs(sub) -> None:
     """The ``specs`` subcommand, on the subparsers ``sub``."""
-    p = sub.add_parser(
-        "specs", help="the model fitted to a spec sheet: fit, masses, modes, effective mass"
-    )
-    add_racket_options(p)
-    _ball_arg(p, what="ball of the sweet spots")
-    p.add_argument("--count", type=int, default=4, help="bending modes listed (default 4)")
-    p.add_argument("--out", metavar="FILE", help="effective-mass table: .csv, .json, .parquet")
-    p.add_argument("--plot", metavar="FILE", help="mode shapes (.png, .svg, .pdf)")
+    what = "the model fitted to a spec sheet: fit, masses, modes, effective mass"
+    table = "effective-mass table: .csv, .json, .parquet"
+    p = _modes_parser(sub, "specs", what, 4, table, ball="ball of the sweet spots")
     p.set_defaults(func=cmd_specs)
 
 
@@ -105,8 +128,7 @@ def cmd_specs(args) -> int:
     """``racket-impact specs``."""
     from studies.report import spec_report
 
-    check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
-    count = _count("--count", args.count, 1, MAX_MODES)
+    count = _modes_counted(args)
     racket = racket_from(args)
     specs, sources = racket_specs(args.racket)
     report = spec_report(racket, specs, count=count, ball=load_ball(args.ball))
@@ -150,13 +172,7 @@ def cmd_specs(args) -> int:
         for part in report.parts.itertuples():
             print(textwrap.fill(f"{part.part}: {part.source}", WIDTH, initial_indent="  ",
                                 subsequent_indent="    "))  # fmt: skip
-    if args.out:
-        write_table(report.effective_mass, args.out)
-    if args.plot:
-        from studies.plots import plot_modes
-
-        save_plot(plot_modes(racket, count=count, conditions=conditions), args.plot)
-    return 0
+    return _modes_written(args, report.effective_mass, racket, count, conditions)
 
 
 def bed_text(bed) -> str:
@@ -182,20 +198,17 @@ def bed_text(bed) -> str:
 
 def add_feel(sub) -> None:
     """The ``feel`` subcommand, on the subparsers ``sub``."""
-    p = sub.add_parser("feel", help="the handle's motion at the hand after an impact")
     from studies.feel import FEEL_SUPPORT
 
-    add_racket_options(p, support_default=FEEL_SUPPORT)
-    _ball_arg(p)
-    _speed_option(p, "speed", BALL_SPEED, "ball speed towards the strings")
+    p = impact_parser(sub, "feel", "the handle's motion at the hand after an impact",
+                      swing=False, support_default=FEEL_SUPPORT)  # fmt: skip
     p.add_argument("--position", type=float, metavar="CM", help="impact point [cm from the "
                    "tip] (default: the string centre)")  # fmt: skip
     p.add_argument("--offset", type=float, metavar="CM", help="impact point's distance from "
                    "the long axis [cm, + towards 3 o'clock]")  # fmt: skip
     p.add_argument("--duration-ms", type=float, default=50.0, metavar="MS",
                    help="how long to follow the racket (default 50 ms)")  # fmt: skip
-    p.add_argument("--out", metavar="FILE", help="histories: .csv, .json or .parquet")
-    p.add_argument("--plot", metavar="FILE", help="histories and spectrum (.png, .svg, .pdf)")
+    add_outputs(p, "histories", "histories and spectrum")
     p.set_defaults(func=cmd_feel)
 
 
@@ -204,7 +217,7 @@ def cmd_feel(args) -> int:
     from racket.feel import hand_feel
     from studies.feel import feel_numbers
 
-    check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
+    check_table_and_plot(args)
     racket = racket_from(args)
     position, offset = racket.strings.center, None
     if args.position is not None:
@@ -236,12 +249,11 @@ def cmd_feel(args) -> int:
         f"{1e3 * feel.t[-1]:.0f} ms (all the hand absorbs: {1e3 * feel.hand_energy:.1f} mJ)"
     )
     print(f"vibration left in the frame  {1e3 * feel.vibration_energy_end:.2f} mJ")
-    if args.out:
-        from studies.tables import feel_table
+    from studies.tables import feel_table
 
-        write_table(feel_table(feel), args.out)
-    if args.plot:
+    def draw():
         from studies.plots import plot_hand_feel
 
-        save_plot(plot_hand_feel(feel, conditions=conditions), args.plot)
-    return 0
+        return plot_hand_feel(feel, conditions=conditions)
+
+    return write_outputs(args, feel_table(feel), draw)

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from common.checks import M_AS_CM, in_range, shown
 from common.units import SPEED_SUFFIXES, SPEED_UNITS
-from studies.cli.files import check_outputs, save_plot, say_conditions, write_table
+from studies.cli.files import add_outputs, check_outputs, save_plot, say_conditions, write_table
 from studies.cli.options import (
     _ball_arg,
     _check_swing,
@@ -53,8 +53,7 @@ def add_serve(sub) -> None:
         help="add the zero-COR ball (Sec. VIII) and sweep its reduction over string and ball "
         "stiffness",
     )
-    p.add_argument("--out", metavar="FILE", help="table file: .csv, .json or .parquet")
-    p.add_argument("--plot", metavar="FILE", help="what-if plot (.png, .svg, .pdf)")
+    add_outputs(p, plot="what-if plot")
     p.set_defaults(func=cmd_serve)
 
 

@@ -4,7 +4,7 @@
 
 from __future__ import annotations
 
-from studies.cli.files import check_outputs, say_conditions, write_table
+from studies.cli.files import add_outputs, check_outputs, say_conditions, write_table
 from studies.cli.options import (
     _ball_arg,
     _print_table,
@@ -35,7 +35,7 @@ def add_strings(sub) -> None:
     p.add_argument("--strings", nargs="+", metavar="NAME", default=list(STRING_CHOICES),
                    help="strings to compare: presets or MAINS/CROSSES hybrids (default: "
                    f"{', '.join(STRING_CHOICES)})")  # fmt: skip
-    p.add_argument("--out", metavar="FILE", help="table file: .csv, .json or .parquet")
+    add_outputs(p)
     p.set_defaults(func=cmd_strings)
 
 

@@ -22,7 +22,7 @@ from common.checks import (
 from common.units import SPEED_SUFFIXES
 from racket import STROKES
 from racket.stroke import LIMITS, RPM, SHAFTS
-from studies.cli.files import check_outputs, save_plot, say_conditions, write_table
+from studies.cli.files import add_outputs, check_outputs, save_plot, say_conditions, write_table
 from studies.cli.options import _ball_arg, _print_table, _speed_option, _typed, speed_unit
 from studies.cli.racket_options import (
     _OnceTrue,
@@ -65,11 +65,9 @@ _API_WORDS = {"head_speed": "--head-speed", "ball_speed": "--ball-speed", "path_
 
 def add_stroke(sub) -> None:
     """The ``stroke`` subcommand, on the subparsers ``sub``."""
-    p = sub.add_parser("stroke", help="ball speed, launch and spin after a stroke (presets or "
-                       "your own)")  # fmt: skip
-    p.add_argument(
-        "names", nargs="*", metavar="NAME",
-        help=f"preset strokes: {', '.join(STROKES)} (default: all). The stroke options below "
+    p = presets_parser(
+        sub, "stroke", "ball speed, launch and spin after a stroke",
+        f"preset strokes: {', '.join(STROKES)} (default: all). The stroke options below "
         f"replace the named strokes' numbers; with no NAME they make one stroke of your own, "
         f"on the {OWN_BASE}'s numbers for those not given",
     )  # fmt: skip
@@ -103,9 +101,30 @@ def add_stroke(sub) -> None:
                    "on the crosses more easily")  # fmt: skip
     p.add_argument("--stiff-bed", action=_OnceTrue, help="mains that never slide sideways (the "
                    "limit of a laterally rigid bed)")  # fmt: skip
-    p.add_argument("--out", metavar="FILE", help="table file: .csv, .json or .parquet")
-    p.add_argument("--plot", metavar="FILE", help="exit speed against spin (.png, .svg, .pdf)")
+    add_outputs(p, plot="exit speed against spin")
     p.set_defaults(func=cmd_stroke)
+
+
+def presets_parser(sub, name: str, what: str, names: str):
+    """The subparser ``name`` on the subparsers ``sub`` of a command that answers ``what``
+    for presets or one's own (``stroke``, ``court``): the presets are its NAMEs (``names``:
+    their help); the command adds its own options.
+    """
+    p = sub.add_parser(name, help=f"{what} (presets or your own)")
+    p.add_argument("names", nargs="*", metavar="NAME", help=names)
+    return p
+
+
+def check_names(names: list[str], known, kind: str, listing: str) -> None:
+    """The NAMEs given, ``names``, each among ``known`` and named once; ValueError in one line
+    otherwise, naming the ``kind`` ("stroke", "court") and, for an unknown name, the ones
+    there are (``listing``).
+    """
+    for name in names:
+        if name not in known:
+            raise ValueError(f"unknown {kind} {name!r}; {listing}")
+        if names.count(name) > 1:
+            raise ValueError(f"{kind} {name!r} is named twice; name it once")
 
 
 def _angle(p, flag: str, field: str, what: str, many: bool = False) -> None:
@@ -174,11 +193,7 @@ def _strokes(args) -> tuple[list, list[str]]:
     face), and the columns that vary within a stroke ("path_deg", "face_deg").
     """
     names = args.names or []
-    for name in names:
-        if name not in STROKES:
-            raise ValueError(f"unknown stroke {name!r}; the presets: {', '.join(STROKES)}")
-        if names.count(name) > 1:
-            raise ValueError(f"stroke {name!r} is named twice; name it once")
+    check_names(names, STROKES, "stroke", f"the presets: {', '.join(STROKES)}")
     changes = {}
     for dest, field in _SPEEDS.items():
         if any(getattr(args, f"{dest}{u}") is not None for u in ("", "_mph", "_kmh")):
@@ -251,11 +266,18 @@ def _angle_value(flag: str, value: float, field: str) -> float:
     """
     low, high, _ = LIMITS[field]
     value = in_range(flag, value, low, high, "deg")
+    ask_small_angle(flag, value, low, high)
+    return math.radians(value)
+
+
+def ask_small_angle(flag: str, value: float, low: float, high: float) -> None:
+    """Ask in a warning about an angle option ``value`` [deg] in [``low``, ``high``] below
+    :data:`SMALL_ANGLE_DEG` in size, not 0 (radians typed as degrees?).
+    """
     if 0.0 < abs(value) < SMALL_ANGLE_DEG:
         slipped = slip_hints(value, low, high, "deg", ((180 / math.pi, "radians typed as deg?",
                                                         "rad"),))  # fmt: skip
-        warnings.warn(f"{flag} {shown(value)} deg is a very small angle: {slipped}", stacklevel=2)
-    return math.radians(value)
+        warnings.warn(f"{flag} {shown(value)} deg is a very small angle: {slipped}", stacklevel=3)
 
 
 def _spin(flag: str, value: float, field: str) -> float:
@@ -264,12 +286,18 @@ def _spin(flag: str, value: float, field: str) -> float:
     """
     low, high, _ = LIMITS[field]
     value = in_range(flag, value, low / RPM, high / RPM, "rpm")
-    if 0.0 < abs(value) < SLOW_SPIN_RPM:
-        slipped = slip_hints(value, low / RPM, high / RPM, "rpm", ((1 / RPM, "rad/s typed as "
-                                                                   "rpm?", "rad/s"),))  # fmt: skip
-        warnings.warn(f"{flag} {shown(value)} rpm is slower than balls in play spin (about "
-                      f"{SLOW_SPIN_RPM:g} rpm and more): {slipped}", stacklevel=2)  # fmt: skip
+    ask_slow_spin(flag, value, low / RPM, high / RPM)
     return value * RPM
+
+
+def ask_slow_spin(flag: str, value: float, low: float, high: float) -> None:
+    """Ask in a warning about a spin option ``value`` [rpm] in [``low``, ``high``] slower
+    than :data:`SLOW_SPIN_RPM`, not 0 (rad/s typed as rpm?).
+    """
+    if 0.0 < abs(value) < SLOW_SPIN_RPM:
+        slipped = slip_hints(value, low, high, "rpm", ((1 / RPM, "rad/s typed as rpm?", "rad/s"),))
+        warnings.warn(f"{flag} {shown(value)} rpm is slower than balls in play spin (about "
+                      f"{SLOW_SPIN_RPM:g} rpm and more): {slipped}", stacklevel=3)  # fmt: skip
 
 
 _INPUTS = {"stroke": "stroke", "head_speed": "head speed", "path_deg": "path [deg]",

@@ -15,23 +15,20 @@ from racket.specs.ra import f1_from_ra, ra_note
 from racket.specs.sheet import SPEC_RANGES
 from studies.cli.files import check_outputs, save_plot, say_conditions, write_table
 from studies.cli.options import (
-    _ball_arg,
     _check_swing,
     _count,
     _print_table,
     _scale,
     _scale_options,
-    _speed,
-    _speed_option,
-    _swing,
     _swing_options,
     _typed,
     in_speed_unit,
     speed_unit,
+    swing_and_speed,
 )
 from studies.cli.racket_options import (
-    add_racket_options,
     check_offset,
+    impact_parser,
     racket_conditions,
     racket_from,
     stiffnesses,
@@ -39,15 +36,12 @@ from studies.cli.racket_options import (
 )
 from studies.cli.show import WIDTH, label
 from studies.config import load_ball
-from studies.sweeps import BALL_SPEED
 
 
 def add_sweep(sub) -> None:
     """The ``sweep`` subcommand, on the subparsers ``sub``."""
-    p = sub.add_parser("sweep", help="impacts along the strings, over any parameter grid")
-    add_racket_options(p, many=True)
-    _ball_arg(p)
-    _speed_option(p, "speed", [BALL_SPEED], "ball speed(s) towards the strings", many=True)
+    what = "impacts along the strings, over any parameter grid"
+    p = impact_parser(sub, "sweep", what, swing=False, many=True)  # (the swing: further down)
     p.add_argument(
         "--from",
         dest="from_",
@@ -111,8 +105,7 @@ def cmd_sweep(args) -> int:
             raise ValueError(f"{flag} must be a file ending in {kind}, got {path!r}")
     scale = _scale(args)
     points = _count("--points", args.points, 2, 100_000)
-    swing = _swing(args)
-    speeds = _speed(args, "speed", allow_zero=swing is not None)
+    swing, speeds = swing_and_speed(args)
     for f1 in args.f1 or ():
         in_range("--f1", f1, F1_MIN, F1_MAX, "Hz")
     for ra in args.ra or ():

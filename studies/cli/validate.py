@@ -5,7 +5,7 @@ from __future__ import annotations
 import re
 import textwrap
 
-from studies.cli.files import check_outputs, save_plot, write_table
+from studies.cli.files import add_outputs, check_outputs, save_plot, write_table
 from studies.cli.options import _print_table
 from studies.cli.show import WIDTH
 
@@ -13,8 +13,7 @@ from studies.cli.show import WIDTH
 def add_validate(sub) -> None:
     """The ``validate`` subcommand, on the subparsers ``sub``."""
     p = sub.add_parser("validate", help="the model against published measurements")
-    p.add_argument("--out", metavar="FILE", help="table file: .csv, .json or .parquet")
-    p.add_argument("--plot", metavar="FILE", help="measured band vs model (.png, .svg, .pdf)")
+    add_outputs(p, plot="measured band vs model")
     p.set_defaults(func=cmd_validate)
 
 

@@ -249,30 +249,27 @@ def server(input, output, session):
         said = r.conditions["serve"]
         return plot_serve_speeds(serves, inputs().swing_mph, conditions=said).figure
 
-    @render.plot(alt="ball speed off the swung strings along the racket, A and B")
-    def exit_plot():
+    def along(column: str, ylabel: str, said: str, mph: bool = False):
+        # racket A's and B's ``column`` along the racket: ``ylabel`` its axis (formatted
+        # with the page's swing [mph]), ``said`` the key of its conditions line
         from studies.page.plots import plot_along_racket
 
         r = built()
         if r is None:
             return None
         tables = {k: v.along for k, v in labels(r).items()}
-        ylabel = f"ball speed off the strings [mph] (swing {inputs().swing_mph:.0f} mph)"
-        return plot_along_racket(
-            tables, "exit_speed_swung_mph", ylabel, mph=True, conditions=r.conditions["exit"]
-        ).figure
+        ylabel = ylabel.format(swing=inputs().swing_mph)
+        said = r.conditions[said]
+        return plot_along_racket(tables, column, ylabel, mph=mph, conditions=said).figure
+
+    @render.plot(alt="ball speed off the swung strings along the racket, A and B")
+    def exit_plot():
+        ylabel = "ball speed off the strings [mph] (swing {swing:.0f} mph)"
+        return along("exit_speed_swung_mph", ylabel, "exit", mph=True)
 
     @render.plot(alt="e_A along the racket, A and B")
     def power_plot():
-        from studies.page.plots import plot_along_racket
-
-        r = built()
-        if r is None:
-            return None
-        tables = {k: v.along for k, v in labels(r).items()}
-        return plot_along_racket(
-            tables, "e_A", "rebound ratio e_A [-]", conditions=r.conditions["e_A"]
-        ).figure
+        return along("e_A", "rebound ratio e_A [-]", "e_A")
 
     def face(side: str):
         from studies.page.plots import plot_face_map_page

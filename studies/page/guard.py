@@ -19,6 +19,8 @@ import json
 import math
 import re
 import sys
+from collections.abc import Callable
+from dataclasses import dataclass
 
 ERROR_OUTPUT = "message_error"
 """The page's output that shows why a message was turned away."""
@@ -114,6 +116,7 @@ def _card(said: str) -> str:
     return json.dumps({"values": {ERROR_OUTPUT: {"html": card, "deps": []}}})
 
 
+@dataclass(eq=False)  # hashed and compared as itself, as any app
 class PageGuard:
     """The ASGI app ``app`` (the page's Shiny app) behind :func:`refusal`: a message it
     turns away never reaches Shiny; the page gets an error card, stderr one line.
@@ -124,8 +127,7 @@ class PageGuard:
         The ASGI app.
     """
 
-    def __init__(self, app):
-        self.app = app
+    app: Callable
 
     async def __call__(self, scope, receive, send):
         """Serve one ASGI connection (an HTTP request or a websocket)."""

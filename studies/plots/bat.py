@@ -36,10 +36,9 @@ def plot_exit_speed(sweeps, ax=None, unit: str | None = None, conditions: str | 
     sweeps = _many(sweeps)
     unit = unit or sweeps[0].unit
     scale = speed_scale(unit)
-    made = ax is None
-    ax = _axes(ax, 1)
-    for k, sweep in enumerate(sweeps):
-        table, colour = sweep.table, f"C{k}"
+
+    def draw(ax, sweep, colour: str) -> None:
+        table = sweep.table
         name = str(table["bat"].iloc[0])
         ax.plot(table["position_from_knob_cm"], table["exit_speed_m_s"] / scale, color=colour,
                 label=name)  # fmt: skip
@@ -49,10 +48,8 @@ def plot_exit_speed(sweeps, ax=None, unit: str | None = None, conditions: str | 
         ax.plot(100 * sweep.peak_from_knob, sweep.peak_exit_speed / scale, "o", color=colour,
                 label=f"{name}: peak {sweep.peak_exit_speed / scale:.4g} {unit} at "
                 f"{100 * sweep.peak_from_knob:.1f} cm")  # fmt: skip
-    ax.set_xlabel(FROM_KNOB)
-    ax.set_ylabel(f"exit speed [{unit}]")
-    legend_outside(ax)
-    return finish(ax, conditions, made)
+
+    return _along_barrel(sweeps, ax, f"exit speed [{unit}]", conditions, draw)
 
 
 def plot_bbcor(tests, ax=None, conditions: str | None = None):
@@ -70,19 +67,34 @@ def plot_bbcor(tests, ax=None, conditions: str | None = None):
     """
     from bat.certification import BBCOR_LIMIT
 
-    tests = _many(tests)
-    made = ax is None
-    ax = _axes(ax, 1)
-    for k, test in enumerate(tests):
-        along, colour = test.along, f"C{k}"
+    def draw(ax, test, colour: str) -> None:
+        along = test.along
         name = str(along["bat"].iloc[0])
         ax.plot(along["position_from_knob_cm"], along["bbcor"], color=colour, label=name)
         ax.plot(100 * test.from_knob, test.bbcor, "o", color=colour,
                 label=f"{name}: BBCOR {test.bbcor:.4f} at "
                 f"{100 * test.from_knob:.1f} cm")  # fmt: skip
-    ax.axhline(BBCOR_LIMIT, color="0.3", ls="--", label=f"limit {BBCOR_LIMIT:.3f}")
+
+    def limit(ax) -> None:
+        ax.axhline(BBCOR_LIMIT, color="0.3", ls="--", label=f"limit {BBCOR_LIMIT:.3f}")
+
+    return _along_barrel(tests, ax, "BBCOR [-]", conditions, draw, limit)
+
+
+def _along_barrel(results, ax, ylabel: str, conditions, draw, then=None):
+    """One bat's result or several (``results``) along the barrel: each drawn by ``draw(ax,
+    result, colour)`` in a colour of its own, then ``then(ax)`` if given, on ``ax`` (None: a
+    new figure's); the axes labelled (``ylabel``), the legend outside, ``conditions`` as the
+    heading.
+    """
+    made = ax is None
+    ax = _axes(ax, 1)
+    for k, result in enumerate(_many(results)):
+        draw(ax, result, f"C{k}")
+    if then is not None:
+        then(ax)
     ax.set_xlabel(FROM_KNOB)
-    ax.set_ylabel("BBCOR [-]")
+    ax.set_ylabel(ylabel)
     legend_outside(ax)
     return finish(ax, conditions, made)
 

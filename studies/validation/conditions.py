@@ -119,26 +119,15 @@ speed and impact point are not known)."""
 HAMORI = "Hamori, 'Contact at 10,000 frames per second', tennisplayer.net (own text)"
 
 HAMORI_RACKETS = {
-    "Babolat AeroPro Drive": (
-        "AeroPro Drive Cortex",
-        dict(head_size_in2=100.0, mass_kg=0.31468, balance_cm=33.02,
-             swingweight_kgcm2=328.0, f1_hz=152.3),
-    ),
-    "Wilson Pro Staff 85": (
-        "Pro Staff 90 (no 85 in the table)",
-        dict(head_size_in2=90.0, mass_kg=0.346, balance_cm=32.0,
-             swingweight_kgcm2=315.0, f1_hz=146.2),
-    ),
-    "Wilson Pro Staff 95": (
-        "BLX Pro Staff Six.One 95",
-        dict(head_size_in2=95.0, mass_kg=0.326, balance_cm=32.1,
-             swingweight_kgcm2=303.0, f1_hz=144.5),
-    ),
-    "Wilson Pro Staff 97": (
-        "Pro Staff 97",
-        dict(head_size_in2=97.0, mass_kg=0.325, balance_cm=32.0,
-             swingweight_kgcm2=312.0, f1_hz=144.5),
-    ),
+    name: (row, dict(zip(("head_size_in2", "mass_kg", "balance_cm", "swingweight_kgcm2",
+                          "f1_hz"), sheet, strict=True)))
+    for name, row, sheet in (
+        ("Babolat AeroPro Drive", "AeroPro Drive Cortex", (100.0, 0.31468, 33.02, 328.0, 152.3)),
+        ("Wilson Pro Staff 85", "Pro Staff 90 (no 85 in the table)",
+         (90.0, 0.346, 32.0, 315.0, 146.2)),
+        ("Wilson Pro Staff 95", "BLX Pro Staff Six.One 95", (95.0, 0.326, 32.1, 303.0, 144.5)),
+        ("Wilson Pro Staff 97", "Pro Staff 97", (97.0, 0.325, 32.0, 312.0, 144.5)),
+    )
 }  # fmt: skip
 """Hamori's rackets as spec sheets: the closest row of the TWU table
 (``tests/data/twu_racquets_half.csv``: head size, strung mass, balance, swingweight, free

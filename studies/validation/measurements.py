@@ -210,21 +210,19 @@ def comparisons() -> list[Comparison]:
             "+/-2 %", _grabiner_ratio,
         ),
         *(
-            _hamori(*row)
-            for row in (
-                ("Babolat AeroPro Drive", "polyester", 67.0, "forehand", 3.8),
-                ("Babolat AeroPro Drive", "polyester", 67.0, "volley", 3.75),
-                ("Babolat AeroPro Drive", "polyester", 67.0, "serve", 4.0),
-                ("Babolat AeroPro Drive", "polyester", 37.0, "forehand", 4.9),
-                ("Babolat AeroPro Drive", "polyester", 37.0, "volley", 4.1),
-                ("Babolat AeroPro Drive", "polyester", 37.0, "serve", 4.0),
-                ("Wilson Pro Staff 85", "polyester", 54.0, "forehand", 3.6),
-                ("Wilson Pro Staff 85", "gut", 54.0, "forehand", 4.5),
-                ("Wilson Pro Staff 95", "gut", 54.0, "forehand", 4.6),
-                ("Wilson Pro Staff 97", "gut", 54.0, "forehand", 4.3),
-                ("Wilson Pro Staff 97", "gut", 54.0, "volley", 4.1),
-                ("Wilson Pro Staff 97", "gut", 54.0, "serve", 3.7),
+            _hamori(racket, strings, tension_lb, stroke, ms)
+            for racket, strings, tension_lb, dwell_ms in (  # each set-up's strokes
+                ("Babolat AeroPro Drive", "polyester", 67.0,
+                 {"forehand": 3.8, "volley": 3.75, "serve": 4.0}),
+                ("Babolat AeroPro Drive", "polyester", 37.0,
+                 {"forehand": 4.9, "volley": 4.1, "serve": 4.0}),
+                ("Wilson Pro Staff 85", "polyester", 54.0, {"forehand": 3.6}),
+                ("Wilson Pro Staff 85", "gut", 54.0, {"forehand": 4.5}),
+                ("Wilson Pro Staff 95", "gut", 54.0, {"forehand": 4.6}),
+                ("Wilson Pro Staff 97", "gut", 54.0,
+                 {"forehand": 4.3, "volley": 4.1, "serve": 3.7}),
             )
+            for stroke, ms in dwell_ms.items()
         ),
         Comparison(
             "twu-held-centre", f"e_A at mid-face, {_TWU_RACKET} [-]",
