@@ -85,6 +85,30 @@ def test_the_command_line_and_python_give_the_same_numbers(presets):
     assert api["face_deg"].iloc[0] == pytest.approx(math.degrees(first.face_angle))
 
 
+@pytest.mark.parametrize(
+    "option, field, degrees",
+    [("--across", "swing_across", 0.0), ("--across", "swing_across", -20.0),
+     ("--ball-angle", "ball_angle", 0.0), ("--ball-angle", "ball_angle", 25.0)],
+)  # fmt: skip
+def test_the_one_angle_options_take_their_value_and_answer_as_python(
+    option, field, degrees, tmp_path
+):
+    """Issue 44 (and 46): --across and --ball-angle took their value as a list and refused
+    every one, 0 included."""
+    from dataclasses import replace
+
+    from studies.cli.stroke import OWN, OWN_BASE
+    from studies.strokes.stroke import stroke_table
+
+    table = tmp_path / "own.csv"
+    run_ok(["stroke", option, str(degrees), "--out", str(table)])
+    cli = pd.read_csv(table)
+    stroke = replace(STROKES[OWN_BASE], **{field: math.radians(degrees)})
+    api = stroke_table({OWN: stroke}, default_racket(), default_ball())
+    for column in ("exit_speed_m_s", "topspin_rpm", "sidespin_rpm"):
+        assert cli[column].to_numpy() == pytest.approx(api[column].to_numpy(), rel=1e-8, abs=1e-6)
+
+
 def test_a_stroke_of_ones_own_over_its_angles_in_the_units_typed(own):
     from studies.strokes.stroke import sweep_angles
 
@@ -147,6 +171,7 @@ def test_the_bed_sideways_is_said_and_changes_the_spin(tmp_path):
         (["--path", "10", "90"], "--path must be in [-60, 80] deg, got 90"),
         (["--face", "-61"], "--face must be in [-60, 60] deg"),
         (["--across", "inf"], "--across must be a finite number"),
+        (["--across", "200"], "--across must be in [-60, 60] deg, got 200"),
         (["--ball-angle", "75"], "--ball-angle must be in [-60, 60] deg"),
         (["--topspin", "20000"], "--topspin must be in [-9549, 9549] rpm"),
         (["--sidespin", "-10000"], "--sidespin must be in [-9549, 9549] rpm"),

@@ -59,7 +59,8 @@ _SPEEDS = {"head_speed": "head_speed", "ball_speed": "ball_speed"}
 """The speed options (``--NAME[-mph|-kmh]``) and the field each sets [m/s]."""
 
 _API_WORDS = {"head_speed": "--head-speed", "ball_speed": "--ball-speed", "path_angle": "--path",
-              "face_angle": "--face", "ball_angle": "--ball-angle"}  # fmt: skip
+              "face_angle": "--face", "ball_angle": "--ball-angle",
+              "swing_across": "--across"}  # fmt: skip
 """The Stroke's words in its refusal, as the options that set them."""
 
 
@@ -199,12 +200,11 @@ def _strokes(args) -> tuple[list, list[str]]:
         if any(getattr(args, f"{dest}{u}") is not None for u in ("", "_mph", "_kmh")):
             changes[field] = _stroke_speed(args, dest, field)
     for dest, field in _ANGLES.items():
-        values = getattr(args, dest)
-        if values is not None:
-            changes[field] = [
-                _angle_value(f"--{dest.replace('_', '-')}", v, field)
-                for v in (values if isinstance(values, list) else [values])
-            ]
+        values, flag = getattr(args, dest), f"--{dest.replace('_', '-')}"
+        if isinstance(values, list):  # --path and --face: a row for each
+            changes[field] = [_angle_value(flag, v, field) for v in values]
+        elif values is not None:  # one angle (--across, --ball-angle)
+            changes[field] = _angle_value(flag, values, field)
     for dest, field in _SPINS.items():
         if getattr(args, dest) is not None:
             changes[field] = _spin(f"--{dest}", getattr(args, dest), field)
