@@ -1,14 +1,13 @@
 """A ball bouncing on a court: slide, grip, spin and the ITF Court Pace Rating (issue 36).
 
-The normal problem comes first, and is the head-on bounce of :func:`ball.collide` on the
-:data:`~ball.WALL`; its force history drives the tangential contact of :func:`ball.grip.slide`
-(a one-way coupling, see :mod:`ball.grip`).  **Assumption** (the normal law on a court): the
-ball's own loading law is replaced by a :class:`~ball.LinearHysteresis` whose stiffness is
-the ball's secant stiffness at the normal speed (:meth:`~ball.MonotoneLaw.secant_stiffness`:
-the same peak force and compression as the ball's own law) and whose COR is the court's.
-The COR of the bounce is then the court's exactly (the court's yield and the ball's loss
-together, as the ITF measures it), and the contact time is nearly the ball's: 3.4 ms at
-1.2 m/s against 4.0 ms with the ball's own law (a half sine instead of its stiffening pulse).
+The normal problem comes first, and is the head-on bounce of :func:`ball.collide` of the
+ball's own law on the :data:`~ball.WALL` (issue 44: its own pulse, not a linear stand-in,
+whose contacts were 15-20 % shorter); its force history drives the tangential contact of
+:func:`ball.grip.slide` (a one-way coupling, see :mod:`ball.grip`).  **Assumption** (the
+court's yield): the pulse keeps the ball's own shape and contact time, and its impulse is
+scaled to m (1 + e) v with the court's COR e, so that the bounce's COR is the court's exactly
+(the court's yield and the ball's loss together, as the ITF measures it; the court's own
+compliance, which would lengthen the contact a little, is left out).
 
 Face-frame axes are (along, across, normal), the normal up out of the court; the ball moves
 +along, and topspin (its top moving forward) is +across.
@@ -25,7 +24,6 @@ from ball.bodies import WALL, Ball
 from ball.catalog import BALL_PRESETS, DEFAULT_BALL
 from ball.collision import collide
 from ball.grip import FRICTION_RANGE, slide
-from ball.laws import LinearHysteresis
 from ball.spin import BallSpin
 from common.checks import RPM_AS_RAD_S, SPEED_RANGE, finite, in_range, shown, slip_hints, whole
 from common.typechecks import instance
@@ -71,16 +69,17 @@ COURTS = _by_name(Court("grass", 0.53, 0.75), Court("clay", 0.80, 0.90), Court("
 """The court presets by name (sources: :data:`COURT_SOURCES`)."""
 
 LAB_SURFACES = _by_name(
-    Court("wood", 0.20, 0.765), Court("emery paper", 0.56, 0.815), Court("Rebound Ace", 0.59, 0.765)
+    Court("wood", 0.21, 0.765), Court("emery paper", 0.67, 0.815), Court("Rebound Ace", 0.67, 0.765)
 )
 """The surfaces of Cross's oblique bounces at 3.4-3.8 m/s, each **calibrated on Cross 2002
 Table II** (``data/measurements.md`` sec. 6) with the ball's
-:data:`ball.spin.TANGENTIAL_STIFFNESS` and :data:`ball.spin.OFFSET_RATIO` (found with them).
-The COR is the mean of the surface's two rows' e_y.  The friction was found, in a throwaway
-script, on a grid of 0.01 (with :func:`bounce`'s default ball and steps) for each k_t of a
-scan over 1e4-1e7 N/m: the one that minimises the largest of the misfits of rebound angle,
-spin and vx2/vx1 over the surface's two rows, each over its target (3 degrees, 15 %, 0.07)
-(``tests/test_court.py`` holds the rows)."""
+:data:`ball.spin.STIFFNESS_RATIO` and :data:`ball.spin.OFFSET_RATIO` (found with them).
+The COR is the mean of the surface's two rows' e_y.  The friction is found on a grid of 0.01
+(with :func:`bounce`'s default ball and steps) by :mod:`studies.validation.grip_calibration`:
+the one that minimises the largest of the misfits of rebound angle, spin and vx2/vx1 over
+the surface's two rows, each over its target (3 degrees, 15 %, 0.07; ``tests/test_court.py``
+holds the rows).  (Issue 44 moved them, with the ball's pulse and tangential stiffness: wood
+0.20 -> 0.21, emery paper 0.56 -> 0.67, Rebound Ace 0.59 -> 0.67.)"""
 
 _CROSS_COURTS = (
     "Cross, Sports Eng. 6 (2003) and 'Measurement of the speed and bounce of tennis courts' "
@@ -152,6 +151,9 @@ class Bounce:
     offset_work : float
         Energy the normal force's offset took from the spin [J] (negative: gave it; taken
         from the normal motion, which the one-way coupling does not debit).
+    stiffness_work : float
+        Energy the contact's tangential spring gained as its stiffness followed the normal
+        force [J] (from the normal motion, likewise).
     """
 
     speed_after: float
@@ -169,6 +171,7 @@ class Bounce:
     normal_loss: float
     slip_loss: float
     offset_work: float
+    stiffness_work: float
 
     @property
     def energy_in(self) -> float:
@@ -177,11 +180,13 @@ class Bounce:
 
     @property
     def residual(self) -> float:
-        """Energy [J] the budget leaves unaccounted: in - out - losses - offset work (the
-        stepping's round-off: :mod:`ball.grip` books the slip loss as the discrete power).
+        """Energy [J] the budget leaves unaccounted: in + stiffness work - out - losses -
+        offset work (the stepping's round-off: :mod:`ball.grip` books the slip loss as the
+        discrete power).
         """
         out = self.translational_after + self.rotational_after
-        return self.energy_in - out - self.normal_loss - self.slip_loss - self.offset_work
+        losses = self.normal_loss + self.slip_loss + self.offset_work
+        return self.energy_in + self.stiffness_work - out - losses
 
 
 def _angle(angle) -> float:
@@ -203,9 +208,9 @@ def normal_force(ball: Ball, cor: float, speed: float, steps: int):
     Parameters
     ----------
     ball : Ball
-        The ball; its law gives the secant stiffness at ``speed``.
+        The ball; its own law gives the pulse's shape and duration.
     cor : float
-        The court's normal COR [-].
+        The court's normal COR [-]: the impulse is m (1 + cor) v.
     speed : float
         Normal speed [m/s].
     steps : int
@@ -215,17 +220,15 @@ def normal_force(ball: Ball, cor: float, speed: float, steps: int):
     -------
     tuple
         (force [N] at the ``steps + 1`` times, the grid's step [s], the head-on
-        :class:`~ball.Collision`).  The history is scaled so that its impulse (linear
-        between samples) is the collision's, m (1 + e) v, exactly: the interpolation's
-        error, O(step^2), would otherwise show in the tangential impulse.
+        :class:`~ball.Collision` of the ball's own law on the wall).  The history is scaled
+        so that its impulse (linear between samples) is m (1 + cor) v exactly.
     """
-    k = ball.law.secant_stiffness(ball.mass, speed)
-    hit = collide(Ball(ball.mass, LinearHysteresis(k, cor)), WALL, speed, samples=steps)
+    hit = collide(ball, WALL, speed, samples=steps)
     t = np.linspace(0.0, hit.history.t[-1], steps + 1)
     force = np.interp(t, hit.history.t, hit.history.force)
     force[-1] = 0.0
     dt = t[1] - t[0]
-    impulse = ball.mass * (hit.v_a - hit.v_a_after)
+    impulse = ball.mass * (1.0 + cor) * speed
     return force * impulse / (dt * (force.sum() - 0.5 * force[0])), dt, hit
 
 
@@ -285,8 +288,9 @@ def bounce(
 
     m, v_x, v_y = ball.mass, speed * math.cos(angle), speed * math.sin(angle)
     force, dt, hit = normal_force(ball, court.cor, v_y, steps)
-    grip = slide(force, dt, m, ball_spin, court.friction, [v_x, 0.0], [0.0, spin, 0.0])
-    vx2, spin2, vy2 = float(grip.velocity[0, 0]), float(grip.spin[0, 1]), -hit.v_a_after
+    grip = slide(force, dt, m, ball_spin, court.friction, [v_x, 0.0], [0.0, spin, 0.0],
+                 law=ball.law)  # fmt: skip
+    vx2, spin2, vy2 = float(grip.velocity[0, 0]), float(grip.spin[0, 1]), court.cor * v_y
     inertia = ball_spin.inertia(m)
     return Bounce(
         speed_after=math.hypot(vx2, vy2),
@@ -304,6 +308,7 @@ def bounce(
         normal_loss=0.5 * m * (v_y**2 - vy2**2),
         slip_loss=float(grip.slip_loss[0]),
         offset_work=float(grip.offset_work[0]),
+        stiffness_work=float(grip.stiffness_work[0]),
     )
 
 

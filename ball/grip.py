@@ -109,7 +109,10 @@ class Grip:
         Largest sideways displacement [m] of the layer.
     energy_in, energy_out : ndarray
         Tangential and rotational energy [J] before, and all of it after (ball, layer,
-        surface), losses not included.
+        surface, the patch's spring), losses not included.
+    stiffness_work : ndarray
+        Energy [J] the patch's spring gained as its stiffness changed with the normal force
+        (from the normal motion, which the one-way coupling does not debit).
     """
 
     velocity: np.ndarray
@@ -126,14 +129,15 @@ class Grip:
     layer_peak: np.ndarray
     energy_in: np.ndarray
     energy_out: np.ndarray
+    stiffness_work: np.ndarray
 
     @property
     def residual(self) -> np.ndarray:
-        """Energy [J] the budget leaves unaccounted: in - out - losses (the stepping's
-        error).
+        """Energy [J] the budget leaves unaccounted: in + the stiffness's work - out -
+        losses (the stepping's error).
         """
         losses = self.slip_loss + self.layer_loss + self.offset_work
-        return self.energy_in - self.energy_out - losses
+        return self.energy_in + self.stiffness_work - self.energy_out - losses
 
     @property
     def slid_throughout(self) -> np.ndarray:
@@ -148,27 +152,33 @@ tangential stiffness of 1e8 N/m on the mains, a fixed 2 sub-steps turned it thro
 beyond velocity Verlet's 2: 21 % off in spin.)"""
 
 
-def stable_substeps(spin: BallSpin, mass: float, dt: float, layer: Layer | None = None) -> int:
+def stable_substeps(
+    spin: BallSpin, mass: float, dt: float, layer: Layer | None = None, stiffness=None
+) -> int:
     """Sub-steps [-] per step ``dt`` [s] that keep the contact's stiffest ringing within
     :data:`RESOLVED_PHASE` per sub-step: omega^2 = k_t (1/m_t + 1/m_l) + k_l/m_l, with m_t the
     ball's tangential effective mass m I / (I + m R^2) (1/m_l and k_l/m_l without a layer
-    are 0); at most 4096.
+    are 0), k_t the largest tangential stiffness; at most 4096.
 
     Parameters
     ----------
     spin : BallSpin
-        The ball's tangential stiffness, radius and inertia.
+        The ball's radius and inertia (and its fixed tangential stiffness, if it has one).
     mass : float
         Ball mass [kg].
     dt : float
         The step [s].
     layer : Layer, optional
         The sliding layer.
+    stiffness : array_like, optional
+        The tangential stiffness history [N/m] (:meth:`BallSpin.stiffness`); None: the
+        ball's fixed one.
     """
     inertia = spin.inertia(mass)
-    omega2 = spin.tangential_stiffness * (inertia + mass * spin.radius**2) / (mass * inertia)
+    k_t = spin.tangential_stiffness if stiffness is None else float(np.max(stiffness))
+    omega2 = k_t * (inertia + mass * spin.radius**2) / (mass * inertia)
     if layer is not None:
-        omega2 += (spin.tangential_stiffness + layer.stiffness) / layer.mass
+        omega2 += (k_t + layer.stiffness) / layer.mass
     return min(4096, max(1, math.ceil(dt * math.sqrt(omega2) / RESOLVED_PHASE)))
 
 
@@ -183,6 +193,7 @@ def slide(
     *,
     inv_mass=None,
     layer: Layer | None = None,
+    law=None,
     substeps: int = 4,
     runner=None,
 ) -> Grip:
@@ -210,6 +221,10 @@ def slide(
         surface that does not move.
     layer : Layer, optional
         A layer that slides on the surface (the mains); None: none.
+    law : MonotoneLaw, optional
+        The ball's own normal force law, whose incremental stiffness at the normal force the
+        tangential stiffness follows (:meth:`BallSpin.stiffness`); None only with a
+        ``spin`` of a fixed tangential stiffness.
     substeps : int
         Sub-steps per history step, in [1, 4096], at least: more when the contact's stiffest
         ringing needs them (:func:`stable_substeps`).
@@ -246,10 +261,13 @@ def slide(
             in_range("layer mass", layer.mass, 1e-6, 1.0, "kg"),
             in_range("layer friction", layer.friction, *FRICTION_RANGE),
         ]
-    substeps = max(whole("substeps", substeps, 1, 4096), stable_substeps(spin, mass, dt, layer))
+    k_t = spin.stiffness(law, force)
+    substeps = max(
+        whole("substeps", substeps, 1, 4096), stable_substeps(spin, mass, dt, layer, k_t)
+    )
     out = np.zeros((n, col.N_OUT))
-    args = (force, dt, substeps, float(mass), spin.radius, spin.inertia(mass),
-            spin.tangential_stiffness, spin.offset, mu, inv_mass, stack, v, w, out)  # fmt: skip
+    args = (force, dt, substeps, float(mass), spin.radius, spin.inertia(mass), k_t, spin.offset,
+            spin.damping(law), spin.form == "secant", mu, inv_mass, stack, v, w, out)  # fmt: skip
     from ball.grip_kernel import grip_kernel  # numba loads on first use
 
     if runner is None:
@@ -271,4 +289,5 @@ def slide(
         layer_peak=out[:, col.LAYER_PEAK],
         energy_in=out[:, col.ENERGY_IN],
         energy_out=out[:, col.ENERGY_OUT],
+        stiffness_work=out[:, col.STIFFNESS_WORK],
     )

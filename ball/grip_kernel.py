@@ -23,6 +23,7 @@ from ball.grip_layout import (
     P_ALONG,
     REVERSALS,
     SLIP_LOSS,
+    STIFFNESS_WORK,
     SURFACE_ENERGY,
     U_ACROSS,
     U_ALONG,
@@ -111,8 +112,8 @@ def _push(st, w00, w01, w11, p0, p1):
 
 
 @njit(cache=True, nogil=True)
-def grip_kernel(force, dt, substeps, m, radius, inertia, k_t, offset, mu, inv_mass, layer, v, w,
-                out, start, stop, stride):  # fmt: skip
+def grip_kernel(force, dt, substeps, m, radius, inertia, k_t, offset, zeta, secant, mu, inv_mass,
+                layer, v, w, out, start, stop, stride):  # fmt: skip
     """The tangential contact of impacts ``start``, ``start + stride``, ... before ``stop``
     (rows) along each one's normal force history, into ``out`` (it releases the GIL: threads
     may share the rows).
@@ -125,9 +126,16 @@ def grip_kernel(force, dt, substeps, m, radius, inertia, k_t, offset, mu, inv_ma
         Step [s] of the history.
     substeps : int
         Sub-steps per step.
-    m, radius, inertia, k_t, offset : float
-        Ball mass [kg], radius [m], moment of inertia [kg m^2], tangential stiffness [N/m],
-        normal force's offset [m].
+    m, radius, inertia, offset : float
+        Ball mass [kg], radius [m], moment of inertia [kg m^2], normal force's offset [m].
+    k_t : ndarray
+        (n, T) tangential stiffness [N/m] at the history's times (linear between them).
+    zeta : float
+        Damping ratio [-] of the patch's dashpot, c = 2 zeta sqrt(k_t m_t) (m_t the ball's
+        tangential effective mass), while it grips.
+    secant : bool
+        True: the patch's spring is secant, F = k_t xi (the stored force rescaled as k_t
+        changes); False: incremental, dF = k_t dxi.
     mu : ndarray
         (n,) ball-surface friction coefficient [-].
     inv_mass : ndarray
@@ -144,9 +152,10 @@ def grip_kernel(force, dt, substeps, m, radius, inertia, k_t, offset, mu, inv_ma
     """
     steps = force.shape[1]
     h = dt / substeps
+    m_t = m * inertia / (inertia + m * radius * radius)  # the ball's tangential mass
     for i in range(start, stop, stride):
         o = out[i]
-        # v(0:2) w_t(2:4) xi(4, 7) u(5:7) s(8:10) layer v(10:12) P(12:14) sliding(14)
+        # v(0:2) w_t(2:4) xi or F(4, 7) u(5:7) s(8:10) layer v(10:12) P(12:14) sliding(14)
         st = np.zeros(15)
         st[0], st[1], st[2], st[3] = v[i, 0], v[i, 1], w[i, 0], w[i, 1]
         o[ENERGY_IN] = 0.5 * m * (v[i, 0] ** 2 + v[i, 1] ** 2)
@@ -163,6 +172,9 @@ def grip_kernel(force, dt, substeps, m, radius, inertia, k_t, offset, mu, inv_ma
             for k in range(substeps):
                 n_a = force[i, j] + (force[i, j + 1] - force[i, j]) * k / substeps
                 n_b = force[i, j] + (force[i, j + 1] - force[i, j]) * (k + 1) / substeps
+                # (>= 0: a stiffness falling to 0 may round to -1 ulp of its last value)
+                k_a = max(k_t[i, j] + (k_t[i, j + 1] - k_t[i, j]) * k / substeps, 0.0)
+                k_b = max(k_t[i, j] + (k_t[i, j + 1] - k_t[i, j]) * (k + 1) / substeps, 0.0)
                 _kick(st, f0, f1, n_a, 0.5 * h, m, radius, inertia, offset, w00, w01, w11, k_l,
                       m_l, mu_l, o, True)  # fmt: skip
                 # drift: the patch follows the surface (or layer) while it grips
@@ -172,23 +184,24 @@ def grip_kernel(force, dt, substeps, m, radius, inertia, k_t, offset, mu, inv_ma
                     st[8] += h * (st[10] - st[5])
                     st[9] += h * (st[11] - st[6])
                     peak = max(peak, st[8] * st[8] + st[9] * st[9])  # squared
-                x0, x1 = st[4] + h * c0, st[7] + h * c1
+                g0, g1, stored = _spring(st, k_a, k_b, h, c0, c1, secant, o)
+                damp = 2.0 * zeta * math.sqrt(k_b * m_t)
+                g0, g1 = g0 + damp * c0, g1 + damp * c1  # the dashpot, while it grips
                 limit = mu[i] * max(n_b, 0.0)
-                trial = k_t * math.sqrt(x0 * x0 + x1 * x1)
-                stored = st[4] ** 2 + st[7] ** 2
+                trial = math.sqrt(g0 * g0 + g1 * g1)
                 st[14] = 0.0
-                if trial > limit:
+                if trial > limit:  # it slides: the spring carries the friction force
                     cut = limit / trial
-                    x0 *= cut
-                    x1 *= cut
+                    g0 *= cut
+                    g1 *= cut
                     st[14] = 1.0 if limit > 0.0 else 0.0
+                    _hold(st, g0, g1, k_b, secant)
                 elif n_b > 0.0:
                     o[GRIP_TIME] += h
                 # the work the contact took in the drift, less what its spring kept
-                taken = 0.5 * h * ((f0 + k_t * x0) * c0 + (f1 + k_t * x1) * c1)
-                o[SLIP_LOSS] += taken - 0.5 * k_t * (x0**2 + x1**2 - stored)
-                st[4], st[7] = x0, x1
-                f0, f1 = k_t * x0, k_t * x1
+                taken = 0.5 * h * ((f0 + g0) * c0 + (f1 + g1) * c1)
+                o[SLIP_LOSS] += taken - (_stored(st, k_b, secant) - stored)
+                f0, f1 = g0, g1
                 along = f0 * d0 + f1 * d1
                 if along != 0.0:
                     if sign != 0.0 and along * sign < 0.0:
@@ -205,4 +218,40 @@ def grip_kernel(force, dt, substeps, m, radius, inertia, k_t, offset, mu, inv_ma
         o[LAYER_ENERGY] += 0.5 * k_l * (st[8] ** 2 + st[9] ** 2)
         o[ENERGY_OUT] = 0.5 * m * (st[0] ** 2 + st[1] ** 2) + o[SURFACE_ENERGY]
         o[ENERGY_OUT] += 0.5 * inertia * (st[2] ** 2 + st[3] ** 2) + o[LAYER_ENERGY]
-        o[ENERGY_OUT] += 0.5 * k_t * (st[4] ** 2 + st[7] ** 2)
+        o[ENERGY_OUT] += _stored(st, k_t[i, steps - 1], secant)
+
+
+@njit(cache=True, inline="always")
+def _spring(st, k_a, k_b, h, c0, c1, secant, out):
+    """The patch's spring moved by the drift (c0, c1) [m/s] over ``h`` [s] as its stiffness
+    goes from ``k_a`` to ``k_b`` [N/m]: its trial elastic force, and the energy it held at
+    the drift's start at ``k_b`` (what the stiffness change added, at the start's state,
+    is booked as :data:`STIFFNESS_WORK`: work of the normal motion on the spring).
+    """
+    before = _stored(st, k_a, secant)
+    stored = _stored(st, k_b, secant)
+    out[STIFFNESS_WORK] += stored - before
+    if secant:  # st[4], st[7] hold the displacement xi
+        st[4] += h * c0
+        st[7] += h * c1
+        return k_b * st[4], k_b * st[7], stored
+    st[4] += k_b * h * c0  # st[4], st[7] hold the elastic force
+    st[7] += k_b * h * c1
+    return st[4], st[7], stored
+
+
+@njit(cache=True, inline="always")
+def _hold(st, g0, g1, k, secant):
+    """The spring set to carry the force (g0, g1) [N] at stiffness ``k`` [N/m]."""
+    if not secant:
+        st[4], st[7] = g0, g1
+    elif k > 0.0:
+        st[4], st[7] = g0 / k, g1 / k
+
+
+@njit(cache=True, inline="always")
+def _stored(st, k, secant) -> float:
+    """Energy [J] in the patch's spring at stiffness ``k`` [N/m]."""
+    if secant:
+        return 0.5 * k * (st[4] * st[4] + st[7] * st[7])
+    return 0.5 * (st[4] * st[4] + st[7] * st[7]) / k if k > 0.0 else 0.0

@@ -5,12 +5,14 @@ nothing at all without a tangential speed or spin (issue 36)."""
 import numpy as np
 import pytest
 
-from ball import WALL, Ball, LinearHysteresis, collide
+from ball import BALL_PRESETS, DEFAULT_BALL, WALL, Ball, LinearHysteresis, LinearSpring, collide
 from ball.grip import Layer, slide
 from ball.spin import BallSpin
 
 MASS = 0.057
 DT = 1e-5
+LAW = LinearHysteresis(3e4, 0.8)
+"""The ball's own law (the histories' below): the tangential stiffness follows it."""
 
 
 def _history(normal_speed, e=0.8, k=3e4, dt=DT):
@@ -25,7 +27,7 @@ def test_a_ball_that_slides_throughout_changes_as_friction_times_the_normal_impu
     force, _ = _history(2.0)
     impulse = force.sum() * DT  # the sampled history's own impulse (trapezoid, ends zero)
     spin = BallSpin(offset_ratio=0.0)
-    g = slide(force, DT, MASS, spin, 0.1, [5.0, 0.0], [0.0, 0.0, 0.0])
+    g = slide(force, DT, MASS, spin, 0.1, [5.0, 0.0], [0.0, 0.0, 0.0], law=LAW)
     assert g.slid_throughout[0]
     assert g.velocity[0, 0] == pytest.approx(5.0 - 0.1 * impulse / MASS, rel=1e-9)
     rolling = 0.1 * impulse * spin.radius / spin.inertia(MASS)
@@ -37,7 +39,7 @@ def test_the_offset_adds_d_n_to_the_spin_of_a_sliding_ball():
     force, _ = _history(2.0)
     impulse = force.sum() * DT
     spin = BallSpin()
-    g = slide(force, DT, MASS, spin, 0.1, [5.0, 0.0], [0.0, 0.0, 0.0])
+    g = slide(force, DT, MASS, spin, 0.1, [5.0, 0.0], [0.0, 0.0, 0.0], law=LAW)
     expected = (0.1 * spin.radius + spin.offset) * impulse / spin.inertia(MASS)
     assert g.spin[0, 1] == pytest.approx(expected, rel=1e-9)
 
@@ -45,20 +47,29 @@ def test_the_offset_adds_d_n_to_the_spin_of_a_sliding_ball():
 def test_a_stiff_gripping_ball_leaves_rolling():
     force, _ = _history(3.0)
     spin = BallSpin(tangential_stiffness=1e8, offset_ratio=0.0)
-    g = slide(force, DT, MASS, spin, 1.5, [2.0, 0.0], [0.0, 0.0, 0.0], substeps=16)
+    g = slide(force, DT, MASS, spin, 1.5, [2.0, 0.0], [0.0, 0.0, 0.0], substeps=16, law=LAW)
     # the rigid ball's rolling state: v = R w, with m v + I w / R kept about the contact
     rolling = 2.0 / (1.0 + spin.inertia(MASS) / (MASS * spin.radius**2))
     assert g.velocity[0, 0] == pytest.approx(rolling, rel=0.02)
     assert g.velocity[0, 0] == pytest.approx(spin.radius * g.spin[0, 1], rel=0.02)
 
 
+ITF_LAW = BALL_PRESETS[DEFAULT_BALL].ball().law
+"""A stiffening law: the tangential stiffness then changes with the force (issue 44)."""
+
+
+@pytest.mark.parametrize("form", ["secant", "incremental"])
+@pytest.mark.parametrize("law", [LAW, ITF_LAW], ids=["linear", "stiffening"])
 @pytest.mark.parametrize("across", [0.0, 1.5])
 @pytest.mark.parametrize("layer", [None, Layer(3e4, 1e-3, 0.1)])
-def test_the_budget_closes_to_round_off(across, layer):
+def test_the_budget_closes_to_round_off(across, layer, law, form):
+    """In + the stiffness's work = out + losses, in both forms of the patch's spring."""
     force, _ = _history(8.0)
     inv = np.array([[1 / 0.3 + 1.0, 0.5], [0.5, 1 / 0.3 + 3.0]])
-    g = slide(force, DT, MASS, BallSpin(), 0.45, [6.0, across], [10.0, -300.0, 50.0],
-              inv_mass=inv, layer=layer)  # fmt: skip
+    g = slide(force, DT, MASS, BallSpin(form=form), 0.45, [6.0, across], [10.0, -300.0, 50.0],
+              inv_mass=inv, layer=layer, law=law)  # fmt: skip
+    if law is ITF_LAW:
+        assert g.stiffness_work[0] != 0.0  # the spring's stiffness changed with the force
     # round-off without the layer; with it, the layer's ringing at the end, (h k_l s)^2 /
     # 8 m_l, second order in the step (tests/test_oblique.py fits the order)
     assert abs(g.residual[0]) < (1e-12 if layer is None else 1e-7) * g.energy_in[0]
@@ -68,7 +79,7 @@ def test_the_budget_closes_to_round_off(across, layer):
 
 def test_spin_about_the_normal_is_untouched_and_no_slip_means_nothing_happens():
     force, _ = _history(8.0)
-    g = slide(force, DT, MASS, BallSpin(), 0.45, [0.0, 0.0], [0.0, 0.0, 70.0])
+    g = slide(force, DT, MASS, BallSpin(), 0.45, [0.0, 0.0], [0.0, 0.0, 70.0], law=LAW)
     assert np.all(g.velocity == 0.0) and np.all(g.spin[0, :2] == 0.0)
     assert g.spin[0, 2] == 70.0
 
@@ -77,7 +88,7 @@ def test_spin_about_the_normal_is_untouched_and_no_slip_means_nothing_happens():
 def test_momentum_goes_to_the_surface(layer):
     force, _ = _history(8.0)
     g = slide(force, DT, MASS, BallSpin(), 0.45, [6.0, 1.0], [0.0, 0.0, 0.0],
-              inv_mass=np.eye(2) / 0.3, layer=layer)  # fmt: skip
+              inv_mass=np.eye(2) / 0.3, layer=layer, law=LAW)  # fmt: skip
     lost = MASS * (g.velocity[0] - [6.0, 1.0]) + g.impulse[0]
     # what is missing is the layer's, still ringing on its spring when the ball has left
     ringing = 0.0 if layer is None else np.sqrt(2.0 * layer.mass * g.layer_energy[0])
@@ -92,7 +103,9 @@ def test_the_outcome_converges_with_the_step():
     spins = {}
     for dt, sub in ((1e-5, 4), (2e-6, 4), (5e-7, 4), (2.5e-7, 4)):
         force, _ = _history(6.0, dt=dt)
-        g = slide(force, dt, MASS, BallSpin(), 0.6, [4.0, 0.0], [0.0, -100.0, 0.0], substeps=sub)
+        g = slide(
+            force, dt, MASS, BallSpin(), 0.6, [4.0, 0.0], [0.0, -100.0, 0.0], substeps=sub, law=LAW
+        )
         spins[dt] = g.spin[0, 1]
     converged = spins[2.5e-7]
     change = abs(converged + 100.0)  # the spin's change [rad/s]
@@ -104,6 +117,38 @@ def test_the_outcome_converges_with_the_step():
 def test_bad_inputs_name_themselves():
     force, _ = _history(2.0)
     with pytest.raises(ValueError, match="friction must be in"):
-        slide(force, DT, MASS, BallSpin(), 3.0, [1.0, 0.0], [0.0, 0.0, 0.0])
+        slide(force, DT, MASS, BallSpin(), 3.0, [1.0, 0.0], [0.0, 0.0, 0.0], law=LAW)
     with pytest.raises(ValueError, match="tangential_stiffness"):
         BallSpin(tangential_stiffness=10.0)
+
+
+def test_the_tangential_stiffness_follows_the_balls_own_normal_stiffness():
+    """Issue 44: k_t = kappa k_n(N), k_n the loading law's dF/dX at N, so the ratio stays fixed
+    as the force grows (a stiffening ball: stiffer at a stroke's 850 N than at 100 N); a fixed
+    stiffness stays fixed; without the law, a refusal that says what to give."""
+    force = np.array([[0.0, 100.0, 850.0, 300.0, 0.0]])
+    spin = BallSpin()
+    k_t = spin.stiffness(ITF_LAW, force)
+    k_n = 1.0 / ITF_LAW.compliance(force, force)
+    pressed = force > 0.0
+    assert np.allclose(k_t[pressed] / k_n[pressed], spin.stiffness_ratio, rtol=1e-12)
+    assert k_t[0, 2] > 2.0 * k_t[0, 1]
+    assert np.all(BallSpin(tangential_stiffness=5e4).stiffness(None, force) == 5e4)
+    with pytest.raises(ValueError, match="needs the ball's law"):
+        spin.stiffness(None, force)
+    with pytest.raises(ValueError, match="form must be one of"):
+        BallSpin(form="tangent")
+
+
+@pytest.mark.parametrize("e", [0.5, 0.8, 0.95])
+def test_the_dashpot_returns_the_balls_own_cor(e):
+    """The patch's damping ratio is the one with which a spring-dashpot bouncing off a wall
+    returns the ball's own COR: simulated, a half period of the damped oscillator."""
+    from scipy.integrate import solve_ivp
+
+    zeta = BallSpin().damping(LinearSpring(1.0) if e == 1.0 else LinearHysteresis(3e4, e))
+    omega = 1.0
+    sol = solve_ivp(lambda _t, s: [s[1], -(omega**2) * s[0] - 2 * zeta * omega * s[1]],
+                    (0.0, 10.0), [0.0, 1.0], events=lambda _t, s: s[0] if _t > 0 else 1.0,
+                    rtol=1e-12, atol=1e-14)  # fmt: skip
+    assert -sol.y_events[0][0][1] == pytest.approx(e, rel=1e-6)  # back through 0, once

@@ -101,7 +101,7 @@ def test_the_racket_moving_in_its_plane_costs_the_spin_a_little():
     g = o.grip
     fixed = slide(np.nan_to_num(o.normal.force), float(o.normal.t[1] - o.normal.t[0]),
                   BALL.mass, BallSpin(radius=BALL.radius), o.side.ball_friction, (8.0, 3.0),
-                  SPIN, layer=o.side.layer(), substeps=GRIP_SUBSTEPS)  # fmt: skip
+                  SPIN, layer=o.side.layer(), law=BALL.law, substeps=GRIP_SUBSTEPS)  # fmt: skip
     change, still = g.spin[:, 1] - SPIN[1], fixed.spin[:, 1] - SPIN[1]
     assert np.all(np.abs(change / still - 1.0) < 0.12)
 
@@ -161,6 +161,6 @@ def test_a_stiff_ball_on_sliding_mains_gets_the_sub_steps_it_needs():
     needed = stable_substeps(stiff, BALL.mass, dt, side.layer())
     assert needed > 20
     finer = slide(np.nan_to_num(o.normal.force), dt, BALL.mass, stiff, side.ball_friction,
-                  (12.0, 0.0), (0.0, -300.0, 0.0), layer=side.layer(),
+                  (12.0, 0.0), (0.0, -300.0, 0.0), layer=side.layer(), law=BALL.law,
                   substeps=4 * needed)  # fmt: skip
     assert abs(o.spin[0, 1] - finer.spin[0, 1]) < 2e-3 * abs(finer.spin[0, 1] + 300.0)

@@ -241,3 +241,21 @@ def test_a_racket_that_does_not_close_on_the_ball_misses():
 def test_to_world_names_a_bad_input(args, words):
     with pytest.raises(ValueError, match=words):
         STROKES["volley"].to_world(*args)
+
+
+def test_a_tangential_stiffness_falling_to_zero_gives_a_finite_answer():
+    """Issue 44: the tangential stiffness follows the ball's normal one, 0 at no force; its
+    interpolation between samples may round to -1 ulp there, which once made the dashpot's
+    sqrt NaN (the topspin forehand at a 26 degree path and a face 4 degrees closed)."""
+    import math
+    from dataclasses import replace
+
+    import numpy as np
+
+    from racket import STROKES, default_ball, default_racket, hit
+
+    stroke = replace(STROKES["topspin-forehand"], path_angle=math.radians(26.0),
+                     face_angle=math.radians(-4.0))  # fmt: skip
+    out = hit(stroke, default_racket(), default_ball())
+    assert np.all(np.isfinite(out.oblique.grip.velocity))
+    assert np.all(np.isfinite(out.oblique.grip.spin))

@@ -157,7 +157,7 @@ def oblique_impact(
     dt = float(normal.t[1] - normal.t[0])
     grip = slide(
         force, dt, ball.mass, ball_spin, side.ball_friction, slip_velocity, spin,
-        inv_mass=inverse_mass(racket, x, y), layer=side.layer(), substeps=GRIP_SUBSTEPS,
-        runner=run_rows,
+        inv_mass=inverse_mass(racket, x, y), layer=side.layer(), law=ball.law,
+        substeps=GRIP_SUBSTEPS, runner=run_rows,
     )  # fmt: skip
     return ObliqueImpact(normal, grip, side)
