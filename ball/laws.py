@@ -57,6 +57,12 @@ class MonotoneLaw(ABC):
     def compliance(self, f, f_max):
         """d(compression)/d(force) [m/N] on the branch the ball is on at ``f``, ``f_max``."""
 
+    def loading_compliance(self, f):
+        """d(compression)/d(force) [m/N] on the loading curve at ``f`` [N] (as
+        :meth:`compliance` with ``f_max = f``).
+        """
+        return self.compliance(f, f)
+
     @abstractmethod
     def dissipated(self, f_max):
         """Energy [J] lost in one loading to ``f_max`` [N] and unloading to zero force."""
@@ -249,6 +255,11 @@ class _PowerBranches(MonotoneLaw):
                 self._loading_compliance(np.where(f > 0, f, 1.0)),
             )
         return np.where(f > 0, c, np.inf)
+
+    def loading_compliance(self, f):
+        # the loading branch of compliance() alone: no unloading exponent to compute
+        f = np.asarray(f, dtype=float)
+        return np.where(f > 0, self._loading_compliance(np.where(f > 0, f, 1.0)), np.inf)
 
     def dissipated(self, f_max):
         f_max = np.asarray(f_max, dtype=float)

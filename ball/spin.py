@@ -148,7 +148,7 @@ class BallSpin:
                 "ball's law (law=ball.law), or give BallSpin a fixed tangential_stiffness"
             )
         with np.errstate(divide="ignore"):
-            k_n = 1.0 / np.asarray(law.compliance(force, force), dtype=float)
+            k_n = 1.0 / np.asarray(law.loading_compliance(force), dtype=float)
         return self.stiffness_ratio * np.nan_to_num(k_n, posinf=0.0)
 
     def damping(self, law) -> float:
