@@ -10,9 +10,11 @@ follows from the force history.
 
 **The ball** (:class:`ball.spin.BallSpin`): mass m, moment of inertia I = k m R^2.  Its
 contact patch sits at -R n from the centre and is joined to it by a tangential spring of
-stiffness k_t (a Jenkins element): the patch's displacement xi from the ball's contact point
-grows with the slip velocity while it grips, and is cut back to |k_t xi| = mu N when the
-force would beat friction (it slides).  The force on the ball is F = k_t xi, the torque
+stiffness k_t (a Jenkins element), kappa times the ball's own normal stiffness at the normal
+force (:meth:`ball.spin.BallSpin.stiffness`, issue 44): the patch's displacement xi from the
+ball's contact point grows with the slip velocity while it grips, and is cut back to
+|k_t xi| = mu N when the force would beat friction (it slides).  The force on the ball is
+F = k_t xi (secant; or dF = k_t dxi, incremental), with a dashpot while it grips, the torque
 -R n x F.  While the ball slides, the normal force acts a distance d behind the centre (as
 seen along the sliding), so its torque d N adds to friction's (Cross 2002: "the spin of the
 ball was found to be larger than that due to the friction force alone, a result that can be
@@ -175,6 +177,11 @@ def stable_substeps(
         ball's fixed one.
     """
     inertia = spin.inertia(mass)
+    if stiffness is None and spin.tangential_stiffness is None:
+        raise ValueError(
+            "stable_substeps needs the tangential stiffness history (stiffness=, from "
+            "BallSpin.stiffness), or a BallSpin with a fixed tangential_stiffness"
+        )
     k_t = spin.tangential_stiffness if stiffness is None else float(np.max(stiffness))
     omega2 = k_t * (inertia + mass * spin.radius**2) / (mass * inertia)
     if layer is not None:

@@ -152,3 +152,13 @@ def test_the_dashpot_returns_the_balls_own_cor(e):
                     (0.0, 10.0), [0.0, 1.0], events=lambda _t, s: s[0] if _t > 0 else 1.0,
                     rtol=1e-12, atol=1e-14)  # fmt: skip
     assert -sol.y_events[0][0][1] == pytest.approx(e, rel=1e-6)  # back through 0, once
+
+
+def test_the_substeps_need_a_stiffness():
+    """A BallSpin whose stiffness follows the force has none of its own: stable_substeps
+    says what to give instead of failing on None."""
+    from ball.grip import stable_substeps
+
+    with pytest.raises(ValueError, match="stiffness history"):
+        stable_substeps(BallSpin(), MASS, DT)
+    assert stable_substeps(BallSpin(), MASS, DT, stiffness=[0.0, 6e4]) >= 1

@@ -110,7 +110,7 @@ def rigid_bed_spins():
 
 _LEVEL_GAP = (
     "model {:.0f} rpm vs TWU 1207-1803 (band 1200-1810): a laterally rigid bed already gives "
-    "1970-2200 (the ball's contact, ball/spin.py at k_t 8.7e4 N/m, offset 0.06 R), and the "
+    "about 2000 (the ball's contact, ball/spin.py: kappa k_n(N), offset 0.06 R), and the "
     "snapback adds 30-60 %: the mains take the ball's whole friction (0.42-0.44 of its force) "
     "against a hold of 0.09-0.15 of it, slide 2.6-4.3 mm against 77-91 kN/m and give back "
     "0.3-0.7 J (HOLD_SPACINGS 0.5-2, CONTACT_WIDTH 3-5 cm, PRESS_RATIO 1-1.5 give 2610-3580 "
@@ -196,7 +196,7 @@ def test_a_noncompliant_contact_spins_the_same_whatever_the_friction(rigid_bed_s
 
 @pytest.mark.xfail(strict=True, reason="model 2337 -> 1916 -> 1331 rpm over friction 0.3-0.45-"
                    "0.6 vs TWU's 'nearly the same' (within 10 %): the ball's tangential spring "
-                   "(8.7e4 N/m, calibrated on Cross's bounces) rings with a 3 ms period against "
+                   "(calibrated on Cross) rings with a period near the contact's against "
                    "a 5.4 ms contact, so the sooner it bites the more of the spin the friction's "
                    "reversal takes back; TWU's surface is the bed and their ball was as "
                    "compliant as any, so the gap is the ball's tangential contact (1e6 N/m "

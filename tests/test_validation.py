@@ -51,8 +51,8 @@ KNOWN_GAPS = {
     "within this bounce's own uncertainty (vx2 is, since issue 44: 1.23 m/s)",
     **{
         f"spin-twu-{material}": f"model {model} vs 1200-1810 rpm: a laterally stiff bed "
-        "already gives about 2000 rpm (the ball's tangential spring, 3 ms, springs back late in "
-        "a 5 ms contact) and the sliding mains, which take the ball's whole friction, add "
+        "already gives about 2000 rpm (the ball's tangential spring springs back late in the "
+        "contact) and the sliding mains, which take the ball's whole friction, add "
         "30-60 % on snapping back"
         for material, model in (("polyester", 2823), ("nylon", 2654), ("natural-gut", 2490))
     },
