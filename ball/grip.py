@@ -24,10 +24,15 @@ coupling does not debit (:attr:`Grip.offset_work`).  Spin about the normal is un
 
 **The surface**: the contact point's in-plane velocity follows the impulse P it has
 received, u = W P, with W the inverse-mass matrix of the point (0 for a court or a clamped
-head; for a free racket its rigid-body in-plane motion).  A **layer** (the mains of a string
-bed) may sit between the ball and the surface: a mass m_l held by a spring k_l (the mains'
-tension pulling them back: "snapback"), and by Coulomb friction mu_l N on the surface
-(mains on crosses), which it sticks to or slides over.
+head; for a free racket its rigid-body in-plane motion).  A woven **layer** (:class:`Layer`:
+a string bed's mains and crosses) may sit between the ball and the surface: two families of
+strings, each moving only across its own length, a mass held by a spring (their tension
+pulling them back: "snapback") and by Coulomb friction at the crossings (static to stick,
+kinetic while sliding), pressed by the weave's preload and the ball's force.  The ball then
+grips through two patches sharing its centre (issue 44), each a Jenkins element with its
+share of the stiffness, the dashpot and the friction limit: one on the strings that move
+across the face (held by the frame along it), one on those that move along it (held
+across).  Without a layer one patch grips the surface.
 
 **Stepping**: velocity Verlet (half kick, drift, half kick) on sub-steps of the history's
 step, N linear between samples.  The offset's torque is an impulse outside the forces'
@@ -35,11 +40,11 @@ kick, before it in the first half kick and after it in the second, so that the s
 symmetric.  The layer's Coulomb friction is an implicit impulse after the forces in both
 half kicks (as RATTLE enforces a constraint: a layer that sticks moves with the surface
 through the drift, and does not creep), its loss the impulse's work on the slip averaged
-over the half kick (zero while stuck).  The slip loss is booked as the work the contact
-took in each drift less what its spring kept, so the budget closes to round-off without a
-layer (:attr:`Grip.residual`), and at second order with mains sliding (3e-6 to 3e-5 of the
-energy at the racket's default step).  The
-stick-slip switches fall at step boundaries: the outcome converges about as the step.
+over the half kick (zero while stuck).  The slip loss is booked as the work each patch took
+in each drift less what its spring kept, so the budget closes to round-off without a layer
+(:attr:`Grip.residual`), and at second order with the strings sliding (1e-7 to 3e-5 of the
+energy at the racket's default step).  The stick-slip switches fall at step boundaries: the
+outcome converges about as the step.
 """
 
 from __future__ import annotations
@@ -59,22 +64,61 @@ FRICTION_RANGE = (0.0, 2.0)
 
 
 class Layer(NamedTuple):
-    """A layer between the ball and the surface that slides on it (the mains of a string
-    bed on its crosses).
+    """A woven layer between the ball and the surface (a string bed's strings on its
+    frame): two families of strings that cross, each sliding only across its own length,
+    pressed together at the crossings and pulled back to their places by their tension.
+    The ball grips the layer through two patches sharing its centre: one on the strings
+    that move across (the mains, lying along the face's first axis; along the face they are
+    held by the frame), one on those that move along (the crosses; held across).
 
     Attributes
     ----------
-    stiffness : float
-        Spring [N/m] pulling the layer back to its place on the surface.
-    mass : float
-        Its moving mass [kg], > 0.
+    stiffness : float or (float, float)
+        Spring [N/m] pulling the strings back to their places, (along, across): the crosses'
+        and the mains'; one number for both.
+    mass : float or (float, float)
+        Their moving mass [kg] (along, across), each > 0.
     friction : float
-        Coefficient [-] of the Coulomb friction on the surface; its limit is friction x N.
+        Static coefficient of friction [-] at the crossings: the strings stick while the
+        impulse that keeps them stuck is within friction x the pressing force.
+    kinetic : float, optional
+        Kinetic coefficient [-] while they slide, at most ``friction``; None: ``friction``.
+    preload : float, optional
+        The crossings' own pressing force [N] under the ball (the weave's), before, during
+        and after the ball's.
+    press : float, optional
+        The share [-] of the ball's normal force that presses the crossings.
+    share : float, optional
+        The share [-] of the ball's grip (stiffness, damping and friction limit) on the
+        strings that move across; the rest grips those that move along.
     """
 
-    stiffness: float
-    mass: float
+    stiffness: float | tuple
+    mass: float | tuple
     friction: float
+    kinetic: float | None = None
+    preload: float = 0.0
+    press: float = 1.0
+    share: float = 0.5
+
+    def row(self) -> np.ndarray:
+        """The layer as the kernel's row (:data:`ball.grip_layout.N_LAYER` numbers), each
+        input checked.
+        """
+        out = np.zeros(col.N_LAYER)
+        pairs = (("stiffness", self.stiffness, "N/m", 0.0, math.inf, col.LAYER_STIFFNESS),
+                 ("mass", self.mass, "kg", 1e-6, 1.0, col.LAYER_MASS))  # fmt: skip
+        for name, value, unit, low, high, at in pairs:
+            values = np.broadcast_to(finite_array(f"layer {name}", value, unit), (2,))
+            for d, each in enumerate(values):
+                out[at + d] = in_range(f"layer {name}", each, low, high, unit)
+        out[col.LAYER_STATIC] = in_range("layer friction", self.friction, *FRICTION_RANGE)
+        kinetic = self.friction if self.kinetic is None else self.kinetic
+        out[col.LAYER_KINETIC] = in_range("layer kinetic friction", kinetic, 0.0, self.friction)
+        out[col.LAYER_PRELOAD] = non_negative("layer preload", self.preload, "N")
+        out[col.LAYER_PRESS] = in_range("layer press", self.press, 0.0, 10.0)
+        out[col.LAYER_SHARE] = in_range("layer share", self.share, 0.0, 1.0)
+        return out
 
 
 @dataclass(frozen=True)
@@ -185,7 +229,9 @@ def stable_substeps(
     k_t = spin.tangential_stiffness if stiffness is None else float(np.max(stiffness))
     omega2 = k_t * (inertia + mass * spin.radius**2) / (mass * inertia)
     if layer is not None:
-        omega2 += (k_t + layer.stiffness) / layer.mass
+        row = layer.row()
+        stiffest = np.max(row[col.LAYER_STIFFNESS : col.LAYER_STIFFNESS + 2])
+        omega2 += (k_t + stiffest) / np.min(row[col.LAYER_MASS : col.LAYER_MASS + 2])
     return min(4096, max(1, math.ceil(dt * math.sqrt(omega2) / RESOLVED_PHASE)))
 
 
@@ -227,7 +273,7 @@ def slide(
         (2, 2) or (n, 2, 2) the surface point's in-plane inverse mass [1/kg]; None: a
         surface that does not move.
     layer : Layer, optional
-        A layer that slides on the surface (the mains); None: none.
+        A woven layer that slides on the surface (the strings); None: none.
     law : MonotoneLaw, optional
         The ball's own normal force law, whose incremental stiffness at the normal force the
         tangential stiffness follows (:meth:`BallSpin.stiffness`); None only with a
@@ -261,13 +307,9 @@ def slide(
         np.linalg.eigvalsh(inv_mass) < -1e-12 * np.abs(inv_mass).max(initial=1.0)
     ):
         raise ValueError("inv_mass must be symmetric and positive semi-definite (a body's)")
-    stack = np.zeros((n, 3))
+    stack = np.zeros((n, col.N_LAYER))
     if layer is not None:
-        stack[:] = [
-            non_negative("layer stiffness", layer.stiffness, "N/m"),
-            in_range("layer mass", layer.mass, 1e-6, 1.0, "kg"),
-            in_range("layer friction", layer.friction, *FRICTION_RANGE),
-        ]
+        stack[:] = layer.row()
     k_t = spin.stiffness(law, force)
     substeps = max(
         whole("substeps", substeps, 1, 4096), stable_substeps(spin, mass, dt, layer, k_t)

@@ -1,7 +1,7 @@
 """The compiled tangential contact of :mod:`ball.grip` (numba loads it on first use, not on
-``import ball``): velocity Verlet on the history's sub-steps, the Jenkins element's return
-mapping, the offset's torque and the layer's implicit friction (the model and its stepping
-are described in :mod:`ball.grip`).
+``import ball``): velocity Verlet on the history's sub-steps, the two patches' Jenkins
+elements and their return mapping, the offset's torque and the woven layer's implicit
+friction (the model and its stepping are described in :mod:`ball.grip`).
 """
 
 from __future__ import annotations
@@ -16,8 +16,15 @@ from ball.grip_layout import (
     ENERGY_OUT,
     GRIP_TIME,
     LAYER_ENERGY,
+    LAYER_KINETIC,
     LAYER_LOSS,
+    LAYER_MASS,
     LAYER_PEAK,
+    LAYER_PRELOAD,
+    LAYER_PRESS,
+    LAYER_SHARE,
+    LAYER_STATIC,
+    LAYER_STIFFNESS,
     OFFSET_WORK,
     P_ACROSS,
     P_ALONG,
@@ -32,83 +39,113 @@ from ball.grip_layout import (
     W_ACROSS,
     W_ALONG,
     W_NORMAL,
-)  # fmt: skip
+)  # fmt: skip  # fmt: skip
+
+# the state of one impact: the ball's velocity and spin (along, across), the surface
+# point's velocity and the impulse it received, the layer's offsets and velocities (its
+# strings that move along, across), each patch's spring (xi or F per unit share), whether
+# it slides, its last force per unit share, and whether the layer slides
+# (patch p's: spring at _SPRING + 2 p, flag at _SLIDES + p, force at _FORCE + 2 p)
+_V, _W, _U, _P, _S, _L = 0, 2, 4, 6, 8, 10
+_SPRING, _SLIDES, _FORCE = 12, 16, 18
+_LAYER_SLIDES = 22
+_STATE = 23
 
 
 @njit(cache=True, inline="always")
-def _kick(st, f0, f1, normal, h, m, radius, inertia, offset, w00, w01, w11, k_l, m_l, mu_l, out,
-          first):  # fmt: skip
-    """Half kick of ``h`` [s]: the ball's force (f0, f1) on the ball and the layer (or the
-    surface); the offset's torque while sliding, outside the forces' kick (before it in the
-    first half kick, after it in the second: the step stays symmetric, and the budget second
-    order); the layer's friction, an impulse solved implicitly after the forces in both.
-    The surface's inverse mass is (w00, w01, w11), the layer's stiffness, mass and friction
-    (k_l, m_l, mu_l): all numbers, no arrays made per call.
+def _kick(st, normal, h, m, radius, inertia, offset, inv, lay, solve, share, out, first):
+    """Half kick of ``h`` [s]: the patches' forces on the ball and on what they sit on (the
+    surface, or the layer's strings that move in that direction); the offset's torque while
+    a patch slides, outside the forces' kick (before it in the first half kick, after it in
+    the second: the step stays symmetric, and the budget second order); the layer's
+    friction, an impulse solved implicitly after the forces in both.  ``inv`` is the
+    surface's inverse mass (w00, w01, w11), ``lay`` the layer's row (its mass 0: none),
+    ``solve`` its friction's 2 x 2 system (a00, a11, det), ``share`` the patches' shares of
+    the grip.
     """
     if first:
-        _offset_torque(st, f0, f1, normal, h, inertia, offset, out)
-    r0, r1 = st[10] - st[5], st[11] - st[6]  # the layer's slip on the surface, at the start
-    st[0] += f0 * h / m
-    st[1] += f1 * h / m
-    st[2] += radius * f1 * h / inertia
-    st[3] -= radius * f0 * h / inertia
-    if m_l > 0.0:
-        # the layer (absolute velocity st[10:12], offset st[8:10] from its place)
-        st[10] -= (f0 + k_l * st[8]) * h / m_l
-        st[11] -= (f1 + k_l * st[9]) * h / m_l
-        _push(st, w00, w01, w11, k_l * st[8] * h, k_l * st[9] * h)
+        _offset_torque(st, normal, h, inertia, offset, share, out)
+    r0, r1 = st[_L] - st[_U], st[_L + 1] - st[_U + 1]  # the layer's slip, at the start
+    a, b = _FORCE, _FORCE + 2
+    f0 = share[0] * st[a] + share[1] * st[b]
+    f1 = share[0] * st[a + 1] + share[1] * st[b + 1]
+    st[_V] += f0 * h / m
+    st[_V + 1] += f1 * h / m
+    st[_W] += radius * f1 * h / inertia
+    st[_W + 1] -= radius * f0 * h / inertia
+    m0, m1 = lay[LAYER_MASS], lay[LAYER_MASS + 1]
+    if m0 > 0.0:
+        # patch a sits on the frame along and on the strings that move across (the mains),
+        # patch b on the strings that move along (the crosses) and on the frame across
+        k0, k1 = lay[LAYER_STIFFNESS], lay[LAYER_STIFFNESS + 1]
+        st[_L] -= (share[1] * st[b] + k0 * st[_S]) * h / m0
+        st[_L + 1] -= (share[0] * st[a + 1] + k1 * st[_S + 1]) * h / m1
+        p0 = (k0 * st[_S] - share[0] * st[a]) * h
+        p1 = (k1 * st[_S + 1] - share[1] * st[b + 1]) * h
+        _push(st, inv, p0, p1)
+        # the layer's friction after the forces in both half kicks (as RATTLE enforces a
+        # constraint): strings that stick then move with the surface through the drift
+        press = lay[LAYER_PRESS] * normal + lay[LAYER_PRELOAD]
+        _layer_friction(st, press * h, lay, inv, solve, r0, r1, out)
     else:
-        _push(st, w00, w01, w11, -f0 * h, -f1 * h)
-    # the layer's friction after the forces in both half kicks (as RATTLE enforces a
-    # constraint): a layer that sticks then moves with the surface through the drift
-    _layer_friction(st, normal * mu_l * h, m_l, w00, w01, w11, r0, r1, out)
+        _push(st, inv, -f0 * h, -f1 * h)
     if not first:
-        _offset_torque(st, f0, f1, normal, h, inertia, offset, out)
+        _offset_torque(st, normal, h, inertia, offset, share, out)
 
 
 @njit(cache=True, inline="always")
-def _offset_torque(st, f0, f1, normal, h, inertia, offset, out):
-    """While the ball slides, the normal force's offset adds d N to friction's torque."""
-    if st[14] > 0.0 and normal > 0.0:
-        scale = offset * normal / math.sqrt(f0 * f0 + f1 * f1) * h / inertia
-        before = st[2] ** 2 + st[3] ** 2
-        st[2] += scale * f1
-        st[3] -= scale * f0
-        out[OFFSET_WORK] += 0.5 * inertia * (before - st[2] ** 2 - st[3] ** 2)
-
-
-@njit(cache=True, inline="always")
-def _layer_friction(st, limit, m_l, w00, w01, w11, r0, r1, out):
-    """The layer's Coulomb friction on the surface, an impulse J of at most ``limit`` [N s]:
-    the one that stops their relative motion if it is within the limit (they stick).  It
-    acts with the half kick's forces, so its loss is -J . (r0 + r_end) / 2 with (r0, r1) the
-    slip at the half kick's start: exact for the layer and the surface, and zero while they
-    stay stuck.
+def _offset_torque(st, normal, h, inertia, offset, share, out):
+    """While a patch slides, its share of the normal force's offset adds d N to its
+    friction's torque.
     """
-    if m_l == 0.0:
+    if normal <= 0.0 or st[_SLIDES] + st[_SLIDES + 1] == 0.0:
         return
-    t0, t1 = st[10] - st[5], st[11] - st[6]
-    a00 = 1.0 / m_l + w00
-    a11 = 1.0 / m_l + w11
-    det = a00 * a11 - w01 * w01
-    j0 = -(a11 * t0 - w01 * t1) / det
-    j1 = -(a00 * t1 - w01 * t0) / det
-    if math.sqrt(j0 * j0 + j1 * j1) > limit:
+    before = st[_W] ** 2 + st[_W + 1] ** 2
+    for p in range(2):
+        g0, g1 = st[_FORCE + 2 * p], st[_FORCE + 2 * p + 1]
+        if share[p] > 0.0 and st[_SLIDES + p] > 0.0:
+            scale = share[p] * offset * normal / math.sqrt(g0 * g0 + g1 * g1) * h / inertia
+            st[_W] += scale * g1
+            st[_W + 1] -= scale * g0
+    out[OFFSET_WORK] += 0.5 * inertia * (before - st[_W] ** 2 - st[_W + 1] ** 2)
+
+
+@njit(cache=True, inline="always")
+def _layer_friction(st, press, lay, inv, solve, r0, r1, out):
+    """The layer's Coulomb friction on the surface at the crossings, an impulse J: the one
+    that stops their relative motion if it is within the limit (they stick), else the
+    limit, ``press`` [N s] times the coefficient: static friction's while they stick,
+    kinetic friction's while they slide (once sliding, they stick again only when kinetic
+    friction can stop them: no chatter between the two at the step's rate).  It acts with the half
+    kick's forces, so its loss is -J . (r0 + r_end) / 2 with (r0, r1) the slip at the half
+    kick's start: exact for the layer and the surface, and zero while they stay stuck.
+    """
+    m0, m1 = lay[LAYER_MASS], lay[LAYER_MASS + 1]
+    t0, t1 = st[_L] - st[_U], st[_L + 1] - st[_U + 1]
+    a00, a11, det = solve[0], solve[1], solve[2]
+    j0 = -(a11 * t0 - inv[1] * t1) / det
+    j1 = -(a00 * t1 - inv[1] * t0) / det
+    coefficient = lay[LAYER_KINETIC] if st[_LAYER_SLIDES] > 0.0 else lay[LAYER_STATIC]
+    st[_LAYER_SLIDES] = 0.0
+    if math.sqrt(j0 * j0 + j1 * j1) > coefficient * press:
+        limit = lay[LAYER_KINETIC] * press
         r = math.sqrt(t0 * t0 + t1 * t1)
         j0, j1 = -limit * t0 / r, -limit * t1 / r
-    st[10] += j0 / m_l
-    st[11] += j1 / m_l
-    _push(st, w00, w01, w11, -j0, -j1)
-    out[LAYER_LOSS] -= 0.5 * (j0 * (r0 + st[10] - st[5]) + j1 * (r1 + st[11] - st[6]))
+        st[_LAYER_SLIDES] = 1.0
+    st[_L] += j0 / m0
+    st[_L + 1] += j1 / m1
+    _push(st, inv, -j0, -j1)
+    t0, t1 = st[_L] - st[_U], st[_L + 1] - st[_U + 1]
+    out[LAYER_LOSS] -= 0.5 * (j0 * (r0 + t0) + j1 * (r1 + t1))
 
 
 @njit(cache=True, inline="always")
-def _push(st, w00, w01, w11, p0, p1):
+def _push(st, inv, p0, p1):
     """The surface receives the impulse (p0, p1) [N s]."""
-    st[12] += p0
-    st[13] += p1
-    st[5] = w00 * st[12] + w01 * st[13]
-    st[6] = w01 * st[12] + w11 * st[13]
+    st[_P] += p0
+    st[_P + 1] += p1
+    st[_U] = inv[0] * st[_P] + inv[1] * st[_P + 1]
+    st[_U + 1] = inv[1] * st[_P] + inv[2] * st[_P + 1]
 
 
 @njit(cache=True, nogil=True)
@@ -131,127 +168,159 @@ def grip_kernel(force, dt, substeps, m, radius, inertia, k_t, offset, zeta, seca
     k_t : ndarray
         (n, T) tangential stiffness [N/m] at the history's times (linear between them).
     zeta : float
-        Damping ratio [-] of the patch's dashpot, c = 2 zeta sqrt(k_t m_t) (m_t the ball's
-        tangential effective mass), while it grips.
+        Damping ratio [-] of the patches' dashpot, c = 2 zeta sqrt(k_t m_t) (m_t the ball's
+        tangential effective mass), while they grip.
     secant : bool
-        True: the patch's spring is secant, F = k_t xi (the stored force rescaled as k_t
+        True: the patches' springs are secant, F = k_t xi (the stored force rescaled as k_t
         changes); False: incremental, dF = k_t dxi.
     mu : ndarray
         (n,) ball-surface friction coefficient [-].
     inv_mass : ndarray
         (n, 2, 2) the surface point's in-plane inverse mass [1/kg].
     layer : ndarray
-        (n, 3) the layer's stiffness [N/m], mass [kg] (0: none) and friction [-].
+        (n, N_LAYER) the woven layer's row (:mod:`ball.grip_layout`); its masses 0: none.
     v, w : ndarray
         (n, 2) ball's tangential velocity relative to the surface [m/s]; (n, 3) its spin
         [rad/s].
     out : ndarray
-        (n, N_OUT) zeros, for the outcome, columns as named in this module.
+        (n, N_OUT) zeros, for the outcome, columns as named in :mod:`ball.grip_layout`.
     start, stop, stride : int
         The rows to run.
     """
     steps = force.shape[1]
     h = dt / substeps
+    fraction = 1.0 / substeps
     m_t = m * inertia / (inertia + m * radius * radius)  # the ball's tangential mass
     for i in range(start, stop, stride):
         o = out[i]
-        # v(0:2) w_t(2:4) xi or F(4, 7) u(5:7) s(8:10) layer v(10:12) P(12:14) sliding(14)
-        st = np.zeros(15)
-        st[0], st[1], st[2], st[3] = v[i, 0], v[i, 1], w[i, 0], w[i, 1]
+        lay = layer[i]
+        woven = lay[LAYER_MASS] > 0.0
+        share = np.array([lay[LAYER_SHARE], 1.0 - lay[LAYER_SHARE]]) if woven else np.array(
+            [1.0, 0.0])  # fmt: skip
+        inv = np.array([inv_mass[i, 0, 0], inv_mass[i, 0, 1], inv_mass[i, 1, 1]])
+        solve = np.zeros(3)  # the crossings' friction: (1/m + W) J = -slip
+        if woven:
+            solve[0] = 1.0 / lay[LAYER_MASS] + inv[0]
+            solve[1] = 1.0 / lay[LAYER_MASS + 1] + inv[2]
+            solve[2] = solve[0] * solve[1] - inv[1] * inv[1]
+        # the ball has left after the last positive force: nothing moves it after the step
+        # that ends there (the strings may ring on, pressed by the weave alone)
+        stop = steps - 1
+        while stop > 0 and force[i, stop] <= 0.0 and force[i, stop - 1] <= 0.0:
+            stop -= 1
+        st = np.zeros(_STATE)
+        st[_V], st[_V + 1], st[_W], st[_W + 1] = v[i, 0], v[i, 1], w[i, 0], w[i, 1]
         o[ENERGY_IN] = 0.5 * m * (v[i, 0] ** 2 + v[i, 1] ** 2)
         o[ENERGY_IN] += 0.5 * inertia * (w[i, 0] ** 2 + w[i, 1] ** 2)
         slip0 = v[i, 0] - radius * w[i, 1]
         slip1 = v[i, 1] + radius * w[i, 0]
         size = math.sqrt(slip0 * slip0 + slip1 * slip1)
         d0, d1 = (slip0 / size, slip1 / size) if size > 0.0 else (1.0, 0.0)
-        f0 = f1 = 0.0
         sign = peak = 0.0
-        w00, w01, w11 = inv_mass[i, 0, 0], inv_mass[i, 0, 1], inv_mass[i, 1, 1]
-        k_l, m_l, mu_l = layer[i, 0], layer[i, 1], layer[i, 2]
-        for j in range(steps - 1):
+        for j in range(stop):
+            n_j, dn = force[i, j], force[i, j + 1] - force[i, j]
+            k_j, dk = k_t[i, j], k_t[i, j + 1] - k_t[i, j]
+            n_b, k_b = n_j, max(k_j, 0.0)
             for k in range(substeps):
-                n_a = force[i, j] + (force[i, j + 1] - force[i, j]) * k / substeps
-                n_b = force[i, j] + (force[i, j + 1] - force[i, j]) * (k + 1) / substeps
-                # (>= 0: a stiffness falling to 0 may round to -1 ulp of its last value)
-                k_a = max(k_t[i, j] + (k_t[i, j + 1] - k_t[i, j]) * k / substeps, 0.0)
-                k_b = max(k_t[i, j] + (k_t[i, j + 1] - k_t[i, j]) * (k + 1) / substeps, 0.0)
-                _kick(st, f0, f1, n_a, 0.5 * h, m, radius, inertia, offset, w00, w01, w11, k_l,
-                      m_l, mu_l, o, True)  # fmt: skip
-                # drift: the patch follows the surface (or layer) while it grips
-                c0 = (st[10] if m_l > 0.0 else st[5]) - (st[0] - radius * st[3])
-                c1 = (st[11] if m_l > 0.0 else st[6]) - (st[1] + radius * st[2])
-                if m_l > 0.0:
-                    st[8] += h * (st[10] - st[5])
-                    st[9] += h * (st[11] - st[6])
-                    peak = max(peak, st[8] * st[8] + st[9] * st[9])  # squared
-                g0, g1, stored = _spring(st, k_a, k_b, h, c0, c1, secant, o)
+                # N and k_t linear over the step (k_t >= 0: falling to 0 it may round to
+                # -1 ulp of its last value)
+                n_a, k_a = n_b, k_b
+                n_b = n_j + dn * ((k + 1) * fraction)
+                k_b = max(k_j + dk * ((k + 1) * fraction), 0.0)
+                _kick(st, n_a, 0.5 * h, m, radius, inertia, offset, inv, lay, solve, share, o, True)
+                # drift: each patch follows what it sits on while it grips
+                b0 = st[_V] - radius * st[_W + 1]  # the ball's contact point
+                b1 = st[_V + 1] + radius * st[_W]
+                if woven:
+                    st[_S] += h * (st[_L] - st[_U])
+                    st[_S + 1] += h * (st[_L + 1] - st[_U + 1])
+                    peak = max(peak, st[_S] * st[_S] + st[_S + 1] * st[_S + 1])  # squared
+                gripped = n_b > 0.0
                 damp = 2.0 * zeta * math.sqrt(k_b * m_t)
-                g0, g1 = g0 + damp * c0, g1 + damp * c1  # the dashpot, while it grips
                 limit = mu[i] * max(n_b, 0.0)
-                trial = math.sqrt(g0 * g0 + g1 * g1)
-                st[14] = 0.0
-                if trial > limit:  # it slides: the spring carries the friction force
-                    cut = limit / trial
-                    g0 *= cut
-                    g1 *= cut
-                    st[14] = 1.0 if limit > 0.0 else 0.0
-                    _hold(st, g0, g1, k_b, secant)
-                elif n_b > 0.0:
+                for p in range(2):
+                    if share[p] == 0.0:
+                        continue
+                    c0 = (st[_U] if p == 0 or not woven else st[_L]) - b0
+                    c1 = (st[_L + 1] if p == 0 and woven else st[_U + 1]) - b1
+                    slides = _patch(st, p, k_a, k_b, h, c0, c1, secant, damp, limit, share[p], o)
+                    gripped = gripped and not slides
+                if gripped:
                     o[GRIP_TIME] += h
-                # the work the contact took in the drift, less what its spring kept
-                taken = 0.5 * h * ((f0 + g0) * c0 + (f1 + g1) * c1)
-                o[SLIP_LOSS] += taken - (_stored(st, k_b, secant) - stored)
-                f0, f1 = g0, g1
+                a, b = _FORCE, _FORCE + 2
+                f0 = share[0] * st[a] + share[1] * st[b]
+                f1 = share[0] * st[a + 1] + share[1] * st[b + 1]
                 along = f0 * d0 + f1 * d1
                 if along != 0.0:
                     if sign != 0.0 and along * sign < 0.0:
                         o[REVERSALS] += 1.0
                     sign = along
-                _kick(st, f0, f1, n_b, 0.5 * h, m, radius, inertia, offset, w00, w01, w11, k_l,
-                      m_l, mu_l, o, False)  # fmt: skip
-        o[V_ALONG], o[V_ACROSS], o[W_ALONG], o[W_ACROSS] = st[0], st[1], st[2], st[3]
-        o[W_NORMAL] = w[i, 2]
+                _kick(
+                    st, n_b, 0.5 * h, m, radius, inertia, offset, inv, lay, solve, share, o, False
+                )
+        o[V_ALONG], o[V_ACROSS] = st[_V], st[_V + 1]
+        o[W_ALONG], o[W_ACROSS], o[W_NORMAL] = st[_W], st[_W + 1], w[i, 2]
         o[LAYER_PEAK] = math.sqrt(peak)
-        o[U_ALONG], o[U_ACROSS], o[P_ALONG], o[P_ACROSS] = st[5], st[6], st[12], st[13]
-        o[SURFACE_ENERGY] = 0.5 * (st[12] * st[5] + st[13] * st[6])
-        o[LAYER_ENERGY] = 0.5 * m_l * (st[10] ** 2 + st[11] ** 2)
-        o[LAYER_ENERGY] += 0.5 * k_l * (st[8] ** 2 + st[9] ** 2)
-        o[ENERGY_OUT] = 0.5 * m * (st[0] ** 2 + st[1] ** 2) + o[SURFACE_ENERGY]
-        o[ENERGY_OUT] += 0.5 * inertia * (st[2] ** 2 + st[3] ** 2) + o[LAYER_ENERGY]
-        o[ENERGY_OUT] += _stored(st, k_t[i, steps - 1], secant)
+        o[U_ALONG], o[U_ACROSS], o[P_ALONG], o[P_ACROSS] = st[_U], st[_U + 1], st[_P], st[_P + 1]
+        o[SURFACE_ENERGY] = 0.5 * (st[_P] * st[_U] + st[_P + 1] * st[_U + 1])
+        for d in range(2):
+            o[LAYER_ENERGY] += 0.5 * lay[LAYER_MASS + d] * st[_L + d] ** 2
+            o[LAYER_ENERGY] += 0.5 * lay[LAYER_STIFFNESS + d] * st[_S + d] ** 2
+        o[ENERGY_OUT] = 0.5 * m * (st[_V] ** 2 + st[_V + 1] ** 2) + o[SURFACE_ENERGY]
+        o[ENERGY_OUT] += 0.5 * inertia * (st[_W] ** 2 + st[_W + 1] ** 2) + o[LAYER_ENERGY]
+        for p in range(2):
+            o[ENERGY_OUT] += share[p] * _stored(st, p, k_t[i, stop], secant)
 
 
 @njit(cache=True, inline="always")
-def _spring(st, k_a, k_b, h, c0, c1, secant, out):
-    """The patch's spring moved by the drift (c0, c1) [m/s] over ``h`` [s] as its stiffness
-    goes from ``k_a`` to ``k_b`` [N/m]: its trial elastic force, and the energy it held at
-    the drift's start at ``k_b`` (what the stiffness change added, at the start's state,
-    is booked as :data:`STIFFNESS_WORK`: work of the normal motion on the spring).
+def _patch(st, p, k_a, k_b, h, c0, c1, secant, damp, limit, share, out) -> bool:
+    """Patch ``p`` moved by the drift (c0, c1) [m/s] over ``h`` [s] as its stiffness goes
+    from ``k_a`` to ``k_b`` [N/m] (per unit share): its spring and dashpot ``damp`` [N s/m]
+    while it grips, cut back to friction's ``limit`` [N] when they would beat it (True: it
+    slides).  Its force per unit share goes to the state; what the stiffness change added,
+    at the start's state, is booked as :data:`STIFFNESS_WORK` (work of the normal motion on
+    the spring), the work the patch took in the drift less what its spring kept as
+    :data:`SLIP_LOSS`, both times ``share``.
     """
-    before = _stored(st, k_a, secant)
-    stored = _stored(st, k_b, secant)
-    out[STIFFNESS_WORK] += stored - before
-    if secant:  # st[4], st[7] hold the displacement xi
-        st[4] += h * c0
-        st[7] += h * c1
-        return k_b * st[4], k_b * st[7], stored
-    st[4] += k_b * h * c0  # st[4], st[7] hold the elastic force
-    st[7] += k_b * h * c1
-    return st[4], st[7], stored
-
-
-@njit(cache=True, inline="always")
-def _hold(st, g0, g1, k, secant):
-    """The spring set to carry the force (g0, g1) [N] at stiffness ``k`` [N/m]."""
-    if not secant:
-        st[4], st[7] = g0, g1
-    elif k > 0.0:
-        st[4], st[7] = g0 / k, g1 / k
-
-
-@njit(cache=True, inline="always")
-def _stored(st, k, secant) -> float:
-    """Energy [J] in the patch's spring at stiffness ``k`` [N/m]."""
+    x = _SPRING + 2 * p
     if secant:
-        return 0.5 * k * (st[4] * st[4] + st[7] * st[7])
-    return 0.5 * (st[4] * st[4] + st[7] * st[7]) / k if k > 0.0 else 0.0
+        held = 0.5 * (st[x] * st[x] + st[x + 1] * st[x + 1])
+        before, stored = k_a * held, k_b * held
+    else:
+        before, stored = _stored(st, p, k_a, secant), _stored(st, p, k_b, secant)
+    out[STIFFNESS_WORK] += share * (stored - before)
+    if secant:  # the spring holds the displacement xi
+        st[x] += h * c0
+        st[x + 1] += h * c1
+        g0, g1 = k_b * st[x], k_b * st[x + 1]
+    else:  # it holds the elastic force
+        st[x] += k_b * h * c0
+        st[x + 1] += k_b * h * c1
+        g0, g1 = st[x], st[x + 1]
+    g0, g1 = g0 + damp * c0, g1 + damp * c1  # the dashpot, while it grips
+    trial = math.sqrt(g0 * g0 + g1 * g1)
+    slides = trial > limit
+    st[_SLIDES + p] = 0.0
+    if slides:  # it slides: the spring carries the friction force
+        cut = limit / trial
+        g0 *= cut
+        g1 *= cut
+        st[_SLIDES + p] = 1.0 if limit > 0.0 else 0.0
+        if not secant:
+            st[x], st[x + 1] = g0, g1
+        elif k_b > 0.0:
+            st[x], st[x + 1] = g0 / k_b, g1 / k_b
+    f = _FORCE + 2 * p
+    taken = 0.5 * h * ((st[f] + g0) * c0 + (st[f + 1] + g1) * c1)
+    out[SLIP_LOSS] += share * (taken - (_stored(st, p, k_b, secant) - stored))
+    st[f], st[f + 1] = g0, g1
+    return slides
+
+
+@njit(cache=True, inline="always")
+def _stored(st, p, k, secant) -> float:
+    """Energy [J] per unit share in patch ``p``'s spring at stiffness ``k`` [N/m]."""
+    x = _SPRING + 2 * p
+    if secant:
+        return 0.5 * k * (st[x] * st[x] + st[x + 1] * st[x + 1])
+    return 0.5 * (st[x] * st[x] + st[x + 1] * st[x + 1]) / k if k > 0.0 else 0.0

@@ -345,11 +345,21 @@ class Stroke:
         return Flight(velocity, basis.T @ spin)
 
 
-_SERVE_HEAD = 40.0  # [m/s] one head speed for the three serves (an assumption)
+_SERVE_HEAD = 38.0  # [m/s] Gordon: "slightly more than 85 mph" 0.01 s before contact
 _TOSS = {"ball_speed": 1.5, "ball_angle": math.radians(60.0)}  # the tossed ball (assumption)
 _KNUDSON = {"head_speed": 49 * MPH, "ball_speed": 45 * MPH}  # a forehand (sources below)
 _RALLY = {"ball_angle": math.radians(10.0), "topspin": 200.0}  # incoming ball (assumption)
 _DEG = math.radians
+_KWON_PATH = _DEG(18.6)  # [rad] Kwon et al. 2017: head path 18.6 +/- 4.3 deg above horizontal
+_TOUR_FOREHAND = {
+    # Landlinger et al. 2010: ATP forehands' peak horizontal racket speed 33.1 m/s, taken as
+    # the head's horizontal speed at impact; along Kwon's path, its speed is that / cos(path)
+    "head_speed": 33.1 / math.cos(_KWON_PATH),
+    "path_angle": _KWON_PATH,
+    "face_angle": 0.0,  # vertical: an assumption (Kwon's 80.4 deg has no stated reference)
+    "ball_speed": 20.0,  # Landlinger's ball machine, "about 20 m/s"
+    "ball_angle": _DEG(10.0),  # descending: an assumption
+}
 
 STROKES = {
     "flat-serve": Stroke(_SERVE_HEAD, 0.0, _DEG(-7.0), **_TOSS, shaft="vertical"),
@@ -357,38 +367,46 @@ STROKES = {
         _SERVE_HEAD, _DEG(5.0), _DEG(-8.0), **_TOSS, swing_across=_DEG(-25.0), shaft="vertical"
     ),
     "kick-serve": Stroke(
-        _SERVE_HEAD, _DEG(30.0), _DEG(-12.0), **_TOSS, swing_across=_DEG(-35.0), shaft="vertical"
+        _SERVE_HEAD, _DEG(5.0), 0.0, **_TOSS, swing_across=_DEG(-45.0), shaft="vertical"
     ),
-    "topspin-forehand": Stroke(path_angle=_DEG(18.0), face_angle=_DEG(4.0), **_KNUDSON, **_RALLY),
+    "topspin-forehand": Stroke(**_TOUR_FOREHAND),
     "flat-forehand": Stroke(path_angle=_DEG(5.0), face_angle=_DEG(4.0), **_KNUDSON, **_RALLY),
     "slice-backhand": Stroke(15.0, _DEG(-15.0), _DEG(12.0), 45 * MPH, **_RALLY),
     "volley": Stroke(5.0, 0.0, _DEG(5.0), 20.0, _DEG(5.0), topspin=200.0),
 }
 """Typical strokes of a right-handed player, by name (:data:`STROKE_SOURCES` says where each
-number comes from).  The face angles are assumptions, each chosen so that a crude estimate
-launches the ball as the stroke would (serves from 2.7 m a few degrees below horizontal): the
-ball leaving along n at 0.4 times its incoming normal speed plus 1.4 times the racket's
-(an apparent COR of 0.4, TWU "Racquet Control"), its sliding velocity on the face cut to half
-(to 0.7 on the kick serve's glancing contact, which slides throughout: Cross, Sports Eng. 6
-(2003)); launches -5, -4, -1 deg (serves), +6, +3 (forehands), +6 (slice), +4 deg (volley)."""
+number comes from: the serves' head speed is Gordon's, the topspin forehand's Landlinger's
+tour players' along Kwon's measured path, the kick serve's geometry Cross's description).
+Where no measurement exists the face angles are assumptions, each chosen so that a crude
+estimate launches the ball as the stroke would (serves from 2.7 m a few degrees below
+horizontal): the ball leaving along n at 0.4 times its incoming normal speed plus 1.4 times
+the racket's (an apparent COR of 0.4, TWU "Racquet Control"), its sliding velocity on the
+face cut to half; the topspin forehand's and the kick serve's faces are vertical, the
+neutral choice (their sources describe the path, not the face)."""
 
 STROKE_SOURCES = {
-    "flat-serve": "head speed 40 m/s, path 0, toss 1.5 m/s falling at 60 deg: assumptions "
-    "(high-performance fast serves average 31.0 m/s at the head centre: Elliott, Marshall & "
-    "Noffal, J. Appl. Biomech. 11 (1995) 433); face 7 deg closed: assumed (STROKES).",
+    "flat-serve": "head speed 38 m/s: Gordon, 'The serve and tennis science', "
+    "tennisplayer.net ('slightly more than 85 mph' 0.01 s before contact, nine NCAA Division I "
+    "servers); path 0, toss 1.5 m/s falling at 60 deg, face 7 deg closed: assumptions.",
     "slice-serve": "the flat serve's head speed and toss; path +5 deg, swing_across -25 deg "
     "(the racket brushes the ball's back to the right: sidespin curving it to the left, a "
     "right-hander's slice), face 8 deg closed: assumptions.",
-    "kick-serve": "the flat serve's head speed and toss; path +30 deg, swing_across -35 deg "
-    "(up and to the right), face 12 deg closed: assumptions. The slip is then more up the "
-    "face than across it, though kick serves spin mainly sidespin, topspin typically below "
-    "1000 rpm (Cross, TWU 'Physics of the tennis kick serve', 2011).",
-    "topspin-forehand": "head 49 mph (21.9 m/s, teaching pros) rising at 18 deg, ball at 45 "
-    "mph (20.1 m/s): Knudson, as summarised by Yandell, 'Comparing the open and closed "
-    "stances', tennisplayer.net. Face 4 deg open, ball descending at 10 deg with 200 "
-    "rad/s of topspin: assumptions.",
-    "flat-forehand": "Knudson's head and ball speeds (as the topspin forehand); path +5 deg, "
-    "face 4 deg open, ball descending at 10 deg with 200 rad/s of topspin: assumptions.",
+    "kick-serve": "the flat serve's head speed and toss; Cross, 'Physics of the tennis kick "
+    "serve' (TWU 2011, Sports Technology 2012): the racket near the top of its arc (face "
+    "vertical: an assumption), an upward approach 'much smaller than' a forehand's (+5 deg "
+    "against Kwon's 18.6: an assumption), mostly across the ball (swing_across -45 deg, the "
+    "least angle at which it moves as much across as forward: an assumption).",
+    "topspin-forehand": "tour players' kinematics: head's horizontal speed 33.1 m/s "
+    "(Landlinger et al., J. Sports Sci. Med. 9 (2010): ATP players' peak horizontal racket "
+    "speed) along a path rising 18.6 deg (Kwon et al., J. Sports Sci. Med. 16 (2017), "
+    "collegiate players), 34.9 m/s along it; ball from Landlinger's machine at about 20 m/s, "
+    "descending at 10 deg, no spin: assumptions (the machine's spin is not stated); face "
+    "vertical: an assumption (Kwon's 80.4 +/- 3.6 deg 'impact angle' has a reference not in "
+    "the stored text).",
+    "flat-forehand": "Knudson's head and ball speeds (teaching pros: head 49 mph, 21.9 m/s; "
+    "ball 45 mph, 20.1 m/s; Knudson as summarised by Yandell, 'Comparing the open and closed "
+    "stances', tennisplayer.net); path +5 deg, face 4 deg open, ball descending at 10 deg "
+    "with 200 rad/s of topspin: assumptions.",
     "slice-backhand": "ball at 45 mph (Knudson's forehands); head 15 m/s falling at 15 deg, "
     "face 12 deg open, ball descending at 10 deg with 200 rad/s of topspin: assumptions.",
     "volley": "head 5 m/s, path 0, face 5 deg open, ball at 20 m/s descending at 5 deg with "

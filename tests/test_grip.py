@@ -162,3 +162,35 @@ def test_the_substeps_need_a_stiffness():
     with pytest.raises(ValueError, match="stiffness history"):
         stable_substeps(BallSpin(), MASS, DT)
     assert stable_substeps(BallSpin(), MASS, DT, stiffness=[0.0, 6e4]) >= 1
+
+
+def test_each_family_of_strings_moves_only_across_its_own_length():
+    """Issue 44: slip across the mains drives the mains, not the crosses: a purely across
+    slip gives the same outcome bit for bit whatever the crosses' spring and mass, and
+    another with the mains'; with the whole grip on the crosses (share 0), which lie across
+    and are held there by the frame, it is a surface without a layer."""
+    force, _ = _history(8.0)
+
+    def across(layer):
+        return slide(force, DT, MASS, BallSpin(), 0.45, [0.0, 6.0], [300.0, 0.0, 0.0],
+                     layer=layer, law=LAW, substeps=8)  # fmt: skip
+
+    base = across(Layer((3e4, 3e4), (1e-3, 1e-3), 0.1, 0.08, 20.0))
+    crosses = across(Layer((9e4, 3e4), (5e-3, 1e-3), 0.1, 0.08, 20.0))
+    mains = across(Layer((3e4, 9e4), (1e-3, 5e-3), 0.1, 0.08, 20.0))
+    assert np.array_equal(base.spin, crosses.spin) and np.array_equal(
+        base.velocity, crosses.velocity
+    )
+    assert not np.allclose(base.spin, mains.spin, rtol=1e-6, atol=0.0)
+    assert np.all(base.velocity[:, 0] == 0.0) and np.all(base.spin[:, 1] == 0.0)
+    bare = across(None)
+    on_crosses = across(Layer(3e4, 1e-3, 0.1, share=0.0))
+    assert np.allclose(on_crosses.spin, bare.spin, rtol=1e-12, atol=1e-9)
+    assert on_crosses.layer_peak[0] == 0.0
+
+
+def test_kinetic_friction_above_static_is_refused():
+    force, _ = _history(2.0)
+    with pytest.raises(ValueError, match="layer kinetic friction must be in"):
+        slide(force, DT, MASS, BallSpin(), 0.45, [1.0, 0.0], [0.0, 0.0, 0.0],
+              layer=Layer(3e4, 1e-3, 0.1, kinetic=0.2), law=LAW)  # fmt: skip

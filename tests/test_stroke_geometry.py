@@ -173,12 +173,14 @@ def test_the_presets():
         }
     )
     serves = [s for name, s in STROKES.items() if name.endswith("serve")]
-    assert {s.head_speed for s in serves} == {40.0}
+    assert {s.head_speed for s in serves} == {38.0}  # Gordon's "slightly more than 85 mph"
     assert {s.shaft for s in serves} == {"vertical"}
     others = [s for name, s in STROKES.items() if not name.endswith("serve")]
     assert {s.shaft for s in others} == {"horizontal"}
-    assert STROKES["topspin-forehand"].head_speed == pytest.approx(21.9, abs=0.01)  # 49 mph
-    assert STROKES["topspin-forehand"].path_angle == pytest.approx(math.radians(18.0))
+    forehand = STROKES["topspin-forehand"]  # Landlinger's 33.1 m/s along Kwon's 18.6 deg
+    assert forehand.head_speed * math.cos(forehand.path_angle) == pytest.approx(33.1, abs=1e-12)
+    assert forehand.path_angle == pytest.approx(math.radians(18.6))
+    assert STROKES["flat-forehand"].head_speed == pytest.approx(21.9, abs=0.01)  # 49 mph
     for name, stroke in STROKES.items():
         assert stroke.face_frame().closing_speed > 0, name
         assert "assum" in STROKE_SOURCES[name], name

@@ -29,9 +29,11 @@ from racket.strings.sideways import BedSideways, sideways
 from racket.stroke import LIMITS
 
 GRIP_SUBSTEPS = 2
-"""Sub-steps of the tangential contact per step of the normal one [-]: 2 keep the change of
-spin within 2e-4 of 32 sub-steps over the Pure Drive's strings, free and clamped (4: 1.4e-4;
-``tests/test_oblique.py``), at a fifth of a head-on sweep's time."""
+"""Sub-steps of the tangential contact per step of the normal one [-]: the strings'
+stick-slip falls at sub-step boundaries, so the spin converges at first order; 2 keep the
+change of spin within 1e-2 of 128 sub-steps over the Pure Drive's strings, free and clamped
+(about 10 rpm in 2000; ``tests/test_oblique.py`` fits the order), at a fifth of a head-on
+sweep's time."""
 
 
 @dataclass(frozen=True)

@@ -26,6 +26,8 @@ class StrokeImpact:
         The stroke.
     position : float
         The impact point [m from the tip].
+    offset : float
+        Its distance from the long axis [m, + towards 3 o'clock].
     oblique : ObliqueImpact
         The impact on the face, in the frame of the racket's motion before.
     flight : Flight
@@ -34,6 +36,7 @@ class StrokeImpact:
 
     stroke: Stroke
     position: float
+    offset: float
     oblique: ObliqueImpact
     flight: Flight
 
@@ -65,6 +68,7 @@ def hit(
     ball: Ball,
     position: float | None = None,
     *,
+    offset: float | None = None,
     side: BedSideways | None = None,
 ) -> StrokeImpact:
     """The ball's flight after ``stroke`` with ``racket`` at ``position``.
@@ -84,6 +88,9 @@ def hit(
         The ball.
     position : float, optional
         The impact point [m from the tip]; default the string bed's centre.
+    offset : float, optional
+        Its distance from the long axis [m, + towards 3 o'clock] (pros hit most forehands
+        1/2-1 in off it: Yandell, ``data/measurements.md`` sec. 9); default on the axis.
     side : BedSideways, optional
         The bed sideways (default: the racket's bed's, :func:`racket.strings.sideways.sideways`).
 
@@ -99,11 +106,13 @@ def hit(
     if position is not None:
         position = finite("position", position, "m from the tip")
     position = racket.strings.center if position is None else position
+    if offset is not None:
+        offset = finite("offset", offset, "m from the long axis")
     frame = stroke.face_frame()
     oblique = oblique_impact(
         racket, ball, position, frame.closing_speed, slip_velocity=frame.slip_velocity,
-        spin=frame.spin, side=side,
+        spin=frame.spin, side=side, offset=offset or None,
     )  # fmt: skip
     velocity = oblique.velocity[0]
     flight = stroke.to_world(velocity[:2], velocity[2], oblique.spin[0])
-    return StrokeImpact(stroke, position, oblique, flight)
+    return StrokeImpact(stroke, position, offset or 0.0, oblique, flight)

@@ -1,39 +1,37 @@
-"""The string bed sideways (issue 36): the friction the ball meets on the strings, and the
-mains that slide over the crosses and spring back ("snapback").
+"""The string bed sideways (issues 36, 44): the friction the ball meets on the strings, and
+the strings that slide over each other and spring back ("snapback").
 
 A ball that meets the strings obliquely pulls the strings under it sideways through
-ball-string friction.  The mains under the ball are held on the crosses by string-string
-friction, pressed together by the ball's own normal force, and pulled back to their places
-by their tension.  While the ball's pull beats that friction they slide; as the ball's push
-fades they spring back, and throw the ball's underside back: the spin it leaves with grows
-(Lindsey, TWU "String movement and spin"; ``data/measurements.md`` sec. 6).  In
-:mod:`ball.grip` this is the *layer*: a mass held by a spring and by Coulomb friction.
-
-**The picture.**  Only the mains' segments under the ball move: outside the contact each
-main is held where it crosses the crosses, so a moved segment is joined to its place by a
-short straight ramp on each side, and its tension T pulls it back with 2 T / r (r the
-ramp's length).  The mains under the ball are pressed onto the crosses by the ball's force,
-which passes through the crossings under it, and slide when the ball's pull beats that
-friction.
+ball-string friction.  The strings cross: at half the crossings under the ball a main lies
+on top, at the other half a cross (:data:`SHARE`), so the ball grips both families, each
+through its own patch (:class:`ball.grip.Layer`).  A string moves only across its own
+length: slip across the mains drives the mains, slip along them the crosses, oblique slip
+both; along its length a string is held by its tension at the frame, so there the patch
+meets the frame.  At the crossings the mains and crosses are pressed together by the
+weave's own preload and by the ball's force, and stick (static friction) until the ball's
+pull beats that hold, then slide (kinetic friction); their tension pulls them back, and as
+the ball's push fades they spring back and throw the ball's underside back: the spin it
+leaves with grows (Lindsey, TWU "String movement and spin"; ``data/measurements.md`` sec. 6).
 
 The numbers and what they rest on (``s_c`` the crosses' spacing, bed length / (crosses + 1),
-``s_m`` the mains', bed width / (mains + 1); 16.5 and 14.6 mm in a 16x19, 100 in^2 head):
+``s_m`` the mains', bed width / (mains + 1); 16.5 and 14.6 mm in a 16x19, 100 in^2 head;
+T the bed's tension, d the strings' mean gauge):
 
-* ball-string friction: the material's TWU median (:attr:`Material.ball_friction`);
-* main-cross friction: the material's string-string median (:attr:`Material.friction`), or
-  :data:`LUBRICATED_FRICTION`;
-* the pressing force: :data:`PRESS_RATIO` times the ball's normal force;
-* the mains that move: :data:`CONTACT_WIDTH` / s_m of them (2.7);
-* their stiffness: 2 T / r each, r = :data:`HOLD_SPACINGS` x s_c (28 kN/m a main at 52 lb,
-  77 kN/m for the 2.7; T the bed's tension);
-* their mass: each main's segment under the ball (:data:`CONTACT_WIDTH` long) and a third
-  of each ramp (a straight ramp's modal mass for its end's motion), times its mass per
-  length (0.24 g for polyester 1.25 mm): the snapback's own period, 2 pi sqrt(m / k), is
-  0.35 ms, and does not depend on how many mains move.
-
-What the picture leaves out (see :data:`HOLD_SPACINGS` and :data:`PRESS_RATIO`): the
-weave's own pressure at the crossings (a few tens of N each), which a friction limit that is
-a multiple of the ball's force cannot carry, and the crosses' share of the ball's grip.
+* ball-string friction: the materials' TWU median (:attr:`Material.ball_friction`);
+* the crossings' static friction: the mains' string-string median (TWU's "static
+  friction", :attr:`Material.friction`), or :data:`LUBRICATED_FRICTION`; kinetic
+  friction :data:`KINETIC_RATIO` of it;
+* the pressing force: the weave's preload, 4 T d / (s_c + s_m) a crossing (37 N at 52 lb)
+  over the pi (w / 2)^2 / (s_c s_m) crossings under the contact (5.2), and
+  :data:`PRESS_RATIO` times the ball's normal force;
+* the strings that move: :data:`CONTACT_WIDTH` / s_m mains (2.7) and / s_c crosses (2.4);
+* their mass: each string's fundamental sideways mode, a string of length L held at the
+  frame, rho L / 2 at its middle (0.74 g for the 2.7 mains of a polyester 16x19);
+* their spring: set on the measured snapback, not on spin (:data:`SNAPBACK_TIME`): the
+  mains, loaded by their share of a tennis ball's grip (:data:`BALL_TANGENTIAL_MASS`), go
+  out and back in 2 ms, half a period: k = pi^2 (m + share m_t) / t^2 (27 kN/m); the
+  crosses likewise with the rest of the grip (**an assumption**: their snapback was not
+  measured).
 """
 
 from __future__ import annotations
@@ -47,27 +45,39 @@ from common.checks import in_range, non_negative, positive
 CONTACT_WIDTH = 0.04
 """Width [m] of the ball's contact on the strings, across the mains and along them.
 **An assumption**: a ball of radius R = 33.5 mm flattened by 6-10 mm on the strings at 20-30
-m/s touches them over 2 sqrt(2 R delta) = 4-5 cm; range 3-5 cm.  The number of mains that
-move is this over the mains' spacing; the stiffness and the mass both scale with it, so the
-snapback's period does not."""
+m/s touches them over 2 sqrt(2 R delta) = 4-5 cm; range 3-5 cm.  The number of strings that
+move is this over their spacing; their stiffness, mass and the preload all scale with it,
+so the snapback's period does not."""
 
-HOLD_SPACINGS = 1.0
-"""Length of the ramp from the moved segment to where the crosses hold the main, in cross
-spacings [-].  **An assumption**: the first crossing outside the contact is 0-1 spacing
-from its edge, the second 1-2 (range 0.5-2).  The weave's friction alone holds far less:
-a crossing is pressed by about 4 T d / (s_c + s_m) (the main and the cross each bent by
-their diameter d over the spacing: 37 N at 52 lb), which at the polyester's 0.086 holds a
-ramp of one spacing only up to about 0.2 mm of slide (T s / r = mu 4 T d / (s_c + s_m)); a
-ramp held by friction alone grows with the slide (1.5-2.5 spacings at 1-3 mm, with its
-force), so the picture counts on the crossings' notches and the neighbouring mains."""
+SHARE = 0.5
+"""The share [-] of the ball's grip on the mains (the rest on the crosses).  **An
+assumption** from the weave's geometry: a main lies on top at alternate crossings, so the
+ball touches mains and crosses about equally; range 0.4-0.6
+(``tests/test_spin_strings.py`` reports how the spin moves over it)."""
+
+KINETIC_RATIO = 0.8
+"""Kinetic over static string-string friction [-].  **An assumption**: TWU measures one
+coefficient (its "static friction"); polymer on polymer slides at 0.6-1.0 of its static
+coefficient (range used in ``tests/test_spin_strings.py``)."""
 
 PRESS_RATIO = 1.0
-"""The force pressing the mains under the ball onto the crosses, over the ball's normal force
-[-].  **An assumption**: the ball touches the strings at the crossings' upper strings and
-presses them onto the lower ones, so its whole force passes through crossings (range 1-1.5:
-the weave's own pressure, about 37 N a crossing at 52 lb over the 5 crossings under a 4 cm
-contact, is 0.2-0.3 of the ball's peak force at 25 m/s; :mod:`ball.grip`'s limit, a multiple
-of the ball's force, cannot carry a pressure that is there before the ball and after it)."""
+"""The share of the ball's normal force that presses the crossings under it [-].  **An
+assumption**: the ball touches the strings at the crossings' upper strings and presses them
+onto the lower ones, so its whole force passes through crossings (range 1-1.5)."""
+
+SNAPBACK_TIME = 2e-3
+"""The measured snapback [s], which sets the strings' return spring (calibration): the mains
+"slide sideways and spring back in about 2 ms, half or less of the time the ball is on the
+strings" (Lindsey, quoted by Speckman, tennisplayer.net; ``data/measurements.md`` sec. 6).
+Out and back is half a period of the mains loaded by the ball's grip (they move while the
+ball is on them).  "About" **taken as** 1.5-2.5 ms (``tests/test_spin_strings.py`` reports
+the spin over that range)."""
+
+BALL_TANGENTIAL_MASS = 0.0575 * 0.55 / 1.55
+"""The tangential effective mass [kg] of the tennis ball whose grip loads the mains in the
+snapback's measurement, m I / (I + m R^2) with m = 57.5 g (ITF's 56.0-59.4 g, mid) and
+I = 0.55 m R^2 (Cross 2002, ``data/measurements.md`` sec. 6): the calibration's conditions,
+so the spring is the bed's, whatever ball then meets it."""
 
 LUBRICATED_FRICTION = 0.04
 """String-string coefficient of friction [-] of lubricated strings.  **An assumption**: no
@@ -89,38 +99,57 @@ class BedSideways:
     ball_friction : float
         Ball-string coefficient of friction [-], in [0, 2].
     string_friction : float
-        Main-cross coefficient of friction [-], in [0, 2] (times :data:`PRESS_RATIO` the
-        ball's force, the limit of the mains' hold on the crosses).
-    stiffness : float
-        Spring [N/m] pulling the mains back, >= 0.
-    mass : float
-        The mains' moving mass sideways [kg]; 0 for a bed that does not slide (stiff
-        sideways).
+        Static string-string coefficient of friction [-] at the crossings, in [0, 2].
+    stiffness : (float, float)
+        Springs [N/m] pulling the strings back, (along, across): the crosses' and the
+        mains', each >= 0.
+    mass : (float, float)
+        Their moving mass sideways [kg], (along, across); (0, 0) for a bed that does not
+        slide (stiff sideways).
+    preload : float
+        The weave's force [N] pressing the crossings under the ball, >= 0.
+    share : float
+        The share [-] of the ball's grip on the mains, in [0, 1].
+    kinetic_ratio : float
+        Kinetic over static string-string friction [-], in [0, 1].
     """
 
     ball_friction: float
     string_friction: float = 0.0
-    stiffness: float = 0.0
-    mass: float = 0.0
+    stiffness: tuple = (0.0, 0.0)
+    mass: tuple = (0.0, 0.0)
+    preload: float = 0.0
+    share: float = SHARE
+    kinetic_ratio: float = KINETIC_RATIO
 
     def __post_init__(self):
-        friction = in_range("ball_friction", self.ball_friction, 0.0, 2.0)
-        object.__setattr__(self, "ball_friction", friction)
-        friction = in_range("string_friction", self.string_friction, 0.0, 2.0)
-        object.__setattr__(self, "string_friction", friction)
-        object.__setattr__(self, "stiffness", non_negative("stiffness", self.stiffness, "N/m"))
-        object.__setattr__(self, "mass", in_range("mass", self.mass, 0.0, 0.05, "kg"))
+        for name in ("ball_friction", "string_friction"):
+            object.__setattr__(self, name, in_range(name, getattr(self, name), 0.0, 2.0))
+        pair = tuple(non_negative("stiffness", k, "N/m") for k in self.stiffness)
+        object.__setattr__(self, "stiffness", pair)
+        object.__setattr__(self, "mass", tuple(in_range("mass", m, 0.0, 0.05, "kg")
+                                               for m in self.mass))  # fmt: skip
+        if len(self.stiffness) != 2 or len(self.mass) != 2:
+            raise ValueError("stiffness and mass must be (along, across) pairs")
+        if self.slides and min(self.mass) == 0.0:
+            raise ValueError("mass must be > 0 kg both ways when the strings slide")
+        object.__setattr__(self, "preload", non_negative("preload", self.preload, "N"))
+        object.__setattr__(self, "share", in_range("share", self.share, 0.0, 1.0))
+        ratio = in_range("kinetic_ratio", self.kinetic_ratio, 0.0, 1.0)
+        object.__setattr__(self, "kinetic_ratio", ratio)
 
     @property
     def slides(self) -> bool:
-        """True when the mains can slide (a mass to move)."""
-        return self.mass > 0.0
+        """True when the strings can slide (a mass to move)."""
+        return max(self.mass) > 0.0
 
     def layer(self) -> Layer | None:
-        """The :class:`ball.grip.Layer` of the sliding mains, or None for a stiff bed."""
+        """The :class:`ball.grip.Layer` of the sliding strings, or None for a stiff bed."""
         if not self.slides:
             return None
-        return Layer(self.stiffness, self.mass, PRESS_RATIO * self.string_friction)
+        kinetic = self.kinetic_ratio * self.string_friction
+        return Layer(self.stiffness, self.mass, self.string_friction, kinetic, self.preload,
+                     PRESS_RATIO, self.share)  # fmt: skip
 
 
 def _spacings(bed) -> tuple[float, float]:
@@ -137,34 +166,54 @@ def _spacings(bed) -> tuple[float, float]:
     return length / (crosses + 1), bed.full_width / (mains + 1)
 
 
-def sideways(bed, lubricated: bool = False, slide: bool = True) -> BedSideways:
+def _family(count: float, length: float, density: float, share: float) -> tuple[float, float]:
+    """Spring [N/m] and mass [kg] of ``count`` strings of ``length`` [m] and ``density``
+    [kg/m] moving sideways, which carry ``share`` [-] of the ball's grip: the mass of their
+    fundamental mode at its middle, the spring that takes them, so loaded, out and back in
+    :data:`SNAPBACK_TIME`.
+    """
+    mass = count * density * length / 2.0
+    loaded = mass + share * BALL_TANGENTIAL_MASS
+    return math.pi**2 * loaded / SNAPBACK_TIME**2, mass
+
+
+def sideways(bed, lubricated: bool = False, slide: bool = True, share: float = SHARE,
+             kinetic_ratio: float = KINETIC_RATIO) -> BedSideways:  # fmt: skip
     """The :class:`BedSideways` of a :class:`racket.StringBed`.
 
     Parameters
     ----------
     bed : StringBed
         The string bed; one described by its stringing (:attr:`StringBed.stringing`, with a
-        tension) gets its material's friction and its mains' tension and mass; any other is
-        stiff sideways, with :data:`STIFF_BALL_FRICTION`.
+        tension) gets its materials' friction and its strings' tension and mass; any other
+        is stiff sideways, with :data:`STIFF_BALL_FRICTION`.
     lubricated : bool, optional
-        Lubricated strings: the main-cross friction is :data:`LUBRICATED_FRICTION`.
+        Lubricated strings: the crossings' friction is :data:`LUBRICATED_FRICTION`.
     slide : bool, optional
-        False: the mains never slide (a stiff-sideways bed, the limit).
+        False: the strings never slide (a stiff-sideways bed, the limit).
+    share, kinetic_ratio : float, optional
+        The grip's share on the mains [-] and kinetic over static string friction [-], as
+        :class:`BedSideways` (:data:`SHARE`, :data:`KINETIC_RATIO`: assumptions).
     """
     stringing = bed.stringing
     if stringing is None or stringing.tension is None:
         return BedSideways(STIFF_BALL_FRICTION)
-    mains = stringing.mains
-    ball_friction = 0.5 * (mains.material.ball_friction + stringing.crosses.material.ball_friction)
+    mains, crosses = stringing.mains, stringing.crosses
+    ball_friction = 0.5 * (mains.material.ball_friction + crosses.material.ball_friction)
     if not slide:
         return BedSideways(ball_friction)
     friction = LUBRICATED_FRICTION if lubricated else mains.material.friction
     cross_spacing, main_spacing = _spacings(bed)
-    moving = CONTACT_WIDTH / main_spacing  # mains under the ball
-    ramp = HOLD_SPACINGS * cross_spacing
-    stiffness = moving * 2.0 * stringing.bed_tension / ramp
-    mass = moving * mains.linear_density * (CONTACT_WIDTH + 2.0 * ramp / 3.0)
-    return BedSideways(ball_friction, friction, stiffness, mass)
+    tension = stringing.bed_tension
+    length = bed.extent[1] - bed.extent[0]
+    k_m, m_m = _family(CONTACT_WIDTH / main_spacing, length, mains.linear_density, share)
+    k_c, m_c = _family(CONTACT_WIDTH / cross_spacing, bed.full_width, crosses.linear_density,
+                       1.0 - share)  # fmt: skip
+    gauge = 0.5 * (mains.gauge + crosses.gauge)
+    crossings = math.pi * (0.5 * CONTACT_WIDTH) ** 2 / (cross_spacing * main_spacing)
+    preload = crossings * 4.0 * tension * gauge / (cross_spacing + main_spacing)
+    return BedSideways(ball_friction, friction, (k_c, k_m), (m_c, m_m), preload, share,
+                       kinetic_ratio)  # fmt: skip
 
 
 def snapback_period(side: BedSideways) -> float:
@@ -176,6 +225,6 @@ def snapback_period(side: BedSideways) -> float:
     side : BedSideways
         The bed sideways.
     """
-    if not side.slides or side.stiffness == 0.0:
+    if not side.slides or side.stiffness[1] == 0.0:
         return math.inf
-    return 2.0 * math.pi * math.sqrt(side.mass / side.stiffness)
+    return 2.0 * math.pi * math.sqrt(side.mass[1] / side.stiffness[1])

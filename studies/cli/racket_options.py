@@ -10,7 +10,7 @@ from __future__ import annotations
 import re
 from dataclasses import replace
 
-from common.checks import KN_AS_N, in_range, shown
+from common.checks import KN_AS_N, M_AS_CM, in_range, shown
 from common.units import GRAVITY, KP_PER_CM
 from racket import DEFAULT_RACKET, GRIPS, STRINGS, SUPPORTS
 from racket.racket import ADDED_MASS_MAX
@@ -288,6 +288,24 @@ def check_offset(args, racket) -> None:
         refuse_unused(args, ("offset",), f"to the racket {args.racket!r}: its roll inertia is "
                       "not modelled, every impact is on the long axis (a spec-sheet racket, "
                       f"such as {DEFAULT_RACKET}, has it)")  # fmt: skip
+
+
+def impact_point(args, racket) -> tuple[float | None, float | None]:
+    """The impact point of ``--position`` [cm from the tip] and ``--offset`` [cm from the
+    long axis, + towards 3 o'clock], each checked on the strings, in m; None where not
+    given (the string centre, the long axis).
+    """
+    position = offset = None
+    if args.position is not None:
+        low, high = (100 * end for end in racket.strings.extent)
+        position = in_range("--position", args.position, low, high, "cm from the tip",
+                            slips=(M_AS_CM,)) / 100  # fmt: skip
+    check_offset(args, racket)
+    if args.offset is not None:
+        half = 50 * racket.strings.full_width
+        offset = in_range("--offset", args.offset, -half, half, "cm from the long axis",
+                          slips=(M_AS_CM,)) / 100  # fmt: skip
+    return position, offset
 
 
 def modes_options(args) -> None:

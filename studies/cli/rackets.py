@@ -9,15 +9,15 @@ import sys
 import textwrap
 
 from beam.beam import MAX_MODES
-from common.checks import M_AS_CM, S_AS_MS, in_range
+from common.checks import S_AS_MS, in_range
 from common.units import KP_PER_CM
 from racket.specs.ra import ra_note
 from studies.cli.files import add_outputs, check_table_and_plot, say_conditions, write_outputs
 from studies.cli.options import _ball_arg, _count, _print_table, _speed
 from studies.cli.racket_options import (
     add_racket_options,
-    check_offset,
     impact_parser,
+    impact_point,
     modes_options,
     racket_conditions,
     racket_from,
@@ -219,16 +219,8 @@ def cmd_feel(args) -> int:
 
     check_table_and_plot(args)
     racket = racket_from(args)
-    position, offset = racket.strings.center, None
-    if args.position is not None:
-        low, high = (100 * end for end in racket.strings.extent)
-        position = in_range("--position", args.position, low, high, "cm from the tip",
-                            slips=(M_AS_CM,)) / 100  # fmt: skip
-    check_offset(args, racket)
-    if args.offset is not None:
-        half = 50 * racket.strings.full_width
-        in_range("--offset", args.offset, -half, half, "cm from the long axis", slips=(M_AS_CM,))
-        offset = args.offset / 100
+    position, offset = impact_point(args, racket)
+    position = racket.strings.center if position is None else position
     duration = in_range("--duration-ms", args.duration_ms, 5.0, 1000.0, "ms", slips=(S_AS_MS,))
     speed = _speed(args, "speed")
     feel = hand_feel(racket, load_ball(args.ball), position, speed, offset=offset,

@@ -12,7 +12,6 @@ from dataclasses import replace
 from common.checks import (
     FASTEST_HEAD,
     FASTEST_STROKE,
-    M_AS_CM,
     SPEED_SLIPS,
     in_range,
     shown,
@@ -27,6 +26,7 @@ from studies.cli.options import _ball_arg, _print_table, _speed_option, _typed, 
 from studies.cli.racket_options import (
     _OnceTrue,
     add_racket_options,
+    impact_point,
     racket_conditions,
     racket_from,
 )
@@ -98,9 +98,11 @@ def add_stroke(sub) -> None:
         metavar="CM",
         help="impact point [cm from the tip] (default: centre of the strings)",
     )
-    p.add_argument("--lubricated", action=_OnceTrue, help="lubricated strings: the mains slide "
-                   "on the crosses more easily")  # fmt: skip
-    p.add_argument("--stiff-bed", action=_OnceTrue, help="mains that never slide sideways (the "
+    p.add_argument("--offset", type=float, metavar="CM", help="impact point's distance from "
+                   "the long axis [cm, + towards 3 o'clock] (default: on the axis)")  # fmt: skip
+    p.add_argument("--lubricated", action=_OnceTrue, help="lubricated strings: mains and crosses "
+                   "slide on each other more easily")  # fmt: skip
+    p.add_argument("--stiff-bed", action=_OnceTrue, help="strings that never slide sideways (the "
                    "limit of a laterally rigid bed)")  # fmt: skip
     add_outputs(p, plot="exit speed against spin")
     p.set_defaults(func=cmd_stroke)
@@ -140,18 +142,14 @@ def _angle(p, flag: str, field: str, what: str, many: bool = False) -> None:
 def cmd_stroke(args) -> int:
     """``racket-impact stroke``."""
     from racket.strings.sideways import sideways
-    from studies.strokes.stroke import bed_words, stroke_table
+    from studies.strokes.stroke import bed_words, spin_note, stroke_table
 
     check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
     racket, ball = racket_from(args), load_ball(args.ball)
     if racket.support == "clamped-head":
         raise ValueError("a stroke needs a racket that moves: --support free or hand-held, "
                          "not clamped-head")  # fmt: skip
-    position = None
-    if args.position is not None:
-        low, high = (100 * end for end in racket.strings.extent)
-        position = in_range("--position", args.position, low, high, "cm from the tip",
-                            slips=(M_AS_CM,)) / 100  # fmt: skip
+    position, offset = impact_point(args, racket)
     strung = racket.strings.stringing
     if strung is None or strung.tension is None:
         how = (
@@ -166,18 +164,22 @@ def cmd_stroke(args) -> int:
                 f"tension is unknown and it is stiff sideways already; {how}"
             )
     if args.lubricated and args.stiff_bed:
-        raise ValueError("--lubricated does not apply with --stiff-bed: mains that never "
-                         "slide do not feel the crosses' friction")  # fmt: skip
+        raise ValueError("--lubricated does not apply with --stiff-bed: strings that "
+                         "never slide do not feel each other's friction")  # fmt: skip
     unit = speed_unit(args, "head_speed", "ball_speed")
     strokes, varied = _strokes(args)
     side = sideways(racket.strings, lubricated=args.lubricated, slide=not args.stiff_bed)
     centre = position is None
     where = 100 * (racket.strings.center if centre else position)
     said = f"hit at {where:.1f} cm from the tip" + (" (the string centre)" if centre else "")
+    if offset:
+        said += f", {100 * offset:.1f} cm off the long axis"
+    note = spin_note(strokes)
     conditions = say_conditions(
         f"{racket_conditions(args, racket)}, {said}, {bed_words(side, args.lubricated)}"
+        + (f"; {note}" if note else "")
     )
-    table = stroke_table(strokes, racket, ball, position, side, unit)
+    table = stroke_table(strokes, racket, ball, position, side, unit, offset)
     _show(table, unit, varied)
     if args.out:
         write_table(table, args.out)

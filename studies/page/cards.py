@@ -9,10 +9,9 @@ from __future__ import annotations
 from shiny import ui
 
 from common.units import IN2, MPH
-from racket import STROKES
 from racket.stroke import RPM
 from studies.face.maps import SWEET_FRACTION
-from studies.page.strokes import PAGE_GROUNDSTROKE
+from studies.page.strokes import GROUNDSTROKE_RATIO, PAGE_GROUNDSTROKE
 
 SIDES = ("A", "B")
 """The page's rackets."""
@@ -148,13 +147,13 @@ def headline_cards(r, swing_mph: float):
     groundstroke = _metric(
         "card_groundstroke",
         "Groundstroke: speed and spin",
-        f"a {PAGE_GROUNDSTROKE} at Knudson's {STROKES[PAGE_GROUNDSTROKE].head_speed / MPH:.0f} "
-        "mph head speed (the preset's, not the page's)",
+        f"a {PAGE_GROUNDSTROKE} at {GROUNDSTROKE_RATIO * swing_mph:.0f} mph head speed (the "
+        f"page's times {GROUNDSTROKE_RATIO:.2f}, the presets' ratio)",
         ["speed [mph]", "spin [rpm]", "launch [deg]"],
         pick("forehand_mph", "forehand_spin_rpm", "forehand_launch_deg"),
         [1, 0, 1],
         [mph, rpm, None],
-        small=f"launch above the horizontal; {said['groundstroke']}",
+        small=f"spin < 0: backspin; launch above the horizontal; {said['groundstroke']}",
     )
     power = _metric(
         "card_power",

@@ -1,7 +1,7 @@
 """The interactive page's strokes with spin (issue 36): a flat and a kick serve at the page's
-racket-head speed, and a topspin forehand as its preset (Knudson's 49 mph head speed), hit
-by each racket as ``racket-impact stroke`` hits them (:func:`studies.strokes.stroke.stroke_table`:
-at the string centre, the racket free, its mains sliding on dry crosses), and the line
+racket-head speed, and a topspin forehand following it in the presets' ratio, hit by each
+racket as ``racket-impact stroke`` hits them (:func:`studies.strokes.stroke.stroke_table`:
+at the string centre, the racket free, its mains and crosses sliding on dry crossings), and the line
 saying what each card of them was computed for.
 """
 
@@ -16,7 +16,7 @@ from racket import STROKES
 from racket.strings.sideways import sideways
 from racket.stroke import LIMITS, RPM
 from studies.page.conditions import page_conditions
-from studies.strokes.stroke import bed_words, stroke_table
+from studies.strokes.stroke import bed_words, spin_note, stroke_table
 
 PAGE_SERVES = ("flat-serve", "kick-serve")
 """The serves the page hits with spin (:data:`racket.STROKES`), each at the page's head
@@ -24,8 +24,13 @@ speed (``racket-impact stroke flat-serve kick-serve --head-speed-mph``), its pat
 toss the preset's."""
 
 PAGE_GROUNDSTROKE = "topspin-forehand"
-"""The groundstroke the page hits with spin: the preset as it is, at Knudson's 49 mph head
-speed whatever the page's (``racket-impact stroke topspin-forehand``)."""
+"""The groundstroke the page hits with spin: the preset, its head speed following the page's
+in :data:`GROUNDSTROKE_RATIO` (``racket-impact stroke topspin-forehand --head-speed-mph``)."""
+
+GROUNDSTROKE_RATIO = STROKES[PAGE_GROUNDSTROKE].head_speed / STROKES[PAGE_SERVES[0]].head_speed
+"""The page's groundstroke's head speed over its serves' [-] (the page's swing): the
+presets' own ratio, the tour forehand's over the serve's (0.92), so that at the serve
+preset's head speed the page hits the forehand preset as it is."""
 
 STROKE_HEAD_MAX = LIMITS["head_speed"][1]
 """The fastest racket-head speed the page takes [m/s] (134 mph): a :class:`racket.Stroke`'s
@@ -46,7 +51,7 @@ STROKE_COMPARED = (
 
 def page_strokes(swing_mph: float) -> dict:
     """The page's strokes, by preset name: :data:`PAGE_SERVES` at ``swing_mph``,
-    :data:`PAGE_GROUNDSTROKE` as it is.
+    :data:`PAGE_GROUNDSTROKE` at :data:`GROUNDSTROKE_RATIO` times it.
 
     Parameters
     ----------
@@ -54,13 +59,14 @@ def page_strokes(swing_mph: float) -> dict:
         The page's racket-head speed [mph] (the string centre's).
     """
     serves = {name: replace(STROKES[name], head_speed=swing_mph * MPH) for name in PAGE_SERVES}
-    return serves | {PAGE_GROUNDSTROKE: STROKES[PAGE_GROUNDSTROKE]}
+    ground = replace(STROKES[PAGE_GROUNDSTROKE], head_speed=GROUNDSTROKE_RATIO * swing_mph * MPH)
+    return serves | {PAGE_GROUNDSTROKE: ground}
 
 
 def stroke_summary(racket, ball, swing_mph: float) -> dict:
     """The ball after each of :func:`page_strokes` with ``racket`` (at the string centre, the
-    bed's mains sliding on dry crosses: the defaults of :func:`studies.strokes.stroke.stroke_table`
-    and of ``racket-impact stroke``).
+    bed's mains and crosses sliding on dry crossings: the defaults of
+    :func:`studies.strokes.stroke.stroke_table` and of ``racket-impact stroke``).
 
     Parameters
     ----------
@@ -75,7 +81,8 @@ def stroke_summary(racket, ball, swing_mph: float) -> dict:
     -------
     dict
         For each key of :data:`STROKE_KEYS`: ``<key>_mph`` (the ball's speed [mph]),
-        ``<key>_spin_rpm`` (its spin rate [rpm]) and ``<key>_launch_deg`` (its launch above
+        ``<key>_spin_rpm`` (its spin rate [rpm], signed as its topspin: < 0 backspin) and
+        ``<key>_launch_deg`` (its launch above
         the horizontal [deg]).
     """
     table = stroke_table(page_strokes(swing_mph), racket, ball, unit="mph").set_index("stroke")
@@ -162,10 +169,15 @@ def stroke_conditions(inputs, a, b) -> dict:
         f"; the ball tossed {_incoming(flat)}"
     )
     forehand = strokes[PAGE_GROUNDSTROKE]
-    ground = stroke_words(PAGE_GROUNDSTROKE, forehand, "(the preset's, Knudson's forehands, "
-                          "not the page's)")  # fmt: skip
+    ground = stroke_words(PAGE_GROUNDSTROKE, forehand, f"(the page's times "
+                          f"{GROUNDSTROKE_RATIO:.2f}, the presets' ratio)")  # fmt: skip
+    notes = {
+        key: spin_note({name: strokes[name] for name in names})
+        for key, names in (("serve", PAGE_SERVES), ("ground", (PAGE_GROUNDSTROKE,)))
+    }
     return {
-        "serve_spin": f"{lines['serve']}; with spin, {serves}, {how}",
+        "serve_spin": f"{lines['serve']}; with spin, {serves}, {how}"
+        + (f"; {notes['serve']}" if notes["serve"] else ""),
         "groundstroke": f"{lines['racket']}, ball {inputs.ball} {_incoming(forehand)}, "
-        f"{ground}, {how}",
+        f"{ground}, {how}" + (f"; {notes['ground']}" if notes["ground"] else ""),
     }

@@ -27,7 +27,7 @@ import pandas as pd
 from common.checks import finite, finite_array, shown
 from common.typechecks import choice, flag, instance
 from common.units import SPEED_SUFFIXES, SPEED_UNITS
-from racket import Stroke, hit
+from racket import STROKES, Stroke, hit
 from racket.strings.sideways import BedSideways
 from racket.stroke import RPM
 from studies.arguments import ball_argument, racket_argument
@@ -36,6 +36,30 @@ from studies.tables import speeds_in
 SPEED_COLUMNS = ("head_speed", "ball_speed", "exit_speed")
 """The speeds of a stroke table (``*_m_s``, and ``*_mph`` or ``*_kmh`` with ``unit``): the
 racket point's and the incoming ball's before, the ball's after."""
+
+
+VALIDATED = ("topspin-forehand",)
+"""The presets whose spin ``validate`` finds within measurement, each as it is
+(``tests/test_validation.py`` checks that these, and only these, agree)."""
+
+
+def spin_note(strokes) -> str:
+    """One short line naming the strokes of ``strokes`` (as :func:`stroke_table` takes them)
+    whose spin lies outside what ``validate`` supports: a preset not in :data:`VALIDATED`, or
+    any stroke changed from its preset; "" if none.
+
+    Parameters
+    ----------
+    strokes : dict or sequence
+        As :func:`stroke_table`.
+    """
+    outside = [name for name, s in _strokes(strokes)
+               if name not in VALIDATED or STROKES.get(name) != s]  # fmt: skip
+    if not outside:
+        return ""
+    checked = ", ".join(VALIDATED)
+    return (f"spin not validated for {', '.join(dict.fromkeys(outside))}: validate checks "
+            f"the {checked} preset's only (docs/validation.md)")  # fmt: skip
 
 
 def _strokes(strokes) -> list[tuple[str, Stroke]]:
@@ -102,10 +126,11 @@ def stroke_row(name: str, stroke: Stroke, impact) -> dict:
         "ball_topspin_rpm": stroke.topspin / RPM,
         "ball_sidespin_rpm": stroke.sidespin / RPM,
         "position_from_tip_cm": 100.0 * impact.position,
+        "offset_cm": 100.0 * impact.offset,
         "exit_speed_m_s": f.speed,
         "launch_deg": math.degrees(f.launch_angle),
         "direction_deg": math.degrees(f.direction),
-        "spin_rpm": f.spin_rate / RPM,
+        "spin_rpm": math.copysign(f.spin_rate, f.topspin) / RPM,
         "topspin_rpm": f.topspin / RPM,
         "sidespin_rpm": f.sidespin / RPM,
         "rifle_spin_rpm": f.rifle_spin / RPM,
@@ -117,7 +142,13 @@ def stroke_row(name: str, stroke: Stroke, impact) -> dict:
 
 
 def stroke_table(
-    strokes, racket, ball, position=None, side: BedSideways | None = None, unit: str = "m/s"
+    strokes,
+    racket,
+    ball,
+    position=None,
+    side: BedSideways | None = None,
+    unit: str = "m/s",
+    offset: float | None = None,
 ) -> pd.DataFrame:
     """The ball after each stroke, one row per stroke.
 
@@ -138,6 +169,9 @@ def stroke_table(
     unit : str, optional
         "m/s", "mph" or "km/h": the speeds also in this unit (``*_mph``, ``*_kmh``), the one
         the user typed.
+    offset : float, optional
+        The impact point's distance from the long axis [m, + towards 3 o'clock]; default on
+        the axis.
 
     Returns
     -------
@@ -145,8 +179,9 @@ def stroke_table(
         ``stroke`` (the name), ``shaft``, the inputs ``head_speed_m_s``, ``path_deg``,
         ``face_deg``, ``across_deg``, ``ball_speed_m_s``, ``ball_angle_deg``,
         ``ball_topspin_rpm``, ``ball_sidespin_rpm``, the impact point
-        ``position_from_tip_cm``, and the ball after: ``exit_speed_m_s``, ``launch_deg``
-        (above the horizontal), ``direction_deg`` (+ to the left), ``spin_rpm`` (its rate),
+        ``position_from_tip_cm`` and ``offset_cm``, and the ball after: ``exit_speed_m_s``,
+        ``launch_deg`` (above the horizontal), ``direction_deg`` (+ to the left),
+        ``spin_rpm`` (its rate, signed as its topspin: < 0 for a ball with backspin),
         ``topspin_rpm``, ``sidespin_rpm``, ``rifle_spin_rpm``, ``contact_time_ms``,
         ``contact`` ("slid": the ball slid on the strings throughout; "gripped"),
         ``grip_time_ms`` and ``racket_share`` [-] (the part of the ball's speed away from
@@ -166,7 +201,8 @@ def stroke_table(
     instance("side", side, BedSideways | type(None), "a BedSideways or None",
              " (racket.strings.sideways.sideways(racket.strings) makes one)")  # fmt: skip
     choice("unit", unit, tuple(SPEED_UNITS))
-    rows = [stroke_row(name, s, hit(s, racket, ball, position, side=side)) for name, s in pairs]
+    rows = [stroke_row(name, s, hit(s, racket, ball, position, offset=offset, side=side))
+            for name, s in pairs]  # fmt: skip
     return speeds_in(pd.DataFrame(rows), unit, SPEED_COLUMNS)
 
 
@@ -180,6 +216,7 @@ def sweep_angles(
     side: BedSideways | None = None,
     name: str = "stroke",
     unit: str = "m/s",
+    offset: float | None = None,
 ) -> pd.DataFrame:
     """The ball after ``base`` with each racket path and face angle: one row per
     combination, the paths outermost (:func:`stroke_table`'s columns).
@@ -191,7 +228,7 @@ def sweep_angles(
     path_angles_deg, face_angles_deg : float or sequence of float or None
         The racket paths and face angles [deg] (:class:`racket.Stroke`: path + rising, face
         + open); None: the base's.
-    racket, ball, position, side, unit :
+    racket, ball, position, side, unit, offset :
         As in :func:`stroke_table`.
     name : str, optional
         Every row's ``stroke``.
@@ -211,13 +248,13 @@ def sweep_angles(
         for p in paths
         for f in faces
     ]
-    return stroke_table(strokes, racket, ball, position, side, unit)
+    return stroke_table(strokes, racket, ball, position, side, unit, offset)
 
 
 def bed_words(side: BedSideways, lubricated: bool = False) -> str:
     """What the ball meets sideways, in words for a conditions line: "ball-string friction
-    0.444, mains sliding on dry crosses (friction 0.086)", "... on lubricated crosses",
-    "... mains held still".
+    0.444, mains and crosses sliding on dry crossings (friction 0.086)", "... on lubricated
+    crossings", "... strings held still".
 
     Parameters
     ----------
@@ -230,16 +267,17 @@ def bed_words(side: BedSideways, lubricated: bool = False) -> str:
     lubricated = flag("lubricated", lubricated)
     said = f"ball-string friction {side.ball_friction:.3g}"
     if not side.slides:
-        return f"{said}, mains held still"
+        return f"{said}, strings held still"
     dry = "lubricated" if lubricated else "dry"
-    return f"{said}, mains sliding on {dry} crosses (friction {side.string_friction:.3g})"
+    return (f"{said}, mains and crosses sliding on {dry} crossings (friction "
+            f"{side.string_friction:.3g})")  # fmt: skip
 
 
 def plot_speed_spin(table: pd.DataFrame, ax=None, unit: str = "m/s", conditions=None):
-    """The ball's exit speed against its spin after each stroke (a table of
-    :func:`stroke_table`), each stroke labelled: by its name beside its point, or for a
-    stroke of several rows (angles swept) one line per face angle, along the path, in a
-    legend beside the Axes.
+    """The ball's exit speed against its spin (signed: backspin < 0) after each stroke (a
+    table of :func:`stroke_table`), each stroke labelled: by its name beside its point, or
+    for a stroke of several rows (angles swept) one line per face angle, along the path, in
+    a legend beside the Axes.
 
     Parameters
     ----------
@@ -272,10 +310,10 @@ def plot_speed_spin(table: pd.DataFrame, ax=None, unit: str = "m/s", conditions=
             row = group.iloc[0]
             ax.annotate(name, (row["spin_rpm"], row[column]), xytext=(5, 4),
                         textcoords="offset points", fontsize="small")  # fmt: skip
-    ax.set_xlabel("spin after the stroke [rpm]")
+    ax.set_xlabel("spin after the stroke [rpm] (< 0: backspin)")
     ax.set_ylabel(f"ball's exit speed [{unit}]")
     ax.margins(0.15)
-    ax.set_xlim(left=0.0)  # a spin rate: from none
+    ax.axvline(0.0, color="0.7", linewidth=0.8)  # backspin to its left, topspin to its right
     if several:
         legend_outside(ax)
     return finish(ax, conditions, made)

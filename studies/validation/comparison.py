@@ -38,6 +38,10 @@ class Comparison:
         Where the band comes from: the source's own, or an assumption (said so).
     model : callable
         Returns the model's value (same unit as ``measured``).
+    spread : callable, optional
+        Returns how far [the unit of ``quantity``] the model's value moves under the
+        measurement's stated input scatter (root-sum-square of each input's half range): the
+        band widens by it on both sides (:meth:`limits`); None: no input scatter stated.
     """
 
     name: str
@@ -50,6 +54,7 @@ class Comparison:
     kind: str
     band: str
     model: Callable[[], float] = field(repr=False, compare=False)
+    spread: Callable[[], float] | None = field(default=None, repr=False, compare=False)
 
     def __post_init__(self):
         if self.kind not in KINDS:
@@ -65,4 +70,12 @@ class Comparison:
         value : float
             The model's value [the unit of ``quantity``].
         """
-        return bool(self.low <= value <= self.high)
+        low, high = self.limits()
+        return bool(low <= value <= high)
+
+    def limits(self) -> tuple[float, float]:
+        """The band [the unit of ``quantity``]: ``low`` to ``high``, widened on both sides by
+        the model's :attr:`spread` under the inputs' scatter, if any.
+        """
+        widen = 0.0 if self.spread is None else abs(float(self.spread()))
+        return self.low - widen, self.high + widen

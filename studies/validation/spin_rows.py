@@ -61,6 +61,14 @@ TWU_LUBRICATED = (49.0 * MPH, math.radians(28.0), -3150.0 * RPM, 60.0)
 """TWU's lubrication test: 49 mph, 28 degrees from perpendicular, 3150 rpm of backspin, 16x19
 rackets at 60 lb (TWU, "String lubrication and movement in spin", Lindsey 2011)."""
 
+TWU_LUBRICATED_SCATTER = (1.0 * MPH, math.radians(1.0), 286.0 * RPM)
+"""The lubrication test's stated input scatter: +/- 1 mph, +/- 1 degree, +/- 286 rpm (the
+same source): its rows' band widens by the model's spread over them."""
+
+CROSS_TABLE_I_SCATTER = {"vx1": 0.04, "vy1": 0.014}
+"""Cross 2002, Table I: the incoming speeds' uncertainties [m/s]: the band widens by the
+model's spread over them."""
+
 TOUR_FOREHANDS = (1288.0, 3331.0)
 """Men's topspin forehands at the 1997 US Open, player means [rpm] (Yandell, "Ball spin in
 pro tennis", tennisplayer.net)."""
@@ -69,16 +77,20 @@ KICK_SERVES = (3270.0, 4500.0)
 """Kick serves' spin [rpm], mainly sidespin (Cross, TWU "Physics of the tennis kick serve",
 2011; ``data/measurements.md`` sec. 6)."""
 
-FIRST_SERVES = (1548.0, 3167.0)
-"""Men's first serves' spin [rpm], 1548 at 120 mph to 3167 at 92 mph (Yandell, "Ball spin in
-pro tennis")."""
+KICK_TOPSPIN_MAX = 1000.0
+"""A kick serve's topspin is "typically below 1000 rpm" [rpm] (Cross, as :data:`KICK_SERVES`)."""
 
-SLICE_BACKHANDS = (2127.0, 3244.0)
-"""Men's slice backhands' spin [rpm] (Yandell, "Ball spin in pro tennis")."""
+FIRST_SERVES = ((92.0, 3167.0), (120.0, 1548.0))
+"""Men's first serves: (ball speed [mph], spin [rpm]), 3167 rpm at 92 mph to 1548 at 120 mph
+(Yandell, "Ball spin in pro tennis")."""
+
+FIRST_SERVE_SCATTER = 0.2
+"""The band about the first serves' line at a serve's own speed, a fraction of it [-]:
+**an assumption** (Yandell gives averages, no scatter)."""
 
 _TWU_MOVEMENT = 'TWU, "String movement and spin" (Lindsey, own text)'
 _TWU_LUBE = 'TWU, "String lubrication and movement in spin" (Lindsey 2011, own text)'
-_YANDELL = 'Yandell, "Ball spin in pro tennis", tennisplayer.net; Knudson via Yandell'
+_YANDELL = 'Yandell, "Ball spin in pro tennis", tennisplayer.net'
 _CROSS_SERVE = 'Cross, TWU "Physics of the tennis kick serve" (2011); Yandell (serves)'
 _COURTS = "Cross, Sports Eng. 6 (2003); ITF court pace classification"
 
@@ -91,18 +103,37 @@ def _table_ii(name: str) -> tuple[float, float, float]:
 
 
 @cache
-def _table_i() -> tuple[float, float, float, float]:
-    vx1, vy1 = CROSS_TABLE_I["vx1"], CROSS_TABLE_I["vy1"]
+def _table_i(vx1: float = CROSS_TABLE_I["vx1"], vy1: float = CROSS_TABLE_I["vy1"]) -> tuple:
     b = bounce(LAB_SURFACES["emery paper"], math.hypot(vx1, vy1), math.atan2(vy1, vx1))
     return math.degrees(b.angle_after), b.vx_ratio * vx1, b.e_y * vy1, b.spin_after
+
+
+def _spread(model, inputs: tuple, scatter: tuple) -> float:
+    """The root-sum-square of ``model``'s half range as each input moves by its scatter, the
+    others held (``model(*inputs)`` a number).
+    """
+    total = 0.0
+    for i, delta in enumerate(scatter):
+        up, down = list(inputs), list(inputs)
+        up[i] += delta
+        down[i] -= delta
+        total += (0.5 * (model(*up) - model(*down))) ** 2
+    return math.sqrt(total)
+
+
+def _table_i_spread(i: int) -> float:
+    inputs = (CROSS_TABLE_I["vx1"], CROSS_TABLE_I["vy1"])
+    scatter = (CROSS_TABLE_I_SCATTER["vx1"], CROSS_TABLE_I_SCATTER["vy1"])
+    return _spread(lambda vx1, vy1: _table_i(vx1, vy1)[i], inputs, scatter)
 
 
 @cache
 def twu_spin(material: str, tension_lb: float, lubricated: bool = False,
              test=TWU_CLAMPED) -> float:  # fmt: skip
-    """Spin out [rpm] of a ball on the Pure Drive (2021), head clamped, strung with
+    """Spin out [rpm] of a ball on the Pure Drive (2021), head clamped, strung (fresh) with
     ``material`` at ``tension_lb``, in TWU's test ``test`` (speed [m/s], angle from the
-    normal [rad], spin [rad/s], backspin negative) at the string centre.
+    normal [rad], spin [rad/s], backspin negative) at the string centre, the ball sliding
+    across the mains (TWU films the mains moving sideways); > 0: topspin out.
 
     Parameters
     ----------
@@ -119,20 +150,21 @@ def twu_spin(material: str, tension_lb: float, lubricated: bool = False,
     speed, angle, spin = test[:3]
     o = oblique_impact(
         racket, _ball(), racket.strings.center, speed * math.cos(angle),
-        slip_velocity=(speed * math.sin(angle), 0.0), spin=(0.0, spin, 0.0),
+        slip_velocity=(0.0, speed * math.sin(angle)), spin=(-spin, 0.0, 0.0),
         side=sideways(racket.strings, lubricated=lubricated),
     )  # fmt: skip
-    return float(o.spin[0, 1]) / RPM
+    return -float(o.spin[0, 0]) / RPM
 
 
 def _material_mean(material: str) -> float:
     return float(np.mean([twu_spin(material, t) for t in (52.0, 62.0)]))
 
 
-def _lubricated_gain(material: str) -> float:
+def _lubricated_gain(material: str, *test) -> float:
+    test = test or TWU_LUBRICATED[:3]
     tension = TWU_LUBRICATED[3]
-    dry = twu_spin(material, tension, False, TWU_LUBRICATED)
-    return 100.0 * (twu_spin(material, tension, True, TWU_LUBRICATED) / dry - 1.0)
+    dry = twu_spin(material, tension, False, test)
+    return 100.0 * (twu_spin(material, tension, True, test) / dry - 1.0)
 
 
 @cache
@@ -140,6 +172,18 @@ def _strokes(names: tuple) -> list:
     from racket import default_ball, default_racket
 
     return [hit(STROKES[name], default_racket(), default_ball()).flight for name in names]
+
+
+def _first_serve_line(speed_mph: float) -> float:
+    """The first serves' spin [rpm] at ``speed_mph`` on :data:`FIRST_SERVES`' line."""
+    (v0, w0), (v1, w1) = FIRST_SERVES
+    return w0 + (w1 - w0) * (speed_mph - v0) / (v1 - v0)
+
+
+def _flat_serve_against_line() -> float:
+    """The flat serve's spin over the first serves' line at its own ball speed [-]."""
+    (flat,) = _strokes(("flat-serve",))
+    return flat.spin_rate / RPM / _first_serve_line(flat.speed / MPH)
 
 
 def _serves_ordered() -> float:
@@ -170,7 +214,9 @@ def spin_comparisons() -> list[Comparison]:
             "emery paper, dropped 25 cm, vx1 2.10 m/s, vy1 0.77 m/s, no spin",
             CROSS_TABLE_I[key][0], CROSS_TABLE_I[key][0] - CROSS_TABLE_I[key][1],
             CROSS_TABLE_I[key][0] + CROSS_TABLE_I[key][1], CROSS_2002 + ", Table I",
-            "validation", "the source's uncertainty", lambda i=i: _table_i()[i],
+            "validation", "the source's uncertainty, widened by the model's spread over the "
+            "incoming speeds' (vx1 +/- 0.04, vy1 +/- 0.014 m/s)", lambda i=i: _table_i()[i],
+            lambda i=i: _table_i_spread(i),
         )
         for i, (key, what) in enumerate((
             ("theta2", "rebound angle [deg]"), ("vx2", "vx2 [m/s]"), ("vy2", "vy2 [m/s]"),
@@ -209,47 +255,79 @@ def spin_comparisons() -> list[Comparison]:
             58.0,
             _TWU_LUBE,
             "validation",
-            "the source's range over strings and conditions, +14 to +58 %; its middle as the value",
+            "the source's range over strings and conditions, +14 to +58 %, its middle as the "
+            "value; widened by the model's spread over the stated input scatter (1 mph, 1 deg, "
+            "286 rpm); fresh strings, as TWU's",
             lambda m=material: _lubricated_gain(m),
+            lambda m=material: _spread(
+                lambda *t: _lubricated_gain(m, *t), TWU_LUBRICATED[:3], TWU_LUBRICATED_SCATTER
+            ),
         )
         for material in ("polyester", "nylon")
     ]
+    kick = _strokes(("kick-serve",))
     play = [
         Comparison(
             "stroke-topspin-forehand",
             "spin of a topspin forehand [rpm]",
-            "the topspin-forehand preset (Knudson's 49 mph head rising at 18 deg), default "
-            "racket and ball",
+            "the topspin-forehand preset: tour players' kinematics (Landlinger's ATP head "
+            "speed along Kwon's path, face vertical), default racket and ball",
             float(np.mean(TOUR_FOREHANDS)),
             *TOUR_FOREHANDS,
             _YANDELL,
             "validation",
-            "the players' means at the 1997 US Open",
+            "the players' means at the 1997 US Open; the kinematics are other players'",
             lambda: _strokes(("topspin-forehand",))[0].topspin / RPM,
         ),
-        *(
-            Comparison(
-                f"stroke-{name}",
-                f"spin of a {name.replace('-', ' ')} [rpm]",
-                f"the {name} preset, default racket and ball",
-                float(np.mean(band)),
-                *band,
-                source,
-                "validation",
-                note,
-                lambda n=name: _strokes((n,))[0].spin_rate / RPM,
-            )
-            for name, band, source, note in (
-                ("kick-serve", KICK_SERVES, _CROSS_SERVE, "Cross's range for kick serves"),
-                (
-                    "flat-serve",
-                    FIRST_SERVES,
-                    _YANDELL,
-                    "the tour's first serves, 120 to 92 "
-                    "mph (the preset's ball leaves at about 124 mph)",
-                ),
-                ("slice-backhand", SLICE_BACKHANDS, _YANDELL, "the tour's slice backhands"),
-            )
+        Comparison(
+            "stroke-kick-serve",
+            "spin of a kick serve [rpm]",
+            "the kick-serve preset (Gordon's head speed, Cross's geometry), default racket "
+            "and ball",
+            float(np.mean(KICK_SERVES)),
+            *KICK_SERVES,
+            _CROSS_SERVE,
+            "validation",
+            "Cross's range for kick serves",
+            lambda: kick[0].spin_rate / RPM,
+        ),
+        Comparison(
+            "stroke-kick-serve-topspin",
+            "topspin of a kick serve [rpm]",
+            "as stroke-kick-serve",
+            0.5 * KICK_TOPSPIN_MAX,
+            0.0,
+            KICK_TOPSPIN_MAX,
+            _CROSS_SERVE,
+            "validation",
+            "Cross: topspin 'typically below 1000 rpm'",
+            lambda: kick[0].topspin / RPM,
+        ),
+        Comparison(
+            "stroke-kick-serve-sidespin",
+            "a kick serve's sidespin over its spin [-]",
+            "as stroke-kick-serve",
+            0.75,
+            0.5,
+            1.0,
+            _CROSS_SERVE,
+            "validation",
+            "Cross: 'mainly sidespin', read as more than half",
+            lambda: abs(kick[0].sidespin) / kick[0].spin_rate,
+        ),
+        Comparison(
+            "stroke-flat-serve",
+            "a flat serve's spin over the first serves' at its speed [-]",
+            "the flat-serve preset (Gordon's head speed), default racket and ball; the tour's "
+            "first serves' spin on the line from 3167 rpm at 92 mph to 1548 at 120, at the "
+            "preset's own ball speed",
+            1.0,
+            1.0 - FIRST_SERVE_SCATTER,
+            1.0 + FIRST_SERVE_SCATTER,
+            _YANDELL,
+            "validation",
+            "+/- 20 % about the line (an assumption: the source gives averages)",
+            _flat_serve_against_line,
         ),
         Comparison(
             "stroke-serves-in-order",

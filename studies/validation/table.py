@@ -19,17 +19,19 @@ def validation_table(items: list[Comparison] | None = None) -> pd.DataFrame:
     Returns
     -------
     DataFrame
-        Columns :data:`COLUMNS` (``measured``, ``low``, ``high`` and ``model`` in the unit of
+        Columns :data:`COLUMNS` (``measured``, ``low``, ``high``: the band widened by the
+        inputs' scatter, :meth:`Comparison.limits`; and ``model``, in the unit of
         ``quantity``; ``agrees`` a bool), indexed by each comparison's name.
     """
     items = comparisons() if items is None else items
     rows = []
     for c in items:
         value = float(c.model())
+        low, high = c.limits()
         rows.append(
             dict(
-                quantity=c.quantity, conditions=c.conditions, measured=c.measured, low=c.low,
-                high=c.high, model=value, agrees=c.agrees(value), kind=c.kind, source=c.source,
+                quantity=c.quantity, conditions=c.conditions, measured=c.measured, low=low,
+                high=high, model=value, agrees=c.agrees(value), kind=c.kind, source=c.source,
             )
         )  # fmt: skip
     return pd.DataFrame(rows, index=pd.Index([c.name for c in items], name="name"))
