@@ -296,8 +296,9 @@ def slide(
     n = force.shape[0]
     dt = in_range("dt", dt, 1e-9, 1e-3, "s")
     mu = np.broadcast_to(finite_array("friction", friction), (n,)).copy()
-    for value in mu:
-        in_range("friction", value, *FRICTION_RANGE)
+    outside = (mu < FRICTION_RANGE[0]) | (mu > FRICTION_RANGE[1])
+    if outside.any():  # the first one out, named as one value is
+        in_range("friction", mu[outside][0], *FRICTION_RANGE)
     v = np.broadcast_to(finite_array("velocity", velocity, "m/s"), (n, 2)).copy()
     w = np.broadcast_to(finite_array("angular_velocity", angular_velocity, "rad/s"), (n, 3)).copy()
     if inv_mass is None:
