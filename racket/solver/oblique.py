@@ -5,7 +5,7 @@ history, for all impact points at once.
 
 The coupling is one-way (:mod:`ball.grip`): the normal outcome is the head-on one to the
 last bit, whatever the tangential speed and spin; the tangential force moves the racket in
-the plane of its strings (:mod:`racket.in_plane`) and pulls the mains sideways
+the plane of its strings (:mod:`racket.in_plane`) and pulls the mains and crosses sideways
 (:mod:`racket.strings.sideways`).
 """
 
@@ -50,7 +50,7 @@ class ObliqueImpact:
     grip : Grip
         The tangential contact.
     side : BedSideways
-        The bed's friction and sliding mains used.
+        The bed's friction and sliding strings used.
     """
 
     normal: Impact

@@ -1,8 +1,8 @@
 """The interactive page's strokes with spin (issue 36): a flat and a kick serve at the page's
 racket-head speed, and a topspin forehand following it in the presets' ratio, hit by each
 racket as ``racket-impact stroke`` hits them (:func:`studies.strokes.stroke.stroke_table`:
-at the string centre, the racket free, its mains and crosses sliding on dry crossings), and the line
-saying what each card of them was computed for.
+at the string centre, the racket free, its mains and crosses sliding on dry crossings), and
+the line saying what each card of them was computed for.
 """
 
 from __future__ import annotations

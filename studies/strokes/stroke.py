@@ -7,8 +7,8 @@ speed, the racket's motion superposed): the stroke as given (head speed, path, f
 across, the incoming ball), then the ball after it (exit speed, launch angle, spin and its
 topspin, sidespin and rifle-spin parts), the contact time, whether the ball slid on the
 strings for the whole contact or gripped them, and the part of the ball's speed away from
-the face that the racket's own speed gave it.  What the strings do sideways (the mains
-sliding on the crosses, dry or lubricated, or held still) is a
+the face that the racket's own speed gave it.  What the strings do sideways (mains and
+crosses sliding on each other, dry or lubricated, or held still) is a
 :class:`racket.strings.sideways.BedSideways` (``side``; :func:`racket.strings.sideways.sideways`),
 said in words by :func:`bed_words`.
 
@@ -165,7 +165,7 @@ def stroke_table(
         The impact point [m from the tip]; default the string bed's centre.
     side : BedSideways, optional
         The bed sideways (:func:`racket.strings.sideways.sideways`); default the racket's bed's,
-        dry strings whose mains slide.
+        dry strings that slide.
     unit : str, optional
         "m/s", "mph" or "km/h": the speeds also in this unit (``*_mph``, ``*_kmh``), the one
         the user typed.
