@@ -155,9 +155,9 @@ class Grip:
         Largest sideways displacement [m] of the layer.
     energy_in, energy_out : ndarray
         Tangential and rotational energy [J] before, and all of it after (ball, layer,
-        surface, the patch's spring), losses not included.
+        surface, the patches' springs), losses not included.
     stiffness_work : ndarray
-        Energy [J] the patch's spring gained as its stiffness changed with the normal force
+        Energy [J] the patches' springs gained as their stiffness changed with the normal force
         (from the normal motion, which the one-way coupling does not debit).
     """
 

@@ -9,13 +9,13 @@ The sideways bed is :mod:`racket.strings.sideways`'s picture: the ball grips mai
 crosses through two patches, the strings held at the crossings by the weave's preload and
 the ball's force, their spring set on the measured snapback; no number tuned to these rows.
 TWU's ball slides across the mains (it films them moving sideways).  Met: the mains' slide
-and snapback, gut's level at 52 lb, the order polyester > nylon, the lubrication gains
+and snapback, gut's level at 52 lb, the order polyester > nylon, nylon's lubrication gain
 within TWU's band widened by its inputs' scatter, and TWU's "nearly the same for all
 magnitudes of string-ball friction" in its own limit (a tangentially noncompliant contact).
 Not met, kept as strict expected failures with the model's number and the measured band as
 their reason: the level of polyester, nylon and gut at 62 lb, polyester's margin over
-nylon, and the rigid bed's indifference to the ball's friction with the ball's own
-tangential spring.
+nylon, polyester's lubrication gain, and the rigid bed's indifference to the ball's friction
+with the ball's own tangential spring.
 """
 
 import dataclasses
@@ -27,7 +27,7 @@ from ball import BALL_PRESETS
 from ball.spin import INERTIA_FACTOR, BallSpin
 from common.units import LB, MPH
 from racket.solver.oblique import oblique_impact
-from racket.strings.sideways import BedSideways, sideways, snapback_period
+from racket.strings.sideways import SNAPBACK_TIME, BedSideways, sideways, snapback_time
 from studies.validation import comparisons
 from studies.validation.conditions import clamped_racket
 
@@ -125,8 +125,8 @@ _LEVEL_GAP = (
     "test the slide's share"
 )
 _MODEL_RPM = {
-    ("polyester", 52.0): 2171, ("polyester", 62.0): 2251, ("nylon", 52.0): 2059,
-    ("nylon", 62.0): 2120, ("natural-gut", 62.0): 1820,
+    ("polyester", 52.0): 2169, ("polyester", 62.0): 2249, ("nylon", 52.0): 2058,
+    ("nylon", 62.0): 2118, ("natural-gut", 62.0): 1820,
 }  # fmt: skip
 """The model's spin out [rpm] the expected failures' reasons quote."""
 
@@ -156,7 +156,7 @@ def test_polyester_spins_the_ball_more_than_nylon(clamped):
     assert _mean_rpm(clamped, "polyester") > _mean_rpm(clamped, "nylon")
 
 
-@pytest.mark.xfail(strict=True, reason="model +6 % (2211 vs 2090 rpm) vs TWU +20 % (band "
+@pytest.mark.xfail(strict=True, reason="model +6 % (2209 vs 2088 rpm) vs TWU +20 % (band "
                    "10-30 %): the crossings' hold, 0.086 against 0.108 of the preload and the "
                    "ball's force, lets polyester's mains slide 28 % further than nylon's, but a "
                    "laterally rigid bed starts nylon 4 % ahead; a measured share of the grip on "
@@ -166,7 +166,16 @@ def test_polyester_is_above_nylon_by_twus_20_percent(clamped):
     assert 0.10 <= gain <= 0.30
 
 
-@pytest.mark.parametrize("material", ["polyester", "nylon"])
+@pytest.mark.parametrize(
+    "material",
+    [
+        pytest.param("polyester", marks=pytest.mark.xfail(strict=True, reason=(
+            "model +12.9 % vs TWU +14 to +58 % (13.3-58.7 with the test's input scatter): "
+            "polyester's strings already slide far dry; lubrication (an assumed 0.04 "
+            "against 0.086) frees them a little further"))),
+        "nylon",
+    ],
+)  # fmt: skip
 def test_lubricated_strings_spin_the_ball_more_by_twus_margin(lubricated, material):
     """TWU: +14 to +58 % spin lubricated over dry (16x19 at 60 lb, 28 degrees, 49 mph,
     -3150 rpm, fresh strings), the band widened by the model's spread over the test's stated
@@ -221,19 +230,24 @@ def test_the_mains_slide_a_few_mm(clamped):
             assert 0.0 < peak < 0.010, key
 
 
-def test_the_mains_spring_back_within_twus_2_ms(clamped):
-    """Lindsey: the mains "slide sideways and spring back in about 2 ms": on their own
-    (without the ball's mass) they are no slower."""
+def test_the_mains_spring_back_in_twus_2_ms(clamped):
+    """Lindsey: the mains "slide sideways and spring back in about 2 ms".  Their spring is
+    set on it (calibration): loaded by their share of the ball's tangential mass they go out
+    and back in 2 ms, on every string, tension and lubrication; the stiffer the spring (the
+    shorter the time), the less they slide."""
     for material in MATERIALS:
         for lb in TENSIONS_LB:
             bed = clamped_racket(None, material, lb * LB).strings
             for lubricate in (False, True):
-                assert snapback_period(sideways(bed, lubricated=lubricate)) <= 2e-3
+                side = sideways(bed, lubricated=lubricate)
+                assert snapback_time(side) == pytest.approx(SNAPBACK_TIME, rel=1e-12)
+    assert snapback_time(sideways(bed, slide=False)) == np.inf
 
 
-def _twu_polyester(**kwargs) -> float:
+def _twu_polyester(**kwargs):
+    """Polyester at 52 lb in TWU's test, the bed sideways with ``kwargs``: the impact."""
     racket = clamped_racket(None, "polyester", 52.0 * LB)
-    return _rpm(_hit(racket, sideways(racket.strings, **kwargs), *STRING_TEST))
+    return _hit(racket, sideways(racket.strings, **kwargs), *STRING_TEST)
 
 
 def test_the_spin_over_the_sideways_assumptions(monkeypatch):
@@ -244,14 +258,18 @@ def test_the_spin_over_the_sideways_assumptions(monkeypatch):
     import sys
 
     module = sys.modules["racket.strings.sideways"]
-    base = _twu_polyester()
+    base = _rpm(_twu_polyester())
     moves = {
-        "share": [_twu_polyester(share=s) for s in (0.4, 0.6)],
-        "kinetic_ratio": [_twu_polyester(kinetic_ratio=r) for r in (1.0, 0.6)],
+        "share": [_rpm(_twu_polyester(share=s)) for s in (0.4, 0.6)],
+        "kinetic_ratio": [_rpm(_twu_polyester(kinetic_ratio=r)) for r in (1.0, 0.6)],
     }
+    peaks = []
     for time in (1.5e-3, 2.5e-3):
         monkeypatch.setattr(module, "SNAPBACK_TIME", time)
-        moves.setdefault("SNAPBACK_TIME", []).append(_twu_polyester())
+        hit = _twu_polyester()
+        moves.setdefault("SNAPBACK_TIME", []).append(_rpm(hit))
+        peaks.append(hit.grip.layer_peak[0])
+    assert peaks[0] < peaks[1]  # a stiffer spring: a shorter slide
     print(f"\npolyester at 52 lb: {base:.0f} rpm; " + ", ".join(
         f"{name} {low:.0f}-{high:.0f}" for name, (low, high) in moves.items()))  # fmt: skip
     for name, (low, high) in moves.items():

@@ -39,7 +39,9 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from ball.catalog import BALL_MASS
 from ball.grip import Layer
+from ball.spin import INERTIA_FACTOR
 from common.checks import in_range, non_negative, positive
 
 CONTACT_WIDTH = 0.04
@@ -57,8 +59,9 @@ ball touches mains and crosses about equally; range 0.4-0.6
 
 KINETIC_RATIO = 0.8
 """Kinetic over static string-string friction [-].  **An assumption**: TWU measures one
-coefficient (its "static friction"); polymer on polymer slides at 0.6-1.0 of its static
-coefficient (range used in ``tests/test_spin_strings.py``)."""
+coefficient (its "static friction") and no measured kinetic one for strings was found; a
+kinetic coefficient is below the static one, so the range is 0.6-1.0, the middle of it
+taken (``tests/test_spin_strings.py`` reports the spin over it)."""
 
 PRESS_RATIO = 1.0
 """The share of the ball's normal force that presses the crossings under it [-].  **An
@@ -73,11 +76,15 @@ Out and back is half a period of the mains loaded by the ball's grip (they move 
 ball is on them).  "About" **taken as** 1.5-2.5 ms (``tests/test_spin_strings.py`` reports
 the spin over that range)."""
 
-BALL_TANGENTIAL_MASS = 0.0575 * 0.55 / 1.55
+BALL_TANGENTIAL_MASS = BALL_MASS * INERTIA_FACTOR / (1.0 + INERTIA_FACTOR)
 """The tangential effective mass [kg] of the tennis ball whose grip loads the mains in the
-snapback's measurement, m I / (I + m R^2) with m = 57.5 g (ITF's 56.0-59.4 g, mid) and
-I = 0.55 m R^2 (Cross 2002, ``data/measurements.md`` sec. 6): the calibration's conditions,
-so the spring is the bed's, whatever ball then meets it."""
+snapback's measurement, m I / (I + m R^2) with the ITF ball's mass
+(:data:`ball.catalog.BALL_MASS`) and I = 0.55 m R^2 (:data:`ball.spin.INERTIA_FACTOR`): the
+calibration's conditions, so the spring is the bed's, whatever ball then meets it.  The
+mains carry their share of it, s m_t (**an assumption**): between none (the ball sliding on
+them) and all (the ball sliding on the crosses, its whole tangential inertia on the mains),
+a spring 0.5 to 2 times as stiff, within what :data:`SNAPBACK_TIME`'s range spans (0.64 to
+1.78 times)."""
 
 LUBRICATED_FRICTION = 0.04
 """String-string coefficient of friction [-] of lubricated strings.  **An assumption**: no
@@ -123,16 +130,19 @@ class BedSideways:
     kinetic_ratio: float = KINETIC_RATIO
 
     def __post_init__(self):
+        for name in ("stiffness", "mass"):
+            value = getattr(self, name)
+            if not isinstance(value, tuple | list) or len(value) != 2:
+                raise ValueError(f"{name} must be an (along, across) pair, got {value!r}")
         for name in ("ball_friction", "string_friction"):
             object.__setattr__(self, name, in_range(name, getattr(self, name), 0.0, 2.0))
         pair = tuple(non_negative("stiffness", k, "N/m") for k in self.stiffness)
         object.__setattr__(self, "stiffness", pair)
         object.__setattr__(self, "mass", tuple(in_range("mass", m, 0.0, 0.05, "kg")
                                                for m in self.mass))  # fmt: skip
-        if len(self.stiffness) != 2 or len(self.mass) != 2:
-            raise ValueError("stiffness and mass must be (along, across) pairs")
-        if self.slides and min(self.mass) == 0.0:
-            raise ValueError("mass must be > 0 kg both ways when the strings slide")
+        if self.slides and min(self.mass) < 1e-6:
+            raise ValueError(f"mass must be at least 1e-06 kg both ways when the strings "
+                             f"slide, got {self.mass!r}")  # fmt: skip
         object.__setattr__(self, "preload", non_negative("preload", self.preload, "N"))
         object.__setattr__(self, "share", in_range("share", self.share, 0.0, 1.0))
         ratio = in_range("kinetic_ratio", self.kinetic_ratio, 0.0, 1.0)
@@ -216,9 +226,10 @@ def sideways(bed, lubricated: bool = False, slide: bool = True, share: float = S
                        kinetic_ratio)  # fmt: skip
 
 
-def snapback_period(side: BedSideways) -> float:
-    """Period [s] of the mains springing back on their own, 2 pi sqrt(mass / stiffness)
-    (inf for a stiff bed).
+def snapback_time(side: BedSideways) -> float:
+    """Time [s] the mains take to go out and back, loaded by their share of a tennis ball's
+    tangential mass: half a period, pi sqrt((m + share m_t) / k) (the quantity their spring
+    is set on, :data:`SNAPBACK_TIME`); inf for a stiff bed.
 
     Parameters
     ----------
@@ -227,4 +238,5 @@ def snapback_period(side: BedSideways) -> float:
     """
     if not side.slides or side.stiffness[1] == 0.0:
         return math.inf
-    return 2.0 * math.pi * math.sqrt(side.mass[1] / side.stiffness[1])
+    loaded = side.mass[1] + side.share * BALL_TANGENTIAL_MASS
+    return math.pi * math.sqrt(loaded / side.stiffness[1])

@@ -4,6 +4,7 @@ of comparison (calibration, validation).
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
@@ -41,7 +42,8 @@ class Comparison:
     spread : callable, optional
         Returns how far [the unit of ``quantity``] the model's value moves under the
         measurement's stated input scatter (root-sum-square of each input's half range): the
-        band widens by it on both sides (:meth:`limits`); None: no input scatter stated.
+        band widens by it on both sides, in quadrature (:meth:`limits`); None: no input
+        scatter stated.
     """
 
     name: str
@@ -74,8 +76,13 @@ class Comparison:
         return bool(low <= value <= high)
 
     def limits(self) -> tuple[float, float]:
-        """The band [the unit of ``quantity``]: ``low`` to ``high``, widened on both sides by
-        the model's :attr:`spread` under the inputs' scatter, if any.
+        """The band [the unit of ``quantity``]: ``low`` to ``high``, each side's distance from
+        the measured value combined in quadrature with the model's :attr:`spread` under the
+        inputs' scatter, if any (independent uncertainties).
         """
-        widen = 0.0 if self.spread is None else abs(float(self.spread()))
-        return self.low - widen, self.high + widen
+        if self.spread is None:
+            return self.low, self.high
+        spread = float(self.spread())
+        below = math.hypot(self.measured - self.low, spread)
+        above = math.hypot(self.high - self.measured, spread)
+        return self.measured - below, self.measured + above

@@ -3,10 +3,17 @@ secs. 6 and 7), each a :class:`~studies.validation.comparison.Comparison`.
 
 Calibration: Cross's oblique bounces (Table II) set the ball's tangential stiffness and
 offset (:mod:`ball.spin`) and each lab surface's friction (:data:`ball.court.LAB_SURFACES`);
-the courts' friction and COR are the presets' own (their CPR checks how the ITF's test
-reads them).  Validation: Cross's Table I bounce, TWU's spin off a clamped racket by string,
-TWU's lubricated strings, the tour's forehand spin and the order of the three serves: no
-parameter was set from them.
+Lindsey's 2 ms snapback (not a row: a time, not a spin) sets the strings' return spring
+(:mod:`racket.strings.sideways`); the courts' friction and COR are the presets' own (their
+CPR checks how the ITF's test reads them).  Validation: Cross's Table I bounce, TWU's spin off
+a clamped racket by string (the ball sliding across the mains), TWU's lubricated fresh
+strings, the tour's forehand spin against tour players' kinematics, the kick serve's spin, its
+topspin and its share of sidespin, the flat serve against the tour's first serves at its own
+speed, and the order of the three serves: no parameter was set from them (the kick serve's
+geometry is Cross's description of the stroke, from the same article as its spins: a
+description of the swing, not a number fitted to them).  Where a source states the scatter of
+its inputs, the band widens by the model's spread over it
+(:meth:`~studies.validation.comparison.Comparison.limits`).
 """
 
 from __future__ import annotations
@@ -63,7 +70,9 @@ rackets at 60 lb (TWU, "String lubrication and movement in spin", Lindsey 2011).
 
 TWU_LUBRICATED_SCATTER = (1.0 * MPH, math.radians(1.0), 286.0 * RPM)
 """The lubrication test's stated input scatter: +/- 1 mph, +/- 1 degree, +/- 286 rpm (the
-same source): its rows' band widens by the model's spread over them."""
+same source): its rows' band widens by the model's spread over them, dry and lubricated
+shots alike (TWU compares means over shots: what is left of the scatter is the test's
+setting, shared by both)."""
 
 CROSS_TABLE_I_SCATTER = {"vx1": 0.04, "vy1": 0.014}
 """Cross 2002, Table I: the incoming speeds' uncertainties [m/s]: the band widens by the
@@ -161,6 +170,9 @@ def _material_mean(material: str) -> float:
 
 
 def _lubricated_gain(material: str, *test) -> float:
+    """Spin gained by lubricated ``material`` [%] in TWU's lubrication test (``test``: its
+    speed, angle and spin; none: the test's own), dry and lubricated shot alike.
+    """
     test = test or TWU_LUBRICATED[:3]
     tension = TWU_LUBRICATED[3]
     dry = twu_spin(material, tension, False, test)
@@ -172,6 +184,12 @@ def _strokes(names: tuple) -> list:
     from racket import default_ball, default_racket
 
     return [hit(STROKES[name], default_racket(), default_ball()).flight for name in names]
+
+
+def _kick_sidespin_share() -> float:
+    """The kick serve's sidespin over its spin rate [-]."""
+    (kick,) = _strokes(("kick-serve",))
+    return abs(kick.sidespin) / kick.spin_rate
 
 
 def _first_serve_line(speed_mph: float) -> float:
@@ -265,7 +283,6 @@ def spin_comparisons() -> list[Comparison]:
         )
         for material in ("polyester", "nylon")
     ]
-    kick = _strokes(("kick-serve",))
     play = [
         Comparison(
             "stroke-topspin-forehand",
@@ -289,7 +306,7 @@ def spin_comparisons() -> list[Comparison]:
             _CROSS_SERVE,
             "validation",
             "Cross's range for kick serves",
-            lambda: kick[0].spin_rate / RPM,
+            lambda: _strokes(("kick-serve",))[0].spin_rate / RPM,
         ),
         Comparison(
             "stroke-kick-serve-topspin",
@@ -301,7 +318,7 @@ def spin_comparisons() -> list[Comparison]:
             _CROSS_SERVE,
             "validation",
             "Cross: topspin 'typically below 1000 rpm'",
-            lambda: kick[0].topspin / RPM,
+            lambda: _strokes(("kick-serve",))[0].topspin / RPM,
         ),
         Comparison(
             "stroke-kick-serve-sidespin",
@@ -312,8 +329,9 @@ def spin_comparisons() -> list[Comparison]:
             1.0,
             _CROSS_SERVE,
             "validation",
-            "Cross: 'mainly sidespin', read as more than half",
-            lambda: abs(kick[0].sidespin) / kick[0].spin_rate,
+            "Cross: 'mainly sidespin', read as more than half (the preset's swing is his "
+            "'mostly across the ball': this row checks the contact turns it into sidespin)",
+            lambda: _kick_sidespin_share(),
         ),
         Comparison(
             "stroke-flat-serve",
