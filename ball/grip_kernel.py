@@ -130,7 +130,7 @@ def _half_kick(v0, v1, w0, w1, l0, l1, p0, p1, u0, u1, s0, s1, fa0, fa1, fb0, fb
     -J . (r0 + r_end) / 2.  Returns the state after, whether the strings slide, and that
     loss [J].
     """
-    (sa, sb, half, hm, hr, hc, hmm, woven, k_c, k_m, m_c, m_m, press_ratio, preload, mu_s,
+    (sa, sb, half, hm, hr, hc, hmm, woven, k_c, k_m, i_c, i_m, press_ratio, preload, mu_s,
      mu_k, w00, w01, w11, a00, a11, det) = row  # fmt: skip
     r0, r1 = l0 - u0, l1 - u1  # the layer's slip, at the start
     f0, f1 = sa * fa0 + sb * fb0, sa * fa1 + sb * fb1
@@ -149,16 +149,16 @@ def _half_kick(v0, v1, w0, w1, l0, l1, p0, p1, u0, u1, s0, s1, fa0, fa1, fb0, fb
     u0, u1 = w00 * p0 + w01 * p1, w01 * p0 + w11 * p1
     press = (press_ratio * normal + preload) * half
     t0, t1 = l0 - u0, l1 - u1
-    j0 = -(a11 * t0 - w01 * t1) / det
-    j1 = -(a00 * t1 - w01 * t0) / det
+    j0 = -(a11 * t0 - w01 * t1) * det
+    j1 = -(a00 * t1 - w01 * t0) * det
     held = (mu_k if layer_slides else mu_s) * press
     layer_slides = j0 * j0 + j1 * j1 > held * held
     if layer_slides:
         limit = mu_k * press
         r = math.sqrt(t0 * t0 + t1 * t1)
         j0, j1 = -limit * t0 / r, -limit * t1 / r
-    l0 += j0 / m_c
-    l1 += j1 / m_m
+    l0 += j0 * i_c
+    l1 += j1 * i_m
     p0 -= j0
     p1 -= j1
     u0, u1 = w00 * p0 + w01 * p1, w01 * p0 + w11 * p1
@@ -198,7 +198,8 @@ def grip_kernel(force, dt, substeps, m, radius, inertia, k_t, offset, zeta, seca
         (n, T) tangential stiffness [N/m] at the history's times (linear between them).
     zeta : float
         Damping ratio [-] of the patches' dashpot, c = 2 zeta sqrt(k_t m_t) (m_t the ball's
-        tangential effective mass), while they grip.
+        tangential effective mass) at the history's times, linear between them, while they
+        grip.
     secant : bool
         True: the patches' springs are secant, F = k_t xi (the stored force rescaled as k_t
         changes); False: incremental, dF = k_t dxi.
@@ -231,18 +232,20 @@ def grip_kernel(force, dt, substeps, m, radius, inertia, k_t, offset, zeta, seca
         mu_s, mu_k, mu_i = layer[i, LAYER_STATIC], layer[i, LAYER_KINETIC], mu[i]
         press_ratio, preload = layer[i, LAYER_PRESS], layer[i, LAYER_PRELOAD]
         w00, w01, w11 = inv_mass[i, 0, 0], inv_mass[i, 0, 1], inv_mass[i, 1, 1]
-        a00 = a11 = det = 1.0  # the crossings' friction: (1/m + W) J = -slip
-        hc = hmm = 0.0  # the layer's half kick per newton
+        # the crossings' friction, (1/m + W) J = -slip: its matrix and 1 / its determinant
+        a00 = a11 = det = 1.0
+        hc = hmm = i_c = i_m = 0.0  # the layer's half kick per newton, its inverse masses
         if woven:
-            a00, a11 = 1.0 / m_c + w00, 1.0 / m_m + w11
-            det = a00 * a11 - w01 * w01
-            hc, hmm = half / m_c, half / m_m
+            i_c, i_m = 1.0 / m_c, 1.0 / m_m
+            a00, a11 = i_c + w00, i_m + w11
+            det = 1.0 / (a00 * a11 - w01 * w01)
+            hc, hmm = half * i_c, half * i_m
         # the ball has left after the last positive force: nothing moves it after the step
         # that ends there (the strings may ring on, pressed by the weave alone)
         last = steps - 1
         while last > 0 and force[i, last] <= 0.0 and force[i, last - 1] <= 0.0:
             last -= 1
-        row = (sa, sb, half, hm, hr, hc, hmm, woven, k_c, k_m, m_c, m_m, press_ratio, preload,
+        row = (sa, sb, half, hm, hr, hc, hmm, woven, k_c, k_m, i_c, i_m, press_ratio, preload,
                mu_s, mu_k, w00, w01, w11, a00, a11, det)  # fmt: skip
         v0, v1, w0, w1 = v[i, 0], v[i, 1], w[i, 0], w[i, 1]
         o[ENERGY_IN] = 0.5 * m * (v0 * v0 + v1 * v1) + 0.5 * inertia * (w0 * w0 + w1 * w1)
@@ -259,6 +262,9 @@ def grip_kernel(force, dt, substeps, m, radius, inertia, k_t, offset, zeta, seca
             n_j, dn = force[i, j], force[i, j + 1] - force[i, j]
             k_j, dk = k_t[i, j], k_t[i, j + 1] - k_t[i, j]
             n_b, k_b = n_j, max(k_j, 0.0)
+            # the dashpot c = 2 zeta sqrt(k_t m_t), linear over the step as k_t is
+            c_j = 2.0 * zeta * math.sqrt(k_b * m_t)
+            dc = 2.0 * zeta * math.sqrt(max(k_t[i, j + 1], 0.0) * m_t) - c_j
             for k in range(substeps):
                 # N and k_t linear over the step (k_t >= 0: falling to 0 it may round to
                 # -1 ulp of its last value)
@@ -279,7 +285,7 @@ def grip_kernel(force, dt, substeps, m, radius, inertia, k_t, offset, zeta, seca
                     s1 += h * (l1 - u1)
                     peak = max(peak, s0 * s0 + s1 * s1)  # squared
                 gripped = n_b > 0.0
-                damp = 2.0 * zeta * math.sqrt(k_b * m_t)
+                damp = c_j + dc * ((k + 1) * fraction)
                 limit = mu_i * max(n_b, 0.0)
                 if sa > 0.0:
                     ca0, ca1 = u0 - b0, (l1 if woven else u1) - b1
