@@ -10,7 +10,7 @@ paper's: 57 g, stiffness 4e4 N/m during compression, COR 0.75 on concrete (Sec. 
 The paper's string bed stays the paper's: a linear, lossless spring (no stringing).  The
 default racket is a real one, the catalogue's Babolat Pure Drive (2021)
 (:data:`racket.specs.catalog.CATALOG`), strung with fresh polyester 16L, 16x19, at 55 lb
-(an assumption, :data:`racket.specs.catalog.STRUNG`: a bed that stiffens as it deflects and
+(an assumption, :data:`racket.specs.strung.STRUNG`: a bed that stiffens as it deflects and
 loses a little of what it stores, :mod:`racket.strings.stringing`), and the default ball the ITF
 type 2 ball (:data:`ball.catalog.DEFAULT_BALL`).
 """

@@ -29,12 +29,17 @@ def speed_text(value, unit: str = "m/s") -> str:
     return f"{said} {unit}"
 
 
+PLAIN_BED = "the paper's linear spring"
+"""How outputs name a bed with no stringing: the paper's linear, lossless, massless spring
+(:data:`racket.specs.strung.LINEAR`)."""
+
+
 def racket_details(racket, tension: str | None = None) -> dict:
     """How a racket is held and strung, for :func:`conditions_line`: its ``support``, the
     ``grip`` of a hand-held racket (a preset's name of :data:`racket.GRIPS`, or "own grip")
     and its ``strings``: what it is strung with and its bed's stiffness ("polyester 1.25 mm
-    16x19 at 55 lb, fresh, 30 kN/m"; "strings at 55 lb" or "strings 30 kN/m" for the paper's
-    plain bed).
+    16x19 at 55 lb, fresh, 30 kN/m"; "the paper's linear spring at 55 lb" or "the paper's
+    linear spring, 30 kN/m" for the paper's plain bed, by name).
 
     Parameters
     ----------
@@ -53,7 +58,7 @@ def racket_details(racket, tension: str | None = None) -> dict:
     stiffness = f"{racket.strings.stiffness / 1e3:.3g} kN/m"
     strung = racket.strings.stringing
     if strung is None:
-        strings = f"strings at {tension}" if tension else f"strings {stiffness}"
+        strings = PLAIN_BED + (f" at {tension}" if tension else f", {stiffness}")
     elif tension:
         strings = f"{strung.describe(tension)}, {stiffness}"
     else:

@@ -1,11 +1,15 @@
 """The interactive page in a real browser: headless Chromium (Debian's package) driven by
 Playwright loads the page served by ``racket-impact app``, checks that no card's content
 overflows it and that the serve speed is in sight, chooses racket B and sees the difference
-B - A of the numbers shown, with no request leaving the machine (issues 14 and 28).  What
-the page computes and draws is tested without a browser too, and the port is bound before
+B - A of the numbers shown, "Recalculating" in place of "Ready." until all is drawn, and a
+new head speed drawing again only the plots it changes, with no request leaving the machine
+(issues 14, 28 and 45).  What the page computes and draws is tested without a browser too
+(one colour scale for both face maps, no axis label clipped), and the port is bound before
 the page's address is announced."""
 
+import importlib.util
 import os
+import pickle
 import re
 import shutil
 import socket
@@ -13,8 +17,10 @@ import subprocess
 import sys
 import urllib.request
 from dataclasses import replace
+from pathlib import Path
 
 import matplotlib
+import numpy as np
 import pytest
 
 from common.checks import shown
@@ -29,21 +35,25 @@ from studies.page.dashboard import (
     PageInputs,
     page_results,
 )
+from studies.page.plots import PLOTS, page_plots
 from studies.page.strokes import GROUNDSTROKE_RATIO
 from studies.strokes.stroke import stroke_table
 
 matplotlib.use("Agg")
 
+
+def _hook():
+    """The docs' page-picture hook (docs/hooks/page_picture.py): its Chromium flags, one list
+    for the build and this test."""
+    path = Path(__file__).resolve().parent.parent / "docs" / "hooks" / "page_picture.py"
+    spec = importlib.util.spec_from_file_location("docs_hook_page_picture", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
 CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
-CHROMIUM_FLAGS = [
-    "--no-sandbox",
-    "--disable-gpu",
-    "--disable-quic",
-    "--no-first-run",
-    "--disable-background-networking",
-    "--disable-component-update",
-    "--disable-sync",
-]  # without the background-networking flags Chromium keeps calling out (closed network)
+CHROMIUM_FLAGS = list(_hook().CHROMIUM_FLAGS)
 CARDS = (
     "card_serve", "card_groundstroke", "card_power", "card_sweet", "card_feel", "card_racket"
 )  # fmt: skip
@@ -171,6 +181,74 @@ def test_the_page_plots_one_quantity_each_with_legends_outside():
     assert heading.y1 <= face.figure.bbox.y1 and heading.y0 >= box.y1 - 8  # above the legend
 
 
+def _filled(ax):
+    """The filled contours of a face map's Axes."""
+    from matplotlib.contour import ContourSet
+
+    (filled,) = [c for c in ax.collections if isinstance(c, ContourSet) and c.filled]
+    return filled
+
+
+def test_the_face_maps_of_a_and_b_share_one_colour_scale():
+    r = page_results(PageInputs())
+    drawn = page_plots(r, PageInputs().swing_mph)
+    a, b = (_filled(PLOTS[key](**drawn[key])) for key in ("face_a", "face_b"))
+    assert list(a.levels) == list(b.levels)  # equal colours, equal e_A
+    assert (a.norm.vmin, a.norm.vmax) == (b.norm.vmin, b.norm.vmax)
+    assert a.colorbar.ax.get_ylim() == b.colorbar.ax.get_ylim()  # the two bars alike
+    both = np.r_[r.a.face.e_A.ravel(), r.b.face.e_A.ravel()]
+    assert a.levels[0] <= both.min() and both.max() <= a.levels[-1]  # the scale spans both
+    # each map on its own scale (as the page drew them before) would not compare
+    own = [_filled(PLOTS[key](**{**drawn[key], "levels": None})) for key in ("face_a", "face_b")]
+    assert list(own[0].levels) != list(own[1].levels)
+    # with B not built, A's map on its own scale
+    alone = page_results(PageInputs(racket_b=MY_SHEET, swingweight_kgcm2=370.0))
+    drawn = page_plots(alone, PageInputs().swing_mph)
+    assert "face_b" not in drawn
+    assert list(_filled(PLOTS["face_a"](**drawn["face_a"])).levels) == list(own[0].levels)
+
+
+def _clipped(fig) -> list[str]:
+    """The axis labels of ``fig`` (its Axes' and their secondary axes') not wholly inside it."""
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    out = []
+    for ax in fig.axes:
+        for axes in (ax, *ax.child_axes):
+            for label in (axes.xaxis.label, axes.yaxis.label):
+                box = label.get_window_extent(renderer)
+                inside = box.x0 >= 0 and box.y0 >= 0 and box.x1 <= fig.bbox.x1
+                if label.get_text() and not (inside and box.y1 <= fig.bbox.y1):
+                    out.append(label.get_text())
+    return out
+
+
+@pytest.mark.parametrize("width_px", [480, 740])  # a 1400 px window's card; a 1920 px one's
+def test_no_axis_label_of_the_page_s_plots_is_clipped(width_px):
+    drawn = page_plots(page_results(PageInputs()), PageInputs().swing_mph)
+    for key in ("serve_plot", "exit_plot", "power_plot"):
+        fig = PLOTS[key](**drawn[key]).figure
+        fig.set_size_inches(width_px / fig.dpi, 380 / fig.dpi)  # its card, as Shiny sizes it
+        fig.set_layout_engine("tight")  # as Shiny lays it out
+        assert _clipped(fig) == [], key
+    # the exit plot's label of before, "... off the strings [mph] (swing 70 mph)", was clipped
+    fig = PLOTS["exit_plot"](**drawn["exit_plot"]).figure
+    fig.axes[0].set_ylabel("ball speed off the strings [mph] (swing 70 mph)")
+    fig.set_size_inches(width_px / fig.dpi, 380 / fig.dpi)
+    fig.set_layout_engine("tight")
+    assert _clipped(fig) == ["ball speed off the strings [mph] (swing 70 mph)"]
+
+
+def test_a_new_head_speed_leaves_the_plots_at_rest_as_they_were():
+    # the page draws a plot again only when what it draws changes (pickled: studies/page/app.py)
+    before = page_plots(page_results(PageInputs()), 70.0)
+    after = page_plots(page_results(PageInputs(swing_mph=80.0)), 80.0)
+    same = {key for key in before if pickle.dumps(before[key]) == pickle.dumps(after[key])}
+    assert same == {"face_a", "face_b", "power_plot"}  # the racket at rest
+    other_b = page_plots(page_results(PageInputs(racket_b="pure-drive-2025")), 70.0)
+    assert pickle.dumps(other_b["face_b"]) != pickle.dumps(before["face_b"])
+
+
 def _free_port() -> int:
     with socket.socket() as s:
         s.bind(("127.0.0.1", 0))
@@ -257,6 +335,32 @@ _IN_SIGHT = """id => {
 }"""
 
 
+_STATUS_SEEN = """() => {
+    window.statusSeen = [];
+    const shown = id => {
+        const el = document.getElementById(id);
+        return el !== null && getComputedStyle(el).display !== 'none';
+    };
+    const note = () => window.statusSeen.push([
+        document.documentElement.classList.contains('shiny-busy'), shown('ready'), shown('busy')]);
+    new MutationObserver(note).observe(document.documentElement,
+        {attributes: true, attributeFilter: ['class']});
+    new MutationObserver(note).observe(document.getElementById('cards'),
+        {childList: true, subtree: true, characterData: true});
+}"""  # [Shiny busy, "Ready." shown, "Recalculating" shown] at each change of either or a card
+
+_DRAWN_AGAIN = """ids => {
+    window.drawnAgain = {};
+    for (const id of ids) {
+        window.drawnAgain[id] = 0;
+        new MutationObserver(() => window.drawnAgain[id]++).observe(document.getElementById(id),
+            {childList: true, subtree: true, attributes: true});
+    }
+}"""  # per plot, how often Shiny touched it (recalculating, a new image)
+
+_IDLE = "!document.documentElement.classList.contains('shiny-busy')"
+
+
 def _numbers(page, card: str) -> list[tuple[float, float, float]]:
     """(A, B, B - A) as shown, per column of ``card``."""
     count = page.locator(f"#{card} [id^='{card}_diff_']").count()
@@ -274,7 +378,7 @@ def _decimals(page, card: str, k: int) -> int:
     return len(text.split(".")[1]) if "." in text else 0
 
 
-def test_the_page_in_a_real_browser(served, tmp_path):
+def test_the_page_in_a_real_browser(served):
     if CHROMIUM is None:
         if os.environ.get("CI"):
             pytest.fail("CI must install Debian's chromium for the browser test (.ci/run)")
@@ -296,7 +400,7 @@ def test_the_page_in_a_real_browser(served, tmp_path):
         page.route("**/*", local_only)
         page.goto(served)
         page.locator("#card_serve_a_0").wait_for(timeout=180_000)  # may compile the solver
-        for plot in ("serve_plot", "exit_plot", "power_plot", "face_a", "face_b"):
+        for plot in PLOTS:
             page.wait_for_function(f"document.querySelector('#{plot} img') !== null",
                                    timeout=60_000)  # fmt: skip
         assert page.evaluate(_OVERFLOWS, list(CARDS)) == []
@@ -306,11 +410,19 @@ def test_the_page_in_a_real_browser(served, tmp_path):
         assert page.evaluate(_IN_SIGHT, "card_groundstroke_a_1"), "the forehand's spin"
         assert "kg cm²" in page.inner_text("#card_racket")
         serve_a, serve_b, _ = _numbers(page, "card_serve")[0]
+        page.wait_for_function(_IDLE)
+        assert page.is_visible("#ready") and page.is_hidden("#busy")
+        page.evaluate(_STATUS_SEEN)
         page.select_option("#racket_b", "pure-drive-2025")
         page.wait_for_function(
             "t => document.getElementById('card_serve_b_0')?.innerText !== t",
             arg=page.inner_text("#card_serve_b_0"), timeout=60_000,
         )  # fmt: skip
+        page.wait_for_function(_IDLE, timeout=60_000)
+        seen = page.evaluate("window.statusSeen")
+        assert [True, False, True] in seen  # at work: "Recalculating", no "Ready."
+        assert all(not ready and busy for working, ready, busy in seen if working), seen
+        assert seen[-1] == [False, True, False]  # all drawn: "Ready." again
         assert "pure-drive-2025" in page.inner_text("#card_racket")
         for card in CARDS:
             for k, (a, b, diff) in enumerate(_numbers(page, card)):
@@ -318,9 +430,18 @@ def test_the_page_in_a_real_browser(served, tmp_path):
         after_a, after_b, _ = _numbers(page, "card_serve")[0]
         assert after_a == serve_a and after_b != serve_b  # only B changed
         assert page.evaluate(_OVERFLOWS, list(CARDS)) == []
-        page.set_viewport_size({"width": 1400, "height": 2400})  # the whole page (docs/app.png)
-        page.wait_for_timeout(3000)  # the plots redrawn at their new sizes
-        page.screenshot(path=str(tmp_path / "page.png"))
+        # a new head speed: the plots of the racket at rest are not drawn again
+        page.evaluate(_DRAWN_AGAIN, list(PLOTS))
+        page.evaluate("$('#swing').data('ionRangeSlider').update({from: 80})")
+        page.wait_for_function("window.drawnAgain.exit_plot > 0", timeout=60_000)
+        page.wait_for_function(_IDLE, timeout=60_000)
+        again = page.evaluate("window.drawnAgain")
+        # the swung plots follow each value the slider passes; the plots at rest are not drawn
+        # again for them (at most once, when the cards' new text resizes the page: seen on a
+        # loaded machine)
+        swung = min(again["serve_plot"], again["exit_plot"])
+        assert swung > 0 and all(n <= 1 < swung or n == 0 for p, n in again.items()
+                                 if p not in ("serve_plot", "exit_plot")), again  # fmt: skip
+        assert "80 mph head speed" in page.inner_text("#card_serve")
         browser.close()
     assert outside == [], f"the page fetched from outside the machine: {outside}"
-    assert (tmp_path / "page.png").stat().st_size > 50_000

@@ -3,6 +3,7 @@ each against what it is calibrated to (the ITF's bands, the 254 cm drop, the ass
 30 m/s) and what it must not do (squash past its radius)."""
 
 import math
+import re
 import warnings
 from dataclasses import replace
 
@@ -229,6 +230,46 @@ def test_ball_command_lists_the_presets_and_reports_the_static_test_apart(capsys
     assert "static test" in out and "5.6-7.4 mm" in out and plot.stat().st_size > 0
     assert main(["ball", "punctured", "--speeds", "7.06"]) == 0
     assert "ITF forward" not in capsys.readouterr().out  # no ITF type admits it
+
+
+def test_ball_command_marks_the_rows_beyond_the_calibration(capsys, tmp_path):
+    """Issue 45: the real balls are calibrated up to 30 m/s (the assumed COR there); the rows
+    of ``racket-impact ball`` above it say they are the law's extrapolation, in the printed
+    table, the table written and its conditions (the sidecar's); a run within it, or of a
+    ball with no such calibration, says nothing of it."""
+    import json
+
+    import pandas as pd
+
+    from ball.catalog import CALIBRATION_SPEED
+    from studies.cli import main
+
+    table = tmp_path / "b.csv"
+    assert main(["ball", "itf-type-2", "--out", str(table)]) == 0
+    out = capsys.readouterr().out
+    rows = pd.read_csv(table)
+    assert (rows["calibrated"] == (rows["speed_m_s"] <= CALIBRATION_SPEED)).all()
+    assert rows["calibrated"].any() and not rows["calibrated"].all()
+    last = rows[rows["calibrated"]].iloc[-1]  # the fastest row said calibrated is the COR's
+    assert last["e"] == pytest.approx(COR_AT_30, abs=1e-3)
+    printed = {line.split()[0]: line.split()[-1] for line in out.splitlines()
+               if re.match(r"\s*\d", line) and len(line.split()) == 6}  # fmt: skip
+    for speed, calibrated in zip(rows["speed_m_s"], rows["calibrated"], strict=True):
+        assert printed[f"{speed:.3g}"] == ("yes" if calibrated else "no")
+    said, fastest = " ".join(out.split()), f"{CALIBRATION_SPEED:g} m/s"
+    assert f'rows calibrated "no": above {fastest}, the fastest the real balls are' in said
+    assert "the law is extrapolated" in said
+    record = json.loads((tmp_path / "b.csv.meta.json").read_text())
+    assert (
+        f"the rows above {fastest}, the fastest the real balls are calibrated at, "
+        "extrapolated" in record["conditions"]
+    )
+    assert main(["ball", "itf-type-2", "--speeds", "7.06", "20"]) == 0
+    out = capsys.readouterr().out
+    assert "extrapolated" not in out and " no" not in out
+    assert main(["ball", "baseball", "--speeds", "40", "70"]) == 0
+    out = capsys.readouterr().out
+    assert "calibrated" not in out
 
 
 def test_the_zero_cor_twin_of_a_real_ball_serves_slower():

@@ -14,7 +14,9 @@ from clihelpers import help_text, refusal, run_main, run_ok, run_writing, sideca
 
 from ball import BASEBALL_PRESETS, DEFAULT_BASEBALL
 from bat import DEFAULT_BAT
+from bat import certification as cert
 from common.units import MPH
+from studies.bat.certification import BBCOR_UNCERTAINTY
 from studies.bat.sweep import DEFAULT_SWING, PITCH_SPEED, _preset, bat_sweep
 from studies.cli import build_parser
 from studies.cli.show import WIDTH
@@ -79,6 +81,77 @@ def test_bbcor_prints_and_writes_the_certification_numbers(tmp_path):
         assert column in rows
     assert rows["test_speed_mph"].iloc[0] == pytest.approx(136.0)
     assert "BBCOR" in out and "136 mph" in out and "the limit 0.500" in out
+
+
+def _said(out: str) -> str:
+    """The printed lines unwrapped (a wrapped line's indent joined back)."""
+    return " ".join(out.split("\n  "))
+
+
+@pytest.fixture(scope="module")
+def wood_and_alloy(tmp_path_factory):
+    """``racket-impact bat bbcor --bat r161 alloy``: both bats near the limit."""
+    return run_writing(["bat", "bbcor", "--bat", "r161", "alloy"],
+                       tmp_path_factory.mktemp("bbcor"), "c.csv")  # fmt: skip
+
+
+def test_a_bbcor_within_the_models_uncertainty_of_the_limit_is_not_called(wood_and_alloy):
+    """The wooden R161 and the alloy land within BBCOR_UNCERTAINTY of the limit: each line
+    says by how much and that the model cannot call it, as does the table's verdict."""
+    rows = pd.read_csv(wood_and_alloy["table"]).set_index(["bat", "method"])
+    said = _said(wood_and_alloy["out"])
+    for bat in ("r161", "alloy"):
+        rig = rows.loc[(bat, "pivoted rig")]
+        margin = rig["bbcor"] - cert.BBCOR_LIMIT
+        assert abs(margin) < BBCOR_UNCERTAINTY and rig["verdict"] == "cannot call"
+        side = "above" if margin > 0 else "below"
+        line = (f"{bat}: BBCOR {rig['bbcor']:.4f} at {rig['position_from_knob_cm']:.1f} cm from "
+                f"the knob, {abs(margin):.4f} {side} the limit 0.500: within the model's "
+                f"uncertainty of the limit (+/- {BBCOR_UNCERTAINTY:.2f}")  # fmt: skip
+        assert line in said, said
+    assert "passes the limit" not in said and "fails the limit" not in said
+
+
+def test_the_hollow_bat_says_a_beam_has_no_trampoline_wall(wood_and_alloy, tmp_path):
+    said = _said(wood_and_alloy["out"])
+    assert "alloy: hollow, but a beam has no wall: the trampoline effect" in said
+    assert "r161: hollow" not in said
+    record = sidecar(wood_and_alloy)  # the sidecar's conditions are the header's
+    assert "alloy: hollow, without its wall's trampoline effect (a beam)" in record["conditions"]
+    out, _ = run_ok(["bat", "--bat", "alloy", "--points", "3"])
+    assert "alloy: hollow, but a beam has no wall" in _said(out)
+    out, _ = run_ok(["bat", "--points", "3"])
+    assert "hollow" not in out
+
+
+@pytest.mark.parametrize(("ball", "verdict"), [("baseball-low-speed", "fails"),
+                                               ("softball-44-375", "passes")])  # fmt: skip
+def test_a_verdict_far_from_the_limit_is_said_bare(ball, verdict, tmp_path):
+    """A ball of e0 0.66 or 0.44 puts the R161's BBCOR far from the limit: the verdict is
+    said plainly, without the uncertainty."""
+    table = tmp_path / "c.csv"
+    out, _ = run_ok(["bat", "bbcor", "--ball", ball, "--out", str(table)])
+    rig = pd.read_csv(table).set_index("method").loc["pivoted rig"]
+    assert abs(rig["bbcor"] - cert.BBCOR_LIMIT) > BBCOR_UNCERTAINTY
+    assert rig["verdict"] == verdict
+    said = _said(out)
+    assert f"from the knob {verdict} the limit 0.500 (ball's own COR" in said
+    assert "uncertainty" not in said and "hollow" not in said
+
+
+def test_feel_says_what_the_bat_leaves_out(tmp_path):
+    """Nathan's bat, free and undamped: one line says the bat's own damping and the hands'
+    are left out, and the conditions (the sidecar's) say so too; a damped bat in the hands
+    leaves nothing out, and no line is printed."""
+    run = run_writing(["bat", "feel", "--duration-ms", "3"], tmp_path, "f.csv")
+    said = _said(run["out"])
+    assert "Left out: the bat's own damping and the hands': the ringing never dies away" in said
+    assert "left out: the bat's own damping and the hands'" in sidecar(run)["conditions"]
+    path = tmp_path / "damped.toml"
+    path.write_text(BAT_TOML + "damping = 0.05\n")
+    out, _ = run_ok(["bat", "feel", "--bat", str(path), "--support", "hand-held",
+                     "--duration-ms", "3"])  # fmt: skip
+    assert "left out" not in out.lower()
 
 
 def test_feel_writes_the_handles_motion_at_the_points_asked(tmp_path):

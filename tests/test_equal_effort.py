@@ -49,7 +49,7 @@ def test_compare_equal_effort_prints_both_head_and_exit_speeds(tmp_path, capsys)
     out = capsys.readouterr().out
     lines = out.splitlines()
     top = next(i for i, line in enumerate(lines) if line.startswith("quantity"))  # under the
-    assert "(equal effort)" in " ".join(lines[:top])  # conditions, which say the effort
+    assert "(equal effort)" in " ".join(" ".join(lines[:top]).split())  # the conditions say it
     cells = [re.split(r"\s{2,}", line.strip()) for line in lines[top + 1 :]]
     rows = {row[0]: row[1:] for row in cells}
     assert "lead" in lines[top]  # the rackets side by side

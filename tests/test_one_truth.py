@@ -123,7 +123,9 @@ def test_every_printed_table_has_a_header_naming_racket_ball_and_speed(words, ca
     first = out.splitlines()[0]
     assert first.startswith("racket ") and DEFAULT_RACKET in first
     if words[0] not in ("modes",):
-        header = " ".join(line.strip() for line in out.splitlines()[:2])  # wrapped at WIDTH
+        lines = out.splitlines()
+        wrapped = next(i for i, line in enumerate(lines[1:], 1) if not line.startswith("  "))
+        header = " ".join(line.strip() for line in lines[:wrapped])  # wrapped at WIDTH
         assert f"ball {DEFAULT_BALL}" in header
 
 

@@ -15,7 +15,7 @@ import pytest
 
 from common.units import LB, MPH
 from racket import CATALOG, DEFAULT_RACKET, MATERIALS, STRINGS, default_ball, from_specs, impact
-from racket.specs.catalog import STRUNG
+from racket.specs.strung import STRUNG
 from racket.strings.material import material_key
 from racket.strings.stringing import HYBRID, stringing
 from studies.conditions import racket_details

@@ -56,7 +56,7 @@ CARDS = (
 )  # fmt: skip
 SPIN_CARDS = {
     "card_serve": [
-        ("serve_mph", None, None, 1),  # head-on: test_one_serve_is_the_api_s
+        ("flat_serve_mph", "flat-serve", "exit_speed_mph", 1),
         ("flat_serve_spin_rpm", "flat-serve", "spin_rpm", 0),
         ("kick_serve_mph", "kick-serve", "exit_speed_mph", 1),
         ("kick_serve_spin_rpm", "kick-serve", "spin_rpm", 0),
@@ -153,12 +153,40 @@ def test_the_strokes_with_spin_are_racket_impact_stroke_s(page, tmp_path, capsys
         one = getattr(page, side).summary
         for card, columns in SPIN_CARDS.items():
             for k, (key, name, column, digits) in enumerate(columns):
-                if name is not None:  # the spin amplifies the impact's round-off
-                    assert one[key] == pytest.approx(api.loc[name, column], rel=SPIN_ROUND_OFF)
+                # the spin amplifies the impact's round-off
+                assert one[key] == pytest.approx(api.loc[name, column], rel=SPIN_ROUND_OFF)
                 shown = re.search(rf'id="{card}_{side}_{k}"[^>]*>([^<]*)<', html)[1]
                 assert shown == f"{one[key]:.{digits}f}", (card, k)
     assert summary["flat_serve_mph"] > summary["kick_serve_mph"]  # as measured (issue 36)
     assert summary["flat_serve_spin_rpm"] < summary["kick_serve_spin_rpm"]
+
+
+def _card(html: str, card: str, row: str) -> list[str]:
+    """The numbers of ``row`` ("a", "b") of ``card`` as the page shows them."""
+    return re.findall(rf'id="{card}_{row}_\d+"[^>]*>([^<]*)<', html)
+
+
+def test_the_serve_card_s_speed_and_spin_come_from_one_stroke(tmp_path, capsys):
+    # each serve's speed beside its own spin, both racket-impact stroke's for the same racket,
+    # ball and head speed (issue 45: the head-on serve's speed stood beside the flat's spin)
+    chosen = PageInputs(racket_b="pure-drive-2025", swing_mph=85.0)
+    r = page_results(chosen)
+    html = str(headline_cards(r, chosen.swing_mph))
+    card = html.split('id="card_serve"')[1].split("</thead>")[0]
+    assert re.findall(r'<th class="unit text-end">\s*(.*?)<br/>', card) == [
+        "flat-serve", "its spin", "kick-serve", "its spin"
+    ]  # fmt: skip
+    assert "flat-serve and the kick-serve at 85 mph head speed" in html
+    for row, name in (("a", chosen.racket), ("b", chosen.racket_b)):
+        cli = _stroke_cli(capsys, tmp_path, "flat-serve", "kick-serve", "--racket", name,
+                          "--head-speed-mph", "85")  # fmt: skip
+        flat, kick = cli.loc["flat-serve"], cli.loc["kick-serve"]
+        assert _card(html, "card_serve", row) == [
+            f"{flat['exit_speed_mph']:.1f}", f"{flat['spin_rpm']:.0f}",
+            f"{kick['exit_speed_mph']:.1f}", f"{kick['spin_rpm']:.0f}",
+        ]  # fmt: skip
+        head_on = getattr(r, row).summary["serve_mph"]  # the serve plot's, not the card's
+        assert f"{head_on:.1f}" not in _card(html, "card_serve", row)
 
 
 def test_one_sweep_point_is_the_api_s(page):
@@ -234,10 +262,11 @@ def test_every_card_names_its_conditions(page):
     assert bed == bed_words(sideways(page.b.racket.strings))
     assert "mains and crosses sliding on dry crossings" in bed and "ball-string friction" in bed
     serves, ground = said["serve_spin"], said["groundstroke"]
-    assert serves.startswith(said["serve"])  # the head-on serve's line first
+    assert serves.startswith(said["racket"])  # no head-on serve's line: not this card's
+    assert "the ball at rest" not in serves and "about the wrist" not in serves
     for part in ("flat-serve at 70 mph head speed (the page's), path 0°, face 7° closed",
                  "kick-serve at 70 mph head speed (the page's), path 5° up, 45° across to the "
-                 "right, face 0°", "the ball tossed at 3.36 mph falling at 60°",
+                 "right, face 0°", f"ball {DEFAULT_BALL} tossed at 3.36 mph falling at 60°",
                  "at the string centre, the racket moving with it (no pivot)", bed):  # fmt: skip
         assert part in serves, part
     ground_mph = shown(round(GROUNDSTROKE_RATIO * PageInputs().swing_mph, 6))

@@ -114,18 +114,19 @@ SPIN_GROUPS = ("bounce", "spin", "stroke", "court")
 
 def test_no_calibration_row_was_lost_and_validation_gained(table):
     """Before the real bed: validation 13 of 26, calibration 13 of 16 (the 16 still agree
-    as they did; the new calibration rows are the string bed's)."""
+    as they did, and the ball's compression on concrete since its band is the presets' one,
+    issue 45; the new calibration rows are the string bed's)."""
     old_calibration = ("rebound", "concrete", "savage", "ra")
     first = table.index.str.split("-").str[0]
     kept = table[first.isin(old_calibration)]
-    assert len(kept) == 16 and kept["agrees"].sum() == 13
+    assert len(kept) == 16 and kept["agrees"].sum() == 14
     validation = table[(table["kind"] == "validation") & ~first.isin(SPIN_GROUPS)]
     assert len(validation) == 26 and validation["agrees"].sum() > 13
 
 
-@pytest.mark.xfail(strict=True, reason="17 of 26 agree (13 before the real bed, 19 without "
-                   "its mass): Cross's 1 m drop, six of Hamori's dwell times and two "
-                   "throats")  # fmt: skip
+@pytest.mark.xfail(strict=True, reason="16 of 26 agree (13 before the real bed, 19 without "
+                   "its mass): Cross's 1 m drop, six of Hamori's dwell times, two throats "
+                   "and TWU's 3 o'clock with lead (strung by the one rule, issue 45)")  # fmt: skip
 def test_at_least_22_of_26_validation_rows_agree(table):
     first = table.index.str.split("-").str[0]
     validation = table[(table["kind"] == "validation") & ~first.isin(SPIN_GROUPS)]

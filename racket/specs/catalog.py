@@ -23,6 +23,7 @@ from dataclasses import dataclass, field
 
 from racket.racket import Racket
 from racket.specs.fit import from_specs
+from racket.specs.strung import STRUNG, STRUNG_SOURCES
 
 ASSUMED_F1 = 150.0
 """First free-free frequency [Hz] assumed where a sheet gives no frame stiffness (the
@@ -40,18 +41,6 @@ _RECORDED = (
 PAPER_TENSION = "the paper, Sec. VIII: 55 lb is typical of most rackets"
 _TWU_PATTERN = "TWU racquet table (tests/data/twu_racquets_half.csv), String Pattern of the {}"
 
-STRUNG = dict(string="polyester", gauge="16L", pattern=(16, 19))
-"""What a catalogue racket is strung with unless its entry says otherwise: fresh polyester
-16L, 16x19 (an assumption, see the module docstring)."""
-
-STRUNG_SOURCES = dict(
-    string="an assumption: fresh polyester, the commonest string (TWU string database: 406 "
-    "polyesters, 213 nylons, 15 guts; data/measurements.md sec. 5)",
-    gauge="an assumption: 16L (1.25 mm), polyester's usual gauge",
-    pattern="an assumption: 16x19, the commonest pattern (377 of the 622 rackets of "
-    "tests/data/twu_racquets_half.csv)",
-)
-"""Where each of :data:`STRUNG` comes from."""
 OUNCE = 0.028349523125
 """One ounce [kg] (US spec sheets quote strung weight in oz)."""
 

@@ -25,6 +25,7 @@ from racket.specs.stiffness import (
     flex_test_stiffness,
     torsional_profile,
 )
+from racket.specs.strung import LINEAR, STRUNG
 from racket.strings.bed import StringBed
 from racket.strings.stringing import stringing
 
@@ -203,15 +204,20 @@ def from_specs(
     string : str, optional
         What the racket is strung with (:func:`racket.strings.stringing.stringing`: a preset such
         as ``"polyester"``, or ``"MAINS/CROSSES"``): the bed's stiffness then follows from
-        the tension, the pattern and the state, and it gains the string's stretch and loss
-        (with ``string_stiffness_n_m``, that stiffness is kept, as measured).  None
-        (default): the paper's linear, lossless bed.
+        the tension, the pattern and the state, and it gains the string's stretch, loss and
+        moving mass (with ``string_stiffness_n_m``, that stiffness is kept, as measured).
+        Default: the rule for every racket that names no strings,
+        :data:`racket.specs.strung.STRUNG` (fresh polyester 16L, 16x19, an assumption), as
+        the catalogue, a TOML sheet and the page string it.  ``"linear"``
+        (:data:`~racket.specs.strung.LINEAR`): the paper's linear, lossless, massless spring
+        of the sheet's stiffness, by name.
     gauge : float or str, optional
-        The string's gauge [m], or a name ("16L"); default the preset's (with ``string``).
+        The string's gauge [m], or a name ("16L"); default the preset's (16L for the default
+        string).
     pattern : str or (int, int), optional
-        Mains x crosses [-], "16x19" (default) (with ``string``).
+        Mains x crosses [-], "16x19" (default).
     state : str, optional
-        ``"fresh"`` (default) or ``"played"`` (with ``string``).
+        ``"fresh"`` (default) or ``"played"``.
     support : str
         As in :class:`~racket.Racket` ("free", "clamped-head" or "hand-held").
 
@@ -235,14 +241,21 @@ def from_specs(
     >>> round(racket.beam.swingweight_kgcm2, 6), round(racket.beam.twistweight_kgcm2, 1)
     (325.0, 14.8)
     """
-    strung = dict(gauge=gauge, pattern=pattern, state=state)
-    if string is None and any(value is not None for value in strung.values()):
-        given = next(name for name, value in strung.items() if value is not None)
-        raise ValueError(f"{given} describes a string: give string too (e.g. 'polyester')")
+    if string == LINEAR:
+        given = [name for name, value in dict(gauge=gauge, pattern=pattern, state=state).items()
+                 if value is not None]  # fmt: skip
+        if given:
+            raise ValueError(
+                f"{given[0]} describes a string, and string={LINEAR!r} is the paper's plain "
+                "spring with none: drop it, or name a string (e.g. 'polyester')"
+            )
+    elif string is None:  # the one rule for a racket that names no strings
+        string, gauge = STRUNG["string"], STRUNG["gauge"] if gauge is None else gauge
+        pattern = STRUNG["pattern"] if pattern is None else pattern
     sheet = spec_sheet(**specs)
     beam, profile = fit_profile(sheet)
     lay = profile.layout
-    if string is None:
+    if string == LINEAR:
         strings = StringBed(
             sheet.string_stiffness, lay.strings_extent, lay.strings_width, profile="membrane"
         )

@@ -3,9 +3,11 @@ the numbers the string bed needs (axial stiffness, energy return, tension loss, 
 density), each number with its source or marked as an assumption.
 
 The single-string numbers are TWU's (Tennis Warehouse University's string database, as
-scraped; medians over the strings of each material, ``data/measurements.md`` sec. 5).  TWU
-groups synthetic gut and multifilament with nylon, so multifilament takes the nylon group's
-numbers: the database gives no separate row for it.
+scraped; medians over the strings of each material, ``data/measurements.md`` sec. 5; the
+stiffness test reconstructed in sec. 8, :mod:`racket.strings.twu_test`).  TWU records the
+polymer, not the construction, and puts multifilaments with nylon; their own numbers come
+from the same scrapes with the strings labelled by name (``data/twu_multifilament``): about 5 %
+less stiff than the other nylons, with a little more friction.
 """
 
 from __future__ import annotations
@@ -13,28 +15,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from common.checks import in_range, positive
-from common.units import INCH, LB
-
-TWU_LENGTH = 0.30
-"""Length [m] of the string sample in TWU's dynamic stiffness test, which turns its
-single-string stiffness k [lb/in] into the axial stiffness EA = k L [N].  **An assumption**:
-TWU's pages describe the test (a string at 51 lb hit by a quick impact, "how many pounds of
-force it takes to stretch the string one inch"; TWU, "String Stiffness: the Alpha and Omega
-of String Performance", Lindsey) but no sample length was found; 0.30 m is about a main
-string's free length in a 100 in^2 head.  Plausible range 0.20-0.40 m: the bed's stretch
-(:meth:`racket.strings.stringing.Stringing.stretch`) is proportional to EA, so it moves by -33 % to
-+33 % over that range (a polyester 16L bed at 55 lb on 100 in^2: about 680 to 1360 1/m^2
-instead of 1020); on the default racket at the string centre that moves e_A at 16.5 m/s
-over 0.431-0.425, the dwell time at 30 m/s over 4.34-4.16 ms and the serve over 1.419-1.404
-times the head speed.  At 0.30 m the moduli E = EA / A are 8.6 GPa (polyester, 1.25 mm),
-6.2 GPa (nylon, 1.30 mm) and 3.7 GPa (gut, 1.30 mm): in the range of drawn polymer fibres
-and collagen, stiffer than the bulk polymers' 2-4 GPa, as an impact's dynamic modulus is."""
-
-TWU_TENSION = 51.0 * LB
-"""Tension [N] of TWU's single-string tests: 51 lb (``data/measurements.md`` sec. 5)."""
-
-LB_PER_IN = LB / INCH
-"""One pound-force per inch [N/m] (TWU quotes string stiffness in lb/in): 175.1 N/m."""
+from common.units import LB
+from racket.strings.twu_test import LB_PER_IN, TwuTest
 
 
 @dataclass(frozen=True)
@@ -47,10 +29,11 @@ class Material:
         The name as printed ("polyester", "natural gut").
     aliases : tuple of str
         Other names a user may type for it ("poly", "gut"), lower case, hyphenated.
-    twu_stiffness : float
-        Single-string dynamic stiffness in TWU's test at 51 lb [N/m] (:data:`TWU_LENGTH`).
+    twu : TwuTest
+        TWU's single-string test at 51 lb: its secant stiffnesses and the tension at impact
+        (:mod:`racket.strings.twu_test`).
     reference_gauge : float
-        The gauge [m] ``twu_stiffness`` is taken to belong to (the usual gauge of the
+        The gauge [m] ``twu`` is taken to belong to (the usual gauge of the
         material; **an assumption**: TWU's medians mix gauges).
     energy_return : float
         Fraction [-] of the energy of TWU's single-string impact the string returns.
@@ -66,7 +49,7 @@ class Material:
 
     name: str
     aliases: tuple
-    twu_stiffness: float
+    twu: TwuTest
     reference_gauge: float
     energy_return: float
     tension_loss: float
@@ -75,24 +58,28 @@ class Material:
     ball_friction: float
 
     def __post_init__(self):
-        positive(f"{self.name} twu_stiffness", self.twu_stiffness, "N/m")
+        if not isinstance(self.twu, TwuTest):
+            raise TypeError(f"{self.name} twu must be a TwuTest, got {self.twu!r}")
         in_range(f"{self.name} reference_gauge", self.reference_gauge, 1e-3, 1.5e-3, "m")
         for fraction in ("energy_return", "tension_loss", "friction", "ball_friction"):
             in_range(f"{self.name} {fraction}", getattr(self, fraction), 0.0, 1.0)
         positive(f"{self.name} density", self.density, "kg/m^3")
 
-    def axial_stiffness(self, gauge: float) -> float:
-        """Axial stiffness EA [N] of a string of this material and ``gauge``:
-        EA = k_TWU L_TWU (gauge / reference gauge)**2 (the cross-section's area scales with
-        the gauge squared; :data:`TWU_LENGTH`).
+    def axial_stiffness(self, gauge: float, tension: float) -> float:
+        """Axial stiffness EA [N] of a string of this material and ``gauge`` at ``tension``
+        in a bed: TWU's secant EA at the same stress (:meth:`TwuTest.axial_stiffness` at
+        tension (g0 / gauge)**2), times (gauge / g0)**2, g0 the reference gauge (the
+        cross-section's area scales with the gauge squared).
 
         Parameters
         ----------
         gauge : float
             The string's diameter [m].
+        tension : float
+            Its tension in the bed [N].
         """
         scale = (positive("gauge", gauge, "m") / self.reference_gauge) ** 2
-        return self.twu_stiffness * TWU_LENGTH * scale
+        return scale * self.twu.axial_stiffness(positive("tension", tension, "N") / scale)
 
 
 _TWU = "TWU string database (scraped), median over the material, data/measurements.md sec. 5"
@@ -100,7 +87,12 @@ _PET = "PET 1370-1390 kg/m^3 (24kjx.com.cn, 'Common plastic density reference ta
 _PA66 = "nylon 66 (PA66) 1140 kg/m^3 (matmake.com, 'Density of common polymers and plastics')"
 
 MATERIAL_SOURCES = {
-    "twu_stiffness": _TWU + ": polyester about 200, nylon 157, gut 94 lb/in at 51 lb",
+    "twu": (
+        "TWU string database (2019 scrape), medians over the material at 51 lb, reconstructed "
+        "in data/measurements.md sec. 8: k at Slow / Medium / Fast 254 / 225 / 204 lb/in "
+        "(polyester, 294 strings), 167 / 169 / 162 (nylon, 148), 100 / 102 / 97 (natural gut, "
+        "12); tension at impact 28 / 40 / 43 lb"
+    ),
     "energy_return": _TWU + ": 89.7 / 94.7 / 96.6 %",
     "tension_loss": _TWU + ": 44.8 / 21.7 / 15.3 % in TWU's impact test",
     "friction": _TWU + ": string-string COF 0.086 / 0.108 / 0.149",
@@ -114,25 +106,42 @@ MATERIAL_SOURCES = {
         "an assumption: polyester 1.25 mm (16L), the others 1.30 mm (16), each material's "
         "usual gauge"
     ),
-    "multifilament": "TWU groups multifilament with nylon (synthetic gut): the nylon numbers",
+    "multifilament": (
+        "its own rows of the TWU string database, labelled by name from retailers' lists "
+        "(data/twu_multifilament/README.md, 78 strings): k at 51 lb 162 / 166 / 155 lb/in, "
+        "tension at impact 40.3 lb, energy return 94.9 %, tension loss 21.3 %, string-string "
+        "COF 0.117, string-ball COF 0.435; density and gauge nylon's"
+    ),
 }
 """Where each number of :data:`MATERIALS` comes from."""
 
+
+def _twu(slow: float, medium: float, fast: float, impact_lb: float) -> TwuTest:
+    """A :class:`TwuTest` from TWU's units: k at Slow, Medium, Fast [lb/in], the tension at
+    impact [lb].
+    """
+    return TwuTest(tuple(k * LB_PER_IN for k in (slow, medium, fast)), impact_lb * LB)
+
+
 MATERIALS = {
     "polyester": Material(
-        "polyester", ("poly", "co-poly", "copoly", "co-polyester"), 200.0 * LB_PER_IN,
+        "polyester", ("poly", "co-poly", "copoly", "co-polyester"),
+        _twu(254.0, 225.0, 204.0, 28.0),
         1.25e-3, 0.897, 0.448, 0.086, 1380.0, 0.444,
     ),
     "nylon": Material(
-        "nylon", ("synthetic-gut", "syn-gut", "synthetic"), 157.0 * LB_PER_IN,
+        "nylon", ("synthetic-gut", "syn-gut", "synthetic"),
+        _twu(167.0, 169.0, 162.0, 40.0),
         1.30e-3, 0.947, 0.217, 0.108, 1140.0, 0.425,
     ),
     "multifilament": Material(
-        "multifilament", ("multi",), 157.0 * LB_PER_IN,
-        1.30e-3, 0.947, 0.217, 0.108, 1140.0, 0.425,
+        "multifilament", ("multi",),
+        _twu(162.0, 166.0, 155.0, 40.3),
+        1.30e-3, 0.949, 0.213, 0.117, 1140.0, 0.435,
     ),
     "natural-gut": Material(
-        "natural gut", ("gut",), 94.0 * LB_PER_IN,
+        "natural gut", ("gut",),
+        _twu(100.0, 102.0, 97.0, 43.0),
         1.30e-3, 0.966, 0.153, 0.149, 1300.0, 0.417,
     ),
 }  # fmt: skip

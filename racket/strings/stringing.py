@@ -24,8 +24,9 @@ from common.checks import (
     shown,
 )
 from common.typechecks import choice
-from common.units import KP_PER_CM, LB
+from common.units import LB
 from racket.strings.bed import StringBed
+from racket.strings.ert import dt_reading
 from racket.strings.head import HEAD_ASPECT
 from racket.strings.material import MATERIALS, Material, material_key
 from racket.strings.sizes import REFERENCE_PATTERN, diameter, parse_pattern
@@ -46,8 +47,8 @@ LOSS_PER_RETURN = 0.3
 reaches the bed's loss [-]: **an assumption**, bounded by Kawazoe's "regardless of type",
 which keeps every material's steel-ball COR within 0.97 +/- 0.01 (0 to 0.4 would: polyester
 at 0.4 loses 7.9 %, the band's edge).  Over the whole band of loss (3.96-7.84 %) the default
-racket's e_A at the string centre (16.5 m/s) moves over 0.437-0.427 and its serve over
-1.419-1.409 times the head speed."""
+racket's e_A at the string centre (16.5 m/s) moves by about 0.01, its serve by about 0.01
+times the head speed."""
 
 LOSS_BAND = (1.0 - (STEEL_BALL_COR + 0.01) ** 2, 1.0 - (STEEL_BALL_COR - 0.01) ** 2)
 """The bed losses [-] a steel-ball COR of 0.97 +/- 0.01 allows: 3.96-7.84 %."""
@@ -80,10 +81,16 @@ class String:
             object.__setattr__(self, "material", MATERIALS[key])
         object.__setattr__(self, "gauge", diameter(self.gauge))
 
-    @property
-    def axial_stiffness(self) -> float:
-        """EA [N] (:meth:`racket.strings.material.Material.axial_stiffness`)."""
-        return self.material.axial_stiffness(self.gauge)
+    def axial_stiffness(self, tension: float) -> float:
+        """EA [N] at ``tension`` [N] in a bed
+        (:meth:`racket.strings.material.Material.axial_stiffness`).
+
+        Parameters
+        ----------
+        tension : float
+            The string's tension [N].
+        """
+        return self.material.axial_stiffness(self.gauge, tension)
 
     @property
     def linear_density(self) -> float:
@@ -118,6 +125,11 @@ HYBRID = "natural-gut/polyester"
 """The hybrid offered beside the presets (``racket-impact strings``, the page): natural-gut
 mains, polyester crosses, the classic hybrid (**an assumption**: no survey of hybrids was
 found)."""
+
+LINEAR = "linear"
+"""The ``string`` that asks for the paper's bed by name: a linear, lossless, massless spring
+(R. Cross, Am. J. Phys. 68, 2000, Sec. VIII) of the bed's stiffness, with no string, gauge,
+pattern or state (:func:`restrung`, :func:`racket.specs.from_specs`)."""
 
 STRING_CHOICES = (*STRINGS, HYBRID)
 """The strings offered to compare: every preset of :data:`STRINGS` and :data:`HYBRID`."""
@@ -216,19 +228,26 @@ class Stringing:
         return string_bed_stiffness(self.bed_tension, area) * self.pattern_factor
 
     def dt(self, area: float) -> float:
-        """The ERT's dynamic tension [kp/cm]: :meth:`stiffness` / 980.665 N/m.
+        """The ERT's dynamic tension [kp/cm]: the force that deflects the bed 1 cm, per cm,
+        :meth:`stiffness` (1 + :meth:`stretch` (1 cm)**2) / 980.665 N/m
+        (:func:`racket.strings.ert.dt_reading`).
 
         Parameters
         ----------
         area : float
             The bed's area [m^2].
         """
-        return self.stiffness(area) / KP_PER_CM
+        return dt_reading(self.stiffness(area), self.stretch(area))
 
-    @property
-    def axial_stiffness(self) -> float:
-        """EA [N], the mean of the mains' and the crosses'."""
-        return 0.5 * (self.mains.axial_stiffness + self.crosses.axial_stiffness)
+    def axial_stiffness(self, tension: float) -> float:
+        """EA [N] at ``tension`` [N], the mean of the mains' and the crosses'.
+
+        Parameters
+        ----------
+        tension : float
+            The strings' tension in the bed [N].
+        """
+        return 0.5 * (self.mains.axial_stiffness(tension) + self.crosses.axial_stiffness(tension))
 
     def stretch(self, area: float, stiffness: float | None = None) -> float:
         """How fast the bed stiffens as it deflects [1/m^2]: F = k w (1 + stretch w**2).
@@ -238,8 +257,9 @@ class Stringing:
         that, and F = 2 T' w / l with l its half length: F = (4 T / L) w +
         (8 (EA - T) / L**3) w**3 to third order, so stretch = 2 (EA - T) / (T L**2).  T is
         the bed's tension, L the diameter of the circle of the bed's area and EA the mean
-        of the mains' and crosses' (**assumptions**: the bed stiffens as its middle string
-        does).
+        of the mains' and crosses' at that tension, TWU's secant over an impact's strain
+        step (:mod:`racket.strings.twu_test`) (**assumptions**: the bed stiffens as its
+        middle string does).
 
         Parameters
         ----------
@@ -256,7 +276,7 @@ class Stringing:
             per_newton = string_bed_stiffness(1.0, area) * self.pattern_factor  # k is linear in T
             tension = stiffness / per_newton
         length = 2.0 * np.sqrt(area / np.pi)
-        return 2.0 * (self.axial_stiffness - tension) / (tension * length**2)
+        return 2.0 * (self.axial_stiffness(tension) - tension) / (tension * length**2)
 
     @property
     def loss(self) -> float:
@@ -320,8 +340,9 @@ class Stringing:
         profile : str, optional
             ``"membrane"`` (default) or ``"uniform"``.
         stiffness : float, optional
-            A measured stiffness [N/m] (the ERT's DT x :data:`common.units.KP_PER_CM`)
-            instead of the tension's; the stretch then follows from it.
+            A measured stiffness [N/m] at the centre (from an ERT's DT:
+            :func:`racket.strings.ert.stiffness_from_dt`) instead of the tension's; the
+            stretch then follows from it.
         """
         shape = StringBed(1.0, extent, width, profile)
         k = self.stiffness(shape.area) if stiffness is None else stiffness
@@ -393,15 +414,16 @@ def restrung(bed: StringBed, string=None, gauge=None, pattern=None, state=None, 
     """``bed`` strung again: what is given replaces the bed's, the rest is kept (a new
     ``string`` comes at its own gauge unless ``gauge`` is given).  A bed with no stringing
     (the paper's spring) gains one only with ``string``, keeping its stiffness; a
-    ``stiffness`` (measured: the ERT's DT x :data:`common.units.KP_PER_CM`) replaces the
-    tension's.  The tension itself is :func:`racket.specs.restring.with_tension`'s.
+    ``stiffness`` (measured; from an ERT's DT: :func:`racket.strings.ert.stiffness_from_dt`)
+    replaces the tension's.  The tension itself is :func:`racket.specs.restring.with_tension`'s.
 
     Parameters
     ----------
     bed : StringBed
         The bed to restring.
     string : str, optional
-        A preset (:data:`STRINGS`) or "MAINS/CROSSES".
+        A preset (:data:`STRINGS`) or "MAINS/CROSSES"; :data:`LINEAR` for the paper's plain
+        spring of the bed's stiffness.
     gauge : float or str, optional
         The gauge [m], or a name ("16L").
     pattern : str or (int, int), optional
@@ -412,6 +434,15 @@ def restrung(bed: StringBed, string=None, gauge=None, pattern=None, state=None, 
         The bed's measured stiffness [N/m].
     """
     old = bed.stringing
+    if string == LINEAR:
+        for name, value in (("gauge", gauge), ("pattern", pattern), ("state", state)):
+            if value is not None:
+                raise ValueError(
+                    f"{name} describes a string, and {LINEAR!r} is the paper's plain spring "
+                    "with none: drop it, or name a string (e.g. polyester)"
+                )
+        k = bed.stiffness if stiffness is None else stiffness
+        return StringBed(k, bed.extent, bed.width, bed.profile)
     if old is None and string is None:
         for name, value in (("gauge", gauge), ("pattern", pattern), ("state", state)):
             if value is not None:

@@ -31,6 +31,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ball import WALL, collide
+from ball.baseball import E0_FIG2, E0_HIGH_SPEED
 from bat import certification as cert
 from common.typechecks import choice
 from common.units import MPH, SPEED_UNITS
@@ -53,6 +54,23 @@ BBCOR_TEST_SPEED = 136.0 * MPH
 confirmed" (``data/bats.md`` section 4.1: the nominal inbound speed was not found; the
 NCAA's cannon fires at "at least 150 mph", as quoted there)."""
 
+BBCOR_UNCERTAINTY = round(E0_FIG2 - E0_HIGH_SPEED, 12)
+"""How far [-] the model's BBCOR may lie from the test's, either way: 0.03, **an
+ASSUMPTION**.  No measured bat output was at hand to check the model against
+(``docs/validation.md``, "Bats: no row yet"), so it is the spread of its largest unknown
+input.  A bat that barely rings at its best point gives back the ball's own COR (a BPF near
+1: BBCOR = BPF e0), and the test ball's COR at the test's speed was not found
+(``data/bats.md`` section 4.1).  N2000 gives a baseball's e0 at high speed twice: 0.50,
+assumed for its high-speed case (p. 986, :data:`ball.baseball.E0_HIGH_SPEED`), and 0.53,
+its Fig. 2 curve's, a 58 m/s impact on a rigid surface near the test's 60.8 m/s
+(:data:`ball.baseball.E0_FIG2`); the gap between them is taken as the BBCOR's (BBCOR moves
+by about BPF times a change of e0: ``tests/test_bat_study.py`` checks it).  The test's speed,
+136 mph or the quoted "at least 150 mph", moves the R161's BBCOR by less than a tenth of
+it (checked there too)."""
+
+VERDICTS = ("passes", "fails", "cannot call")
+"""What :func:`verdict` says of a BBCOR."""
+
 
 @dataclass(frozen=True)
 class BbcorTest:
@@ -67,8 +85,9 @@ class BbcorTest:
         ``position_from_knob_cm``, ``position_from_tip_cm``, ``test_speed_m_s``,
         ``bbcor`` [-], ``ball_e_A`` [-] (the ball's v_out / v_in on that set-up),
         ``mass_ratio`` [-] (the rig's r, the free bat's R0), ``collision_efficiency``
-        [-], ``besr`` [-], ``bpf`` [-], ``limit`` [-] and ``passes`` (BBCOR at most the
-        limit).
+        [-], ``besr`` [-], ``bpf`` [-], ``limit`` [-], ``passes`` (BBCOR at most the
+        limit), ``uncertainty`` [-] (:data:`BBCOR_UNCERTAINTY`) and ``verdict``
+        (:func:`verdict`; the free bat's row has neither, the limit is the rig's).
     along : DataFrame
         BBCOR along the search, one row per point: ``bat``, ``position_from_knob_cm``,
         ``position_from_tip_cm``, ``bbcor``, ``ball_e_A``, ``mass_ratio`` and
@@ -95,6 +114,9 @@ class BbcorTest:
         The ball's COR on a rigid wall at the test's speed [-].
     passes : bool
         BBCOR at most :data:`bat.certification.BBCOR_LIMIT`.
+    verdict : str
+        "passes", "fails" or "cannot call" (:func:`verdict`): the comparison with the limit
+        said only where the BBCOR lies farther from it than :data:`BBCOR_UNCERTAINTY`.
     free_efficiency, free_cor : float
         The free bat at rest struck there: its simulated e_A and COR [-].
     speed : float
@@ -118,11 +140,36 @@ class BbcorTest:
     bpf: float
     ball_cor: float
     passes: bool
+    verdict: str
     free_efficiency: float
     free_cor: float
     speed: float
     conditions: str
     unit: str = "m/s"
+
+
+def verdict(bbcor: float, uncertainty: float = BBCOR_UNCERTAINTY) -> str:
+    """The verdict on a BBCOR against :data:`bat.certification.BBCOR_LIMIT`: "passes" below
+    it by more than ``uncertainty``, "fails" above it by more, and "cannot call" within
+    ``uncertainty`` of it, where the model cannot tell (:data:`VERDICTS`).
+
+    Parameters
+    ----------
+    bbcor : float
+        The bat-ball COR [-].
+    uncertainty : float
+        How far the model's BBCOR may lie from the test's [-]; default
+        :data:`BBCOR_UNCERTAINTY`.
+
+    Examples
+    --------
+    >>> verdict(0.5003), verdict(0.44), verdict(0.66)
+    ('cannot call', 'passes', 'fails')
+    """
+    margin = bbcor - cert.BBCOR_LIMIT
+    if abs(margin) <= uncertainty:
+        return "cannot call"
+    return "fails" if margin > 0 else "passes"
 
 
 def search_points(rig, step: float = SWEEP_STEP) -> np.ndarray:
@@ -223,7 +270,9 @@ def bbcor_test(
          "besr": float(cert.besr(efficiency)), "bpf": float(cert.bpf(cor, ball_cor)),
          "limit": cert.BBCOR_LIMIT,
          # (the limit is the rig's: the free bat's row has no verdict)
-         "passes": bool(cor <= cert.BBCOR_LIMIT) if method == "pivoted rig" else None}
+         "passes": bool(cor <= cert.BBCOR_LIMIT) if method == "pivoted rig" else None,
+         "uncertainty": BBCOR_UNCERTAINTY if method == "pivoted rig" else None,
+         "verdict": verdict(cor) if method == "pivoted rig" else None}
         for method, cor, measured, ratio, efficiency in rows
     ])  # fmt: skip
     conditions = (
@@ -237,6 +286,6 @@ def bbcor_test(
         closed_form=float(cert.bbcor(rig_e_a, r)), rig_efficiency=rig_e_a, mass_ratio=r,
         free_ratio=r0, collision_efficiency=e_a, besr=float(cert.besr(e_a)),
         bpf=float(cert.bpf(bbcor, ball_cor)), ball_cor=ball_cor,
-        passes=bool(bbcor <= cert.BBCOR_LIMIT), free_efficiency=free_e_a, free_cor=free_cor,
-        speed=speed, conditions=conditions, unit=unit,
+        passes=bool(bbcor <= cert.BBCOR_LIMIT), verdict=verdict(bbcor),
+        free_efficiency=free_e_a, free_cor=free_cor, speed=speed, conditions=conditions, unit=unit,
     )  # fmt: skip

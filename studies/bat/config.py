@@ -279,6 +279,30 @@ def _profile(table: dict):
     return stations, outer_s, inner_s
 
 
+HOLLOW_PRESETS = ("alloy",)
+"""The presets with a bore (:func:`bat.presets.alloy`): a beam has no wall, so a hollow
+bat's trampoline effect is not in its answers (:func:`is_hollow`)."""
+
+
+def is_hollow(spec: str | os.PathLike) -> bool:
+    """Whether the bat ``spec`` (a preset's name or a ``.toml`` file, as :func:`load_bat`
+    takes it) is hollow: a preset of :data:`HOLLOW_PRESETS`, or a ``[bat]`` table with an
+    inner diameter above 0 (``bore``, ``wall``, a profile's third column) or such a preset.
+
+    Parameters
+    ----------
+    spec : str or os.PathLike
+        A key of :data:`bat.BATS`, or a ``.toml`` file that :func:`load_bat` has read.
+    """
+    if isinstance(spec, str) and spec in BATS:
+        return spec in HOLLOW_PRESETS
+    table = read_toml(spec)["bat"]
+    if "preset" in table:
+        return table["preset"] in HOLLOW_PRESETS
+    inner = [row[2] for row in table.get("profile", []) if len(row) == 3]
+    return "wall" in table or any(float(d) > 0.0 for d in [*table.get("bore", []), *inner])
+
+
 def load_bat(spec: str | os.PathLike, support: str | None = None) -> Bat:
     """A bat from a preset name or a TOML file with a ``[bat]`` table, held by ``support``
     if given.

@@ -56,6 +56,26 @@ to 1 s (**an assumption**: the vibration has long been felt; about 40 bytes per 
 point)."""
 
 
+LEFT_OUT = ("the bat's own damping", "the hands'")
+"""What may be left out of a bat's ringing (:func:`left_out`): its own damping, the hands'."""
+
+
+def left_out(bat) -> tuple[str, ...]:
+    """What damps a real bat's ringing and ``bat`` leaves out: "the bat's own damping" when its
+    modes have none (Nathan's R161: N2000 has none; Van Zandt's Q = 10 for wood,
+    ``data/bats.md`` section 5), "the hands'" unless it is held in them (a free or pivoted
+    bat); empty for a damped bat in the hands (:class:`racket.Hand`'s dashpots).
+
+    Parameters
+    ----------
+    bat : Bat
+        The bat.
+    """
+    own, hands = LEFT_OUT
+    parts = () if np.any(np.asarray(bat.beam.damping) > 0.0) else (own,)
+    return parts if bat.support == "hand-held" else (*parts, hands)
+
+
 @dataclass(frozen=True)
 class BatFeel:
     """The handle's motion after one impact (built by :func:`bat_feel`).
@@ -92,8 +112,10 @@ class BatFeel:
         The ball's exit speed [m/s].
     vibration_energy : float
         The bat's vibration energy when the ball left [J] (:attr:`racket.Impact.vibration_energy`).
+    left_out : tuple of str
+        What damps a real bat's ringing and this one leaves out (:func:`left_out`).
     conditions : str
-        What it was computed for.
+        What it was computed for, with what is left out.
     """
 
     table: pd.DataFrame
@@ -112,6 +134,7 @@ class BatFeel:
     contact_time: float
     exit_speed: float
     vibration_energy: float
+    left_out: tuple
     conditions: str
 
     @property
@@ -218,6 +241,10 @@ def bat_feel(
         columns[f"rigid_{name}"] = rigid.ravel()
         columns[f"vibration_{name}"] = (total - rigid).ravel()
     length = bat.beam.length
+    missing = left_out(bat)
+    conditions = bat_conditions(bat, ball, speed, swing, unit, bat_name, ball_name)
+    if missing:
+        conditions += f"; left out: {' and '.join(missing)}"
     mode_table = pd.DataFrame({
         "mode": np.arange(1, omega.size + 1),
         "frequency_Hz": modes.frequencies,
@@ -236,5 +263,5 @@ def bat_feel(
         rigid_acceleration=parts["acceleration_m_s2"][1], mode_energy=energy,
         from_knob=float(length - x), contact_time=float(hit.contact_time),
         exit_speed=float(hit.ball_rebound), vibration_energy=float(hit.vibration_energy),
-        conditions=bat_conditions(bat, ball, speed, swing, unit, bat_name, ball_name),
+        left_out=missing, conditions=conditions,
     )  # fmt: skip

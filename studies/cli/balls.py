@@ -4,10 +4,12 @@ strings.
 
 from __future__ import annotations
 
+import textwrap
+
 import numpy as np
 
 from ball import BALL_PRESETS, BASEBALL_PRESETS, WALL, collide
-from ball.catalog import ITF_DROP
+from ball.catalog import CALIBRATION_SPEED, ITF_DROP
 from ball.collision import largest_closing_speed, too_fast_to_store
 from common.checks import CM_AS_M, SPEED_RANGE, in_range, shown
 from common.units import SPEED_SUFFIXES, SPEED_UNITS
@@ -23,7 +25,8 @@ from studies.cli.options import (
     speed_unit,
 )
 from studies.cli.racket_options import STRING_OPTIONS, add_racket_options, racket_from
-from studies.conditions import speed_text
+from studies.cli.show import WIDTH
+from studies.conditions import racket_details, speed_text
 from studies.config import load_ball
 from studies.tables import history_table
 
@@ -152,8 +155,8 @@ def add_drop(sub) -> None:
     )
     p.add_argument("--onto", choices=["floor", "strings", "racket"], default="floor",
                    help="the floor (default), the strings of --racket with its head clamped, "
-                   "or --racket lying free (at its string centre)")  # fmt: skip
-    add_racket_options(p, support=False)
+                   "or --racket at its string centre, free or as --support holds it")  # fmt: skip
+    add_racket_options(p)  # --support: --onto racket only (strings: a clamped head)
     p.add_argument("--out", metavar="FILE", help="force and compression against time "
                    "(.csv, .json or .parquet)")  # fmt: skip
     p.add_argument("--plot", metavar="FILE", help="force and compression (.png, .svg, .pdf)")
@@ -168,24 +171,33 @@ def cmd_drop(args) -> int:
 
     check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
     if args.onto == "floor":
-        refuse_unused(args, ("racket", *STRING_OPTIONS, "lead"),
+        refuse_unused(args, ("racket", *STRING_OPTIONS, "lead", "support", "grip"),
                       "to a drop onto the floor: add --onto strings or --onto racket")  # fmt: skip
     elif args.onto == "strings":  # the head clamped: the frame does not move
-        refuse_unused(args, ("lead",), "to the strings of a clamped head (the frame does not "
-                      "move): --onto racket drops on the racket lying free")  # fmt: skip
+        refuse_unused(args, ("lead", "support", "grip"), "to the strings of a clamped head (the "
+                      "frame does not move): --onto racket drops on the racket, free or "
+                      "--support hand-held")  # fmt: skip
     height = in_range("--height-m", args.height_m, *HEIGHT_RANGE, "m", slips=(CM_AS_M,))
     ball = load_ball(args.ball)
     onto, where = None, "the floor"
     if args.onto != "floor":
         from dataclasses import replace
 
-        support = "clamped-head" if args.onto == "strings" else "free"
-        onto = replace(racket_from(args), support=support)
+        if args.onto == "racket" and args.support == "clamped-head":
+            raise ValueError(
+                "--support clamped-head with --onto racket: --onto strings drops on the "
+                "strings of a clamped head"
+            )
+        racket = racket_from(args)
+        support = "clamped-head" if args.onto == "strings" else racket.support  # the file's too
+        onto = replace(racket, support=support)
+        details = racket_details(onto)
+        held = {"free": "lying free", "hand-held": f"held ({details['grip']})"}
         where = (
             f"the strings of {args.racket}, its head clamped"
-            if args.onto == "strings"
-            else f"the string centre of {args.racket}, lying free"
-        )
+            if support == "clamped-head"
+            else f"the string centre of {args.racket}, {held[support]}"
+        ) + f" ({details['strings']})"
     result = drop(ball, height, onto)
     conditions = say_conditions(f"ball {args.ball} dropped from {result.height:g} m onto {where}")
     print(f"it arrives at {result.speed:.3g} m/s")
@@ -256,12 +268,32 @@ def cmd_ball(args) -> int:
             raise too_fast_to_store(flag, value, fastest, unit, size)
     table = rigid_bounce_table(ball, speeds)
     unit = speed_unit(args, "speeds")
+    calibrated = (
+        f"{speed_text(CALIBRATION_SPEED, unit)}, the fastest the real balls are calibrated at"
+    )
+    beyond = args.ball in BALL_PRESETS and bool((table["speed_m_s"] > CALIBRATION_SPEED).any())
     conditions = say_conditions(
         f"ball {args.ball} head on into a rigid wall at {speed_text(speeds, unit)}"
+        + (f"; the rows above {calibrated}, extrapolated" if beyond else "")
     )
+    if args.ball in BALL_PRESETS:  # a real ball's law is calibrated up to a speed
+        table["calibrated"] = table["speed_m_s"] <= CALIBRATION_SPEED
     if unit != "m/s":  # mph or km/h in, mph or km/h out
         table.insert(1, f"speed_{SPEED_SUFFIXES[unit]}", table["speed_m_s"] / SPEED_UNITS[unit])
-    _print_table(table.drop(columns="speed_m_s") if unit != "m/s" else table)
+    shown_rows = table.drop(columns="speed_m_s") if unit != "m/s" else table
+    if "calibrated" in table:
+        shown_rows = shown_rows.assign(
+            calibrated=table["calibrated"].map({True: "yes", False: "no"})
+        )
+    _print_table(shown_rows)
+    if beyond:
+        print(textwrap.fill(
+            f'rows calibrated "no": above {calibrated} (the type 2 ball\'s COR there, an '
+            "assumption: ball.catalog.COR_AT_30), the law is extrapolated; near the radius its "
+            "force is calibrated to nothing (the hyperbola's peak force grows fast there: a "
+            "real ball's walls meet and its rubber takes the load)", WIDTH,
+            subsequent_indent="  ",
+        ))  # fmt: skip
     if args.ball not in BASEBALL_PRESETS:  # the ITF's static test is a tennis ball's
         _print_static_test(static_test(ball, args.ball))
     if args.out:

@@ -29,8 +29,8 @@ from common.checks import (
     too_fast,
 )
 from common.units import MPH, SPEED_SUFFIXES, SPEED_UNITS
-from studies.bat.certification import BBCOR_TEST_SPEED
-from studies.bat.feel import FEEL_DURATION, FEEL_FROM_KNOB, HANDLE_POINTS
+from studies.bat.certification import BBCOR_TEST_SPEED, BBCOR_UNCERTAINTY
+from studies.bat.feel import FEEL_DURATION, FEEL_FROM_KNOB, HANDLE_POINTS, LEFT_OUT
 from studies.bat.sweep import (
     ANGULAR_VELOCITY,
     CM_SPEED,
@@ -292,6 +292,36 @@ def _say(line: str) -> None:
     print(lead + textwrap.fill(line.strip("\n"), WIDTH, subsequent_indent="  "))
 
 
+TRAMPOLINE = (
+    "the trampoline effect of its thin wall, what makes a real hollow bat livelier "
+    "than wood, is left out"
+)
+"""What a beam leaves out of a hollow bat's exit speed and BBCOR (``docs/guide/bats.md``;
+:func:`bat.presets.alloy`: a beam model has no hoop modes)."""
+
+
+def _hollow(args, bats) -> list:
+    """The labels of the hollow bats among ``bats``, (label, Bat) of each ``--bat`` in order
+    (:func:`studies.bat.config.is_hollow`).
+    """
+    from studies.bat.config import is_hollow
+
+    return [label for spec, (label, _) in zip(args.bat, bats, strict=True) if is_hollow(spec)]
+
+
+def _hollow_conditions(labels, what: str) -> str:
+    """The conditions' words for the hollow bats ``labels``: ``what`` a beam leaves out."""
+    return "".join(f"; {label}: hollow, without {what} (a beam)" for label in labels)
+
+
+def _say_hollow(labels, said: str) -> None:
+    """One line per hollow bat of ``labels``: what a beam leaves out of it and what that does
+    to the answer printed above (``said``).
+    """
+    for label in labels:
+        _say(f"\n{label}: hollow, but a beam has no wall: {said}")
+
+
 def _sweep(args) -> int:
     import numpy as np
     import pandas as pd
@@ -319,7 +349,11 @@ def _sweep(args) -> int:
         plans.append((label, bat, swing, z))
     sweeps = [bat_sweep(bat, ball, pitch, swing, z, unit, label, args.ball)
               for label, bat, swing, z in plans]  # fmt: skip
-    conditions = say_conditions("; ".join(s.conditions for s in sweeps))
+    hollow = _hollow(args, [(label, bat) for label, bat, _, _ in plans])
+    conditions = say_conditions(
+        "; ".join(s.conditions for s in sweeps)
+        + _hollow_conditions(hollow, "its wall's trampoline effect")
+    )
     suffix = SPEED_SUFFIXES[unit]
     view = {"bat": "bat", "position_from_knob_cm": "from the knob [cm]",
             "position_from_tip_cm": "from the tip [cm]", f"bat_speed_{suffix}":
@@ -336,6 +370,8 @@ def _sweep(args) -> int:
               f"{100 * sweep.peak_from_knob:.1f} cm from the knob; sweet zone (within "
               f"{100 * SWEET_ZONE_FRACTION:g} % of it) {100 * low:.1f}-{100 * high:.1f} cm from "
               "the knob")  # fmt: skip
+    _say_hollow(hollow, f"{TRAMPOLINE}; its exit speeds here are too low: a real hollow bat "
+                "of this outline and mass would send the ball off faster")  # fmt: skip
 
     def draw():
         from studies.plots.bat import plot_exit_speed
@@ -354,20 +390,31 @@ def _bbcor(args) -> int:
     speed = _pitch(args, BBCOR_TEST_SPEED, fastest=False)
     bats, ball = _bats(args, "pivoted"), load_ball(args.ball)
     tests = [bbcor_test(bat, ball, speed, unit, label, args.ball) for label, bat in bats]
-    conditions = say_conditions("; ".join(t.conditions for t in tests))
+    hollow = _hollow(args, bats)
+    conditions = say_conditions(
+        "; ".join(t.conditions for t in tests)
+        + _hollow_conditions(hollow, "its wall's trampoline effect")
+    )
     table = pd.concat([t.table for t in tests], ignore_index=True)
     view = {"bat": "bat", "method": "set-up", "position_from_knob_cm": "from the knob [cm]",
             "bbcor": "BBCOR [-]", "ball_e_A": "ball v_out/v_in [-]",
             "mass_ratio": "mass ratio [-]", "collision_efficiency": "collision efficiency [-]",
-            "besr": "BESR [-]", "bpf": "BPF [-]", "passes": "passes"}  # fmt: skip
+            "besr": "BESR [-]", "bpf": "BPF [-]", "verdict": "verdict"}  # fmt: skip
     shown_view = table if len(bats) > 1 else table.drop(columns="bat")
     _print_table(shown_view[[c for c in view if c in shown_view]].rename(columns=view))
     for test in tests:
-        verdict = "passes" if test.passes else "fails"
-        _say(f"\n{test.along['bat'].iloc[0]}: BBCOR {test.bbcor:.4f} at "
-              f"{100 * test.from_knob:.1f} cm from the knob {verdict} the limit "
-              f"{test.table['limit'].iloc[0]:.3f} (ball's own COR "
-              f"{test.ball_cor:.4f})")  # fmt: skip
+        name, limit = test.along["bat"].iloc[0], test.table["limit"].iloc[0]
+        said = f" {test.verdict} the limit {limit:.3f}"
+        if test.verdict == "cannot call":
+            margin = test.bbcor - limit
+            said = (f", {abs(margin):.4f} {'above' if margin > 0 else 'below'} the limit "
+                    f"{limit:.3f}: within the model's uncertainty of the limit (+/- "
+                    f"{BBCOR_UNCERTAINTY:.2f}, the ball's COR at the test's speed): cannot "
+                    "call")  # fmt: skip
+        _say(f"\n{name}: BBCOR {test.bbcor:.4f} at {100 * test.from_knob:.1f} cm from the "
+             f"knob{said} (ball's own COR {test.ball_cor:.4f})")  # fmt: skip
+    _say_hollow(hollow, f"{TRAMPOLINE}; its BBCOR here is too low: a real hollow bat of this "
+                "outline and mass would score higher")  # fmt: skip
 
     def draw():
         from studies.plots.bat import plot_bbcor
@@ -402,7 +449,8 @@ def _feel(args) -> int:
         if args.duration_ms is None or not str(err).startswith("duration must"):
             raise
         raise ValueError(f"--duration-ms {args.duration_ms:g}: {err}") from None
-    conditions = say_conditions(feel.conditions)
+    hollow = _hollow(args, [(label, bat)])
+    conditions = say_conditions(feel.conditions + _hollow_conditions(hollow, "its wall's modes"))
     _say(f"impact {100 * feel.from_knob:.1f} cm from the knob: exit speed "
           f"{feel.exit_speed / SPEED_UNITS[unit]:.4g} {unit}, contact "
           f"{1e3 * feel.contact_time:.3g} ms, vibration energy "
@@ -418,6 +466,16 @@ def _feel(args) -> int:
     })  # fmt: skip
     print()
     _print_table(rows)
+    if feel.left_out:
+        undamped, handless = (part in feel.left_out for part in LEFT_OUT)
+        why = {(True, True): "the ringing never dies away here, where a real bat's wood (Van "
+               "Zandt's Q of about 10) and hands damp it; these are a bare bat's motions, not "
+               "what the hands feel", (True, False): "only the hands damp the ringing here, "
+               "not the wood (Van Zandt's Q of about 10)", (False, True): "no hands damp or "
+               "weigh down the handle here; these are a bare bat's motions, not what the "
+               "hands feel"}[undamped, handless]  # fmt: skip
+        _say(f"\nLeft out: {' and '.join(feel.left_out)}: {why}")
+    _say_hollow(hollow, "its wall's own modes, which ring in a real hollow bat, are left out")
     print(f"\nenergy in each bending mode after {1e3 * feel.t[-1]:.3g} ms (free-free modes):")
     modes = feel.modes[["mode", "frequency_Hz", "nodes_from_knob_cm", "energy_J", "share"]]
     _print_table(modes.rename(columns={"frequency_Hz": "frequency [Hz]", "nodes_from_knob_cm":

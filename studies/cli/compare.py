@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from common.checks import shown
+from common.units import KP_PER_CM
 from racket import DEFAULT_RACKET
 from studies.cli.files import check_table_and_plot, say_conditions, write_outputs
 from studies.cli.options import (
@@ -105,7 +106,7 @@ def cmd_compare(args) -> int:
     summary = compare_summary(rackets, table, ball, speed)
     first = next(iter(rackets.values()))
     said = racket_conditions(
-        args, first, " vs ".join(rackets), speed=speed, swing=swing, each_own=True
+        args, first, " vs ".join(rackets), speed=speed, swing=swing, each=rackets
     )
     conditions = say_conditions(said + (" (equal effort)" if args.equal_effort else ""))
     unit = speed_unit(args, "speed", "swing_speed")
@@ -123,8 +124,9 @@ def cmd_compare(args) -> int:
 
 
 def _strings_grid(args) -> list:
-    """The tensions or stiffnesses to string every racket at, each (value [N or N/m], its
-    label as typed: "58 lb", "26 kg", "3e+04 N/m", "35 kp/cm"); [(None, "")] for none.
+    """The tensions, stiffnesses or ERT readings to string every racket at, each ((kind,
+    value [N, N/m or kp/cm]), its label as typed: "58 lb", "26 kg", "3e+04 N/m", "35
+    kp/cm"); [((None, None), "")] for none.
     """
     from studies.cli.racket_options import stiffnesses, tensions
 
@@ -133,24 +135,30 @@ def _strings_grid(args) -> list:
     for dest, unit in typed.items():
         if getattr(args, dest, None) is not None:
             values = tensions(args) if dest.startswith("tension") else stiffnesses(args)
+            kind = "tension" if dest.startswith("tension") else "stiffness"
+            if dest == "string_bed_dt":  # read on each racket's strings (_strung)
+                kind, values = "dt", [v / KP_PER_CM for v in values]
             said = [f"{shown(v)} {unit}" for v in getattr(args, dest)]
-            return [((dest.startswith("tension"), v), s) for v, s in zip(values, said, strict=True)]
-    return [((False, None), "")]
+            return [((kind, v), s) for v, s in zip(values, said, strict=True)]
+    return [((None, None), "")]
 
 
 def _strung(args, racket, value):
-    """``racket`` strung at ``value``, (is a tension, the tension [N] or stiffness [N/m]);
-    as it is for None.
+    """``racket`` strung at ``value``, (its kind: "tension", "stiffness" or "dt", the
+    tension [N], stiffness [N/m] or ERT reading [kp/cm]); as it is for None.
     """
     from dataclasses import replace
 
-    tension, number = value
+    kind, number = value
     if number is None:
         return racket
-    if tension:
+    if kind == "tension":
         from racket.specs.restring import with_tension
 
         return with_tension(racket, number)
+    from racket.strings.ert import stiffness_from_dt
     from racket.strings.stringing import restrung
 
+    if kind == "dt":
+        number = stiffness_from_dt(racket.strings, number, "--string-bed-dt")
     return replace(racket, strings=restrung(racket.strings, stiffness=number))

@@ -284,9 +284,20 @@ def swing_and_speed(args) -> tuple:
 def _check_swing(args, swing, racket, positions, name: str = "swing_speed") -> None:
     """``swing`` (of the speed option ``--NAME[-mph|-kmh]`` and ``--pivot-cm-from-tip``)
     checked for the impact points ``positions`` [m from the tip], the message quoting the
-    options as typed (:meth:`racket.Swing.check_points`); nothing without a swing.
+    options as typed (:meth:`racket.Swing.check_points`), and refused on a racket that
+    ``--support`` (or the racket's own file) holds at rest; nothing without a swing.
     """
     if swing is not None:
+        typed = getattr(args, "support", None)
+        supports = typed or [racket.support]
+        held = [s for s in (supports if isinstance(supports, list) else [supports]) if s != "free"]
+        if held:
+            flag, value, *_ = _typed(args, name)
+            holder = f"--support {held[0]}" if typed else f"the racket's file ({held[0]})"
+            raise ValueError(
+                f"{flag} {shown(value)} swings a free racket, and {holder} holds it at rest "
+                "(the hand or the clamp does not move in this model): drop one"
+            )
         typed = args.pivot_cm_from_tip
         pivot = ("--pivot-cm-from-tip", 100 * swing.pivot(racket) if typed is None else typed,
                  "cm", 0.01)  # fmt: skip

@@ -15,7 +15,7 @@ from common.units import GRAVITY, KP_PER_CM
 from racket import DEFAULT_RACKET, GRIPS, STRINGS, SUPPORTS
 from racket.racket import ADDED_MASS_MAX
 from racket.strings.sizes import GAUGE_RANGE, GAUGES, diameter, parse_pattern
-from racket.strings.stringing import restrung, stringing
+from racket.strings.stringing import LINEAR, restrung, stringing
 from studies.cli.options import (
     _ball_arg,
     _Once,
@@ -26,7 +26,7 @@ from studies.cli.options import (
     refuse_unused,
     speed_unit,
 )
-from studies.conditions import conditions_line, racket_details
+from studies.conditions import PLAIN_BED, conditions_line, racket_details
 from studies.config import RACKETS, load_racket
 from studies.strings.inputs import DT_RANGE, LB_AS_KG, N_M_AS_KP_CM, TENSION_KG_RANGE
 from studies.sweeps import BALL_SPEED, STRING_STIFFNESS_RANGE
@@ -73,8 +73,9 @@ def add_racket_options(
     p.add_argument(
         "--string", action=_Once, metavar="NAME",
         help=f"what the racket is strung with: {', '.join(STRINGS)}, or MAINS/CROSSES for a "
-        "hybrid, e.g. natural-gut/polyester (default: the racket's; give one of --string, "
-        "--gauge, --pattern, --played and the others stay the racket's)",
+        "hybrid, e.g. natural-gut/polyester, or linear for the paper's plain spring (default: "
+        "the racket's; give one of --string, --gauge, --pattern, --played and the others "
+        "stay the racket's)",
     )  # fmt: skip
     p.add_argument(
         "--gauge", action=_Once, metavar="MM_OR_NAME",
@@ -180,16 +181,21 @@ def tensions(args) -> list[float] | None:
     return [_tension(t) for t in _many(args.tension_lb)]
 
 
-def stiffnesses(args) -> list[float] | None:
-    """``--string-stiffness`` [N/m] or ``--string-bed-dt`` [kp/cm] values in N/m, checked (a
-    list), None if neither was given.
+def stiffnesses(args, bed=None) -> list[float] | None:
+    """``--string-stiffness`` [N/m] or ``--string-bed-dt`` [kp/cm] values as the bed's
+    centre stiffness in N/m, checked (a list), None if neither was given; a DT is read on
+    ``bed``'s strings, as an ERT reads it (:func:`racket.strings.ert.stiffness_from_dt`:
+    their stretch counts), or at face value (x 980.665 N/m) without a bed (the ranges'
+    check before any work).
     """
     if getattr(args, "string_bed_dt", None) is not None:
+        from racket.strings.ert import stiffness_from_dt
+
         hint, slips = "; in N/m: --string-stiffness", (N_M_AS_KP_CM,)
-        return [
-            KP_PER_CM * in_range("--string-bed-dt", dt, *DT_RANGE, "kp/cm", hint, slips)
-            for dt in _many(args.string_bed_dt)
-        ]
+        dts = [in_range("--string-bed-dt", dt, *DT_RANGE, "kp/cm", hint, slips)
+               for dt in _many(args.string_bed_dt)]  # fmt: skip
+        return [KP_PER_CM * dt if bed is None else stiffness_from_dt(bed, dt, "--string-bed-dt")
+                for dt in dts]  # fmt: skip
     if args.string_stiffness is None:
         return None
     return [
@@ -198,24 +204,24 @@ def stiffnesses(args) -> list[float] | None:
     ]
 
 
-def restring(racket, args, stiffness: float | None = None):
+def restring(racket, args):
     """``racket`` strung as ``--string``, ``--gauge``, ``--pattern`` and ``--played`` say
-    (:func:`racket.strings.stringing.restrung`: what is given replaces the racket's), with the bed's
-    ``stiffness`` [N/m] if given; each option checked and refused as typed.
+    (:func:`racket.strings.stringing.restrung`: what is given replaces the racket's); each
+    option checked and refused as typed.
     """
     gauge = args.gauge and diameter(args.gauge, "--gauge", "mm")
     pattern = args.pattern and parse_pattern(args.pattern, "--pattern")
-    if args.string is not None:
+    if args.string not in (None, LINEAR):
         stringing(args.string, gauge, argument="--string")  # refused as typed before any work
-    elif racket.strings.stringing is None:
+    elif args.string == LINEAR or racket.strings.stringing is None:
+        plain = "--string linear is" if args.string else "this racket's bed is"
         for flag in given(args, "gauge", "pattern", "played"):
             raise ValueError(
-                f"{flag} describes a string, and this racket's bed is a plain spring with "
-                "none: add --string, e.g. --string polyester"
+                f"{flag} describes a string, and {plain} a plain spring with none: name a "
+                "string, e.g. --string polyester"
             )
     state = "played" if args.played else None
-    return replace(racket, strings=restrung(racket.strings, args.string, gauge, pattern, state,
-                                            stiffness))  # fmt: skip
+    return replace(racket, strings=restrung(racket.strings, args.string, gauge, pattern, state))
 
 
 def _many(value) -> list:
@@ -261,11 +267,13 @@ def racket_from(args, spec: str | None = None, grid: bool = False):
     """
     racket = lead_tape(load_racket(spec or args.racket), args.lead)
     supports = _many(getattr(args, "support", None) or [racket.support])
-    newtons, stiffness = tensions(args), stiffnesses(args)  # checked before any work
-    if grid:
-        racket = restring(racket, args)
-    else:
-        racket = restring(replace(racket, support=supports[0]), args, stiffness and stiffness[0])
+    newtons, _ = tensions(args), stiffnesses(args)  # checked before any work
+    racket = restring(racket, args)
+    if not grid:
+        stiffness = stiffnesses(args, racket.strings)  # a DT read on the strings as strung
+        racket = replace(racket, support=supports[0])
+        if stiffness:
+            racket = replace(racket, strings=restrung(racket.strings, stiffness=stiffness[0]))
         if newtons:
             from racket.specs.restring import with_tension
 
@@ -318,13 +326,14 @@ def modes_options(args) -> None:
 
 
 def racket_conditions(
-    args, racket, name: str | None = None, speed=None, swing=None, each_own: bool = False
+    args, racket, name: str | None = None, speed=None, swing=None, each: dict | None = None
 ) -> str:
     """The conditions line of a run (:func:`studies.conditions.conditions_line`): the racket
     as named (``name``, default ``--racket``), its support, grip and strings (as typed), the
     ball (``--ball``) at ``speed`` [m/s] in the unit the user typed, the ``swing`` (a
-    :class:`racket.Swing`, said with its head speed); ``each_own``: several rackets, each
-    with its own strings and hand unless the options set them.
+    :class:`racket.Swing`, said with its head speed); ``each``: several rackets (label ->
+    racket), each with its own hand unless the options set it, and its strings named (once
+    when they are all strung alike).
     """
     typed = {
         unit: ", ".join(shown(v) for v in _many(value))
@@ -337,20 +346,24 @@ def racket_conditions(
     tension = next((f"{v} {u}" for u, v in typed.items() if u in ("lb", "kg")), None)
     stiffness = next((f"{v} {u}" for u, v in typed.items() if u in ("N/m", "kp/cm")), None)
     details = racket_details(racket, tension)
-    strung = None if each_own else racket.strings.stringing
-    if each_own:
-        gauge = args.gauge and args.gauge + (" gauge" if args.gauge.upper() in GAUGES else " mm")
-        restrung_as = [args.string, gauge, args.pattern, "played" if args.played else None]
-        said = ", ".join(word for word in restrung_as if word)
-        details["strings"] = "each its own strings" + (f" but {said}" if said else "")
+    strung = racket.strings.stringing
+    if each:
+        said = {label: racket_details(r)["strings"] for label, r in each.items()}
+        alike = len(set(said.values())) == 1
+        details["strings"] = (
+            next(iter(said.values())) if alike
+            else "; ".join(f"{label}: {words}" for label, words in said.items())
+        )  # fmt: skip
         details["grip"] = "each its own grip" if details["grip"] else None
-    if stiffness:  # as typed (several: a grid's), the ERT's DT said as such
+        if stiffness:  # as typed: each racket's is said above
+            details["strings"] += f"; set by {'DT ' if 'kp/cm' in stiffness else ''}{stiffness}"
+    elif stiffness:  # as typed (several: a grid's), the ERT's DT said as such
         stiffness = f"DT {stiffness}" if stiffness.endswith("kp/cm") else stiffness
         details["strings"] = (
-            f"{strung.describe('')}, {stiffness}" if strung else f"strings {stiffness}"
+            f"{strung.describe('')}, {stiffness}" if strung else f"{PLAIN_BED}, {stiffness}"
         )
     elif tension and (strung is None or "," in tension):  # a grid's: no one stiffness
-        details["strings"] = strung.describe(tension) if strung else f"strings at {tension}"
+        details["strings"] = strung.describe(tension) if strung else f"{PLAIN_BED} at {tension}"
     supports = getattr(args, "support", None)
     if isinstance(supports, list) and len(supports) > 1:
         details["support"] = " / ".join(supports)

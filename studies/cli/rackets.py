@@ -10,8 +10,8 @@ import textwrap
 
 from beam.beam import MAX_MODES
 from common.checks import S_AS_MS, in_range
-from common.units import KP_PER_CM
 from racket.specs.ra import ra_note
+from racket.strings.ert import dt_reading
 from studies.cli.files import add_outputs, check_table_and_plot, say_conditions, write_outputs
 from studies.cli.options import _ball_arg, _count, _print_table, _speed
 from studies.cli.racket_options import (
@@ -23,6 +23,7 @@ from studies.cli.racket_options import (
     racket_from,
 )
 from studies.cli.show import WIDTH, spots_view
+from studies.conditions import PLAIN_BED
 from studies.config import load_ball, racket_specs
 from studies.sweeps import BALL_SPEED
 
@@ -176,16 +177,17 @@ def cmd_specs(args) -> int:
 
 
 def bed_text(bed) -> str:
-    """The string bed as ``specs`` prints it: its stiffness [N/m] and the ERT's DT [kp/cm],
+    """The string bed as ``specs`` prints it: its stiffness [N/m] and the ERT's DT [kp/cm]
+    (:func:`racket.strings.ert.dt_reading`),
     and, for a strung bed, its stretch, loss and mass (:mod:`racket.strings.stringing`).
     """
     said = (
         f"string bed: {bed.stiffness:.0f} N/m at its centre (ERT dynamic tension "
-        f"{bed.stiffness / KP_PER_CM:.3g} kp/cm)"
+        f"{dt_reading(bed.stiffness, bed.stretch):.3g} kp/cm, the force at 1 cm)"
     )
     strung = bed.stringing
     if strung is None:
-        said += ", linear and lossless (the paper's spring)" if bed.plain else ""
+        said += f", {PLAIN_BED}: lossless and massless" if bed.plain else ""
         return textwrap.fill(said, WIDTH, subsequent_indent="  ")
     said += (
         f"; {strung.describe()}; stretch {bed.stretch:.4g} 1/m^2 ({100 * bed.stretch * 1e-4:.3g} "

@@ -17,6 +17,7 @@ from studies.cli.options import (
     _typed,
     given,
     in_speed_unit,
+    refuse_unused,
     speed_unit,
 )
 from studies.cli.racket_options import add_racket_options, racket_conditions, racket_from
@@ -31,7 +32,7 @@ DEFAULT_HEAD_SPEED = 40.0
 def add_serve(sub) -> None:
     """The ``serve`` subcommand, on the subparsers ``sub``."""
     p = sub.add_parser("serve", help="serve speed for one swing (Sec. VIII), and what-ifs")
-    add_racket_options(p, support=False)  # a swung racket is free in this model
+    add_racket_options(p)  # --support and --grip: refused in words (a served racket is free)
     _ball_arg(p)
     p.add_argument(
         "--position",
@@ -65,7 +66,19 @@ def cmd_serve(args) -> int:
     check_outputs(tables=[("--out", args.out)], plots=[("--plot", args.plot)])
     if args.plot and not args.what_if:
         raise ValueError("--plot needs --what-if for serve")
+    if args.support not in (None, "free"):
+        raise ValueError(
+            f"--support {args.support}: serve swings a free racket (Sec. VIII; the hand is not "
+            "swung in this model): racket-impact stroke flat-serve swings a hand-held one"
+        )
+    refuse_unused(args, ("grip",), "to serve, which swings a free racket: racket-impact stroke "
+                  "flat-serve --support hand-held takes a grip")  # fmt: skip
     racket, ball = racket_from(args), load_ball(args.ball)
+    if racket.support != "free":  # a file's own support
+        raise ValueError(
+            f"--racket {args.racket} is {racket.support} in its file, and serve swings a free "
+            "racket (Sec. VIII): racket-impact stroke flat-serve swings a hand-held one"
+        )
     low, high = (100 * end for end in racket.strings.extent)
     positions = [racket.strings.center] if args.position is None else [
         in_range("--position", x, low, high, "cm from the tip", slips=(M_AS_CM,)) / 100

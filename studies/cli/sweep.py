@@ -119,6 +119,7 @@ def cmd_sweep(args) -> int:
     racket, ball = racket_from(args, grid=True), load_ball(args.ball)
     ends, clipped = _ends(args, racket)
     _check_swing(args, swing, racket, ends)
+    measured = stiffnesses(args, racket.strings)  # a DT read on the strings, before any print
     conditions = say_conditions(racket_conditions(args, racket, speed=speeds, swing=swing))
     for note in [clipped, *(ra_note(ra) for ra in args.ra or ())]:
         if note:
@@ -129,7 +130,7 @@ def cmd_sweep(args) -> int:
             ball,
             np.linspace(*ends, points),
             speeds,
-            string_stiffness=stiffnesses(args),
+            string_stiffness=measured,
             tension=tensions(args),
             f1=args.f1 or ([f1_from_ra(ra) for ra in args.ra] if args.ra else None),
             support=args.support,

@@ -31,6 +31,12 @@ def cmd_validate(args) -> int:
     print()
     said = f"{validation.summary(table)} (each one's name, band, conditions and source: --out FILE)"
     print(textwrap.fill(said, WIDTH))
+    missed = table[(table["kind"] == "calibration") & ~table["agrees"]]
+    if len(missed):  # a calibration that does not hold is said, with why
+        print("\ncalibration rows outside their band, and why:")
+        for gap, rows in missed.groupby("gap", sort=False):  # one reason, its rows together
+            said = f"{', '.join(rows.index)}: {gap or 'no reason given: a defect'}"
+            print(textwrap.fill(said, WIDTH, initial_indent="  ", subsequent_indent="    "))
     if args.out:
         write_table(table.reset_index(), args.out)
     if args.plot:

@@ -8,13 +8,16 @@ controls and outputs; :mod:`studies.page.dashboard` computes and :mod:`studies.p
 Its controls start at the command line's defaults (:class:`studies.page.dashboard.PageInputs`),
 every card and plot says what it was computed for, positions are in cm from the tip (the
 balance, as spec sheets give it, from the butt).  Speeds are in mph (m/s in the tooltip
-and small text).
+and small text).  A plot is drawn again only when what it draws changes
+(:func:`studies.page.plots.page_plots`), and while the server works on a change the status
+line says so (:data:`BUSY`) in place of "Ready.".
 """
 
 from __future__ import annotations
 
 import errno
 import os
+import pickle
 import socket
 import threading
 
@@ -27,12 +30,19 @@ from studies.page.cards import built_sides, error_cards, headline_cards, spots_t
 from studies.page.dashboard import HEAD_SPEED_MAX_MPH, MY_SHEET, PageInputs, page_results
 from studies.page.guard import ERROR_OUTPUT, PageGuard
 from studies.page.inputs import LABELS, LEAD_CLOCKS, STIFFNESS, page_inputs
+from studies.page.plots import PLOTS, page_plots
 from studies.page.strings import STRING_WORDS
 
 DEFAULT_PORT = 8050
 """The page's default port (``mkdocs serve``, the docs, takes 8000)."""
 
+BUSY = "Recalculating: the numbers and plots below are for the controls as they were..."
+"""What the status line says while the server works on a change, in place of "Ready."."""
+
 _WARM = threading.Event()
+# The status line says BUSY, not "Ready.", while Shiny marks the page's root `shiny-busy`:
+# from the server's taking a change until it has computed every output the change alters
+# (sent at once, in one message).
 _STYLE = """
 .metric td, .metric th { padding: 0.1rem 0.4rem; white-space: nowrap; }
 .metric .value { font-size: 1.35rem; font-weight: 600; text-align: right; }
@@ -44,6 +54,8 @@ _STYLE = """
 .racket-table td, .racket-table th { padding: 0.1rem 0.5rem; }
 .racket-table .number { text-align: right; }
 .racket-table .words { text-align: left; }
+html.shiny-busy #ready, html:not(.shiny-busy) #busy { display: none; }
+#busy { color: #b35c00; font-weight: 600; }
 """
 
 
@@ -128,7 +140,7 @@ app_ui = ui.page_sidebar(
     ui.output_ui("cards"),
     ui.output_ui("notes"),
     ui.layout_columns(
-        _card("serve_plot", "Serve speed against head speed (string centre)"),
+        _card("serve_plot", "Serve head-on, no spin: speed against head speed (string centre)"),
         _card("exit_plot", "Ball speed off the strings along the racket (the swing)"),
         col_widths=[6, 6],
     ),
@@ -174,7 +186,12 @@ def server(input, output, session):
                 id="warming-up",
                 class_="alert alert-warning",
             )
-        return ui.div("Ready.", id="ready", class_="text-muted small")
+        return ui.div(
+            ui.span("Ready.", id="ready", class_="text-muted"),
+            ui.span(BUSY, id="busy"),
+            id="status-line",
+            class_="small",
+        )
 
     @reactive.calc
     def inputs():  # the controls, or the one line refusing them
@@ -231,69 +248,59 @@ def server(input, output, session):
             notes.insert(0, ui.div(said, id="equal-effort", class_="small"))
         return ui.div(*notes, id="notes")
 
-    def labels(r):
-        return {f"{side}: {one.name}": one for side, one in built_sides(r).items()}
-
-    def built():
+    @reactive.calc
+    def drawn():  # what each plot draws (studies.page.plots.page_plots)
         r = ready()
-        return r if r is not None and built_sides(r) else None
+        return {} if r is None else page_plots(r, inputs().swing_mph)
+
+    def kept(name: str):
+        # what plot ``name`` draws, kept as a value set anew only when it changes in value
+        # (its pickle): the plot is drawn again only then (a new swing leaves the face maps
+        # and e_A along the racket as they were)
+        value = reactive.value((None, None))
+
+        @reactive.effect(priority=1)  # before the outputs of the same flush read it
+        def _follow():
+            new = drawn().get(name)
+            said = None if new is None else pickle.dumps(new)
+            with reactive.isolate():
+                changed = value.get()[0] != said
+            if changed:
+                value.set((said, new))
+
+        return lambda: value.get()[1]
+
+    now = {name: kept(name) for name in PLOTS}
+
+    def plot(name: str):
+        arguments = now[name]()
+        return None if arguments is None else PLOTS[name](**arguments).figure
 
     @render.plot(alt="serve speed against racket-head speed, rackets A and B")
     def serve_plot():
-        from studies.page.plots import plot_serve_speeds
-
-        r = built()
-        if r is None:
-            return None
-        serves = {k: v.serves for k, v in labels(r).items()}
-        said = r.conditions["serve"]
-        return plot_serve_speeds(serves, inputs().swing_mph, conditions=said).figure
-
-    def along(column: str, ylabel: str, said: str, mph: bool = False):
-        # racket A's and B's ``column`` along the racket: ``ylabel`` its axis (formatted
-        # with the page's swing [mph]), ``said`` the key of its conditions line
-        from studies.page.plots import plot_along_racket
-
-        r = built()
-        if r is None:
-            return None
-        tables = {k: v.along for k, v in labels(r).items()}
-        ylabel = ylabel.format(swing=inputs().swing_mph)
-        said = r.conditions[said]
-        return plot_along_racket(tables, column, ylabel, mph=mph, conditions=said).figure
+        return plot("serve_plot")
 
     @render.plot(alt="ball speed off the swung strings along the racket, A and B")
     def exit_plot():
-        ylabel = "ball speed off the strings [mph] (swing {swing:.0f} mph)"
-        return along("exit_speed_swung_mph", ylabel, "exit", mph=True)
+        return plot("exit_plot")
 
     @render.plot(alt="e_A along the racket, A and B")
     def power_plot():
-        return along("e_A", "rebound ratio e_A [-]", "e_A")
+        return plot("power_plot")
 
-    def face(side: str):
-        from studies.page.plots import plot_face_map_page
+    @render.plot(alt="e_A over the string face of racket A")
+    def face_a():
+        return plot("face_a")
 
-        r = ready()
-        one = None if r is None else built_sides(r).get(side)
-        if one is None:
-            return None
-        said = r.conditions[f"face_{side.lower()}"]
-        return plot_face_map_page(one.face, f"{side}: {one.name}", conditions=said).figure
+    @render.plot(alt="e_A over the string face of racket B")
+    def face_b():
+        return plot("face_b")
 
     def face_error(side: str):
         r = ready()
         if r is None or side not in r.errors:
             return ui.div()
         return ui.div(r.errors[side], class_="alert alert-danger py-2 mb-0")
-
-    @render.plot(alt="e_A over the string face of racket A")
-    def face_a():
-        return face("A")
-
-    @render.plot(alt="e_A over the string face of racket B")
-    def face_b():
-        return face("B")
 
     @render.ui
     def face_a_error():
@@ -305,8 +312,8 @@ def server(input, output, session):
 
     @render.ui
     def spots():
-        r = built()
-        return ui.div() if r is None else spots_table(r)
+        r = ready()
+        return ui.div() if r is None or not built_sides(r) else spots_table(r)
 
 
 app = PageGuard(App(app_ui, server))

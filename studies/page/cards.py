@@ -11,7 +11,7 @@ from shiny import ui
 from common.units import IN2, MPH
 from racket.stroke import RPM
 from studies.face.maps import SWEET_FRACTION
-from studies.page.strokes import GROUNDSTROKE_RATIO, PAGE_GROUNDSTROKE
+from studies.page.strokes import GROUNDSTROKE_RATIO, PAGE_GROUNDSTROKE, PAGE_SERVES
 
 SIDES = ("A", "B")
 """The page's rackets."""
@@ -131,18 +131,17 @@ def headline_cards(r, swing_mph: float):
         )
 
     rpm, mph = (RPM, "rad/s"), (MPH, "m/s")
+    flat, kick = PAGE_SERVES
     serve = _metric(
         "card_serve",
         "Serve: speed and spin",
-        f"off the string centre at {swing_mph:.0f} mph head speed: the serve head-on, and "
-        "the flat and kick serves with spin",
-        ["serve\n[mph]", "flat spin\n[rpm]", "kick\n[mph]", "kick spin\n[rpm]"],
-        pick("serve_mph", "flat_serve_spin_rpm", "kick_serve_mph", "kick_serve_spin_rpm"),
+        f"the {flat} and the {kick} at {swing_mph:.0f} mph head speed, each one stroke of "
+        "racket-impact stroke: its speed and its spin",
+        [f"{flat}\n[mph]", "its spin\n[rpm]", f"{kick}\n[mph]", "its spin\n[rpm]"],
+        pick("flat_serve_mph", "flat_serve_spin_rpm", "kick_serve_mph", "kick_serve_spin_rpm"),
         [1, 0, 1, 0],
         [mph, rpm, mph, rpm],
-        small=f"serve: the ball at rest hit head-on, no spin, {each('serve_mph', MPH, 'm/s')}; "
-        f"the flat serve with spin leaves at {each('flat_serve_mph', 1.0, 'mph')}; "
-        f"{said['serve_spin']}",
+        small=f"the serve head-on without spin is the plot's; {said['serve_spin']}",
     )
     groundstroke = _metric(
         "card_groundstroke",

@@ -63,11 +63,11 @@ HEAD_SPEEDS_MPH = np.r_[np.arange(20.0, HEAD_SPEED_MAX_MPH, 10.0), HEAD_SPEED_MA
 """Head speeds of the serve-speed curve [mph]: a slow feed to :data:`HEAD_SPEED_MAX_MPH`."""
 
 COMPARED = (
-    "serve_mph", "exit_centre_mph", "e_A_centre", "sweet_area_cm2", "feel_shock_g",
-    "feel_vibration_g", "feel_hz", "mass_g", "balance_cm", "swingweight_kgcm2",
-    "twistweight_kgcm2", "f1_hz", *STROKE_COMPARED,
+    "exit_centre_mph", "e_A_centre", "sweet_area_cm2", "feel_shock_g", "feel_vibration_g",
+    "feel_hz", "mass_g", "balance_cm", "swingweight_kgcm2", "twistweight_kgcm2", "f1_hz",
+    *STROKE_COMPARED,
 )  # fmt: skip
-"""The headline numbers the page shows for A, B and B - A."""
+"""The headline numbers the cards show for A, B and B - A (``serve_mph``: the plot's)."""
 
 SHEET_FIELDS = {
     "mass_g": "Strung mass [g]",

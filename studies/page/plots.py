@@ -5,6 +5,8 @@ Each function takes results computed elsewhere (:mod:`studies.page.dashboard`), 
 ``ax`` and the conditions the results are for (:mod:`studies.page.conditions`, drawn as the
 figure's heading), draws, and returns the Axes; none calls ``show()``.  Speeds are in mph,
 as the page speaks, with m/s on a secondary axis; positions in cm from the tip.
+:func:`page_plots` says what each of the page's plots (:data:`PLOTS`) draws for the page's
+results: the page draws exactly that.
 """
 
 from __future__ import annotations
@@ -125,7 +127,7 @@ def plot_along_racket(
     return ax
 
 
-def plot_face_map_page(face_map, title: str, ax=None, conditions: str | None = None):
+def plot_face_map_page(face_map, title: str, ax=None, conditions: str | None = None, levels=None):
     """:func:`studies.plots.plot_face_map` (e_A over the face, speeds in mph), its legend
     titled ``title`` above the Axes (in place of the Axes' title), clear of the axis labels,
     the face and the colour bar, and a shorter x label, clear of the colour bar.
@@ -137,13 +139,74 @@ def plot_face_map_page(face_map, title: str, ax=None, conditions: str | None = N
     ax : Axes, optional
     conditions : str, optional
         What the map is for (racket, ball, speed), drawn as the heading.
+    levels : array_like, optional
+        The edges of the filled contours of e_A [-], shared with the other racket's map so
+        that both have one colour scale (:func:`studies.plots.face.shared_levels` of the two
+        maps); None: this map's own.
     """
     from studies.plots import plot_face_map
 
-    ax = plot_face_map(face_map, ax=_axes(ax, figsize=(4.6, 7.0)), unit="mph")
+    own = {} if levels is None else {"levels": levels}
+    ax = plot_face_map(face_map, ax=_axes(ax, figsize=(4.6, 7.0)), unit="mph", **own)
     ax.set_title("")
     ax.set_xlabel("off the axis [cm] (+: 3 o'clock)")  # short: clear of the colour bar
     _legend_above(ax, loc="lower left", ncols=1, frameon=True, title=title)
     ax.get_legend().set(alignment="left")
     _heading(ax, conditions)
     return ax
+
+
+def page_plots(r, swing_mph: float) -> dict:
+    """What each of the page's plots draws for the page's results ``r``: per output id (a
+    key of :data:`PLOTS`), the keyword arguments of its function, only what it draws; a plot
+    with nothing to draw (no racket built, or not its racket) is left out.  The face maps of
+    A and B share their contours' edges (:func:`studies.plots.face.shared_levels` of both):
+    one colour scale, so that a colour is the same e_A on each.
+
+    Parameters
+    ----------
+    r : PageResults
+        The page's results (:func:`studies.page.dashboard.page_results`).
+    swing_mph : float
+        The page's racket-head speed [mph], marked on the serve plot.
+    """
+    from studies.plots.face import shared_levels
+
+    sides = {side: one for side, one in (("A", r.a), ("B", r.b)) if one is not None}
+    if not sides:
+        return {}
+    labels = {f"{side}: {one.name}": one for side, one in sides.items()}
+    said = r.conditions
+
+    def along(column: str, ylabel: str, key: str, mph: bool = False) -> dict:
+        tables = {k: v.along[["position_from_tip_m", column]] for k, v in labels.items()}
+        return {"tables": tables, "column": column, "ylabel": ylabel, "mph": mph,
+                "conditions": said[key]}  # fmt: skip
+
+    columns = ["head_speed_mph", "serve_simulated_mph"]
+    drawn = {
+        "serve_plot": {
+            "serves": {k: v.serves[columns] for k, v in labels.items()},
+            "head_speed_mph": swing_mph,
+            "conditions": said["serve"],
+        },
+        "exit_plot": along("exit_speed_swung_mph", "ball speed [mph]", "exit", mph=True),
+        "power_plot": along("e_A", "rebound ratio e_A [-]", "e_A"),
+    }
+    levels = shared_levels([one.face for one in sides.values()])
+    for side, one in sides.items():
+        key = f"face_{side.lower()}"
+        drawn[key] = {"face_map": one.face, "title": f"{side}: {one.name}",
+                      "conditions": said[key], "levels": levels}  # fmt: skip
+    return drawn
+
+
+PLOTS = {
+    "serve_plot": plot_serve_speeds,
+    "exit_plot": plot_along_racket,
+    "power_plot": plot_along_racket,
+    "face_a": plot_face_map_page,
+    "face_b": plot_face_map_page,
+}
+"""The page's plots: output id -> the function that draws it (with :func:`page_plots`'
+arguments)."""

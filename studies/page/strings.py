@@ -8,13 +8,13 @@ from __future__ import annotations
 
 from common.typechecks import choice, flag
 from racket import CATALOG
-from racket.specs.catalog import STRUNG
+from racket.specs.strung import STRUNG
 from racket.strings.stringing import STRING_CHOICES, stringing
 
 OWN_STRINGS = "own"
 """The choice that keeps each racket's own strings: a catalogue racket's
 (:attr:`racket.specs.catalog.Entry.strung`, fresh polyester 16L in its own pattern) and, for
-a spec sheet, the catalogue's (:data:`racket.specs.catalog.STRUNG`), so that a spec sheet
+a spec sheet, the one rule (:data:`racket.specs.strung.STRUNG`), so that a spec sheet
 is compared with a catalogue racket on the same strings."""
 
 PAGE_STRINGS = (OWN_STRINGS, *STRING_CHOICES)

@@ -43,8 +43,8 @@ STROKE_KEYS = {"flat_serve": "flat-serve", "kick_serve": "kick-serve",
 ``<key>_launch_deg`` in a racket's summary) and the preset it is."""
 
 STROKE_COMPARED = (
-    "flat_serve_spin_rpm", "kick_serve_mph", "kick_serve_spin_rpm", "forehand_mph",
-    "forehand_spin_rpm", "forehand_launch_deg",
+    "flat_serve_mph", "flat_serve_spin_rpm", "kick_serve_mph", "kick_serve_spin_rpm",
+    "forehand_mph", "forehand_spin_rpm", "forehand_launch_deg",
 )  # fmt: skip
 """The strokes' numbers the page's cards show for A, B and B - A."""
 
@@ -138,8 +138,8 @@ def _incoming(stroke) -> str:
 
 def stroke_conditions(inputs, a, b) -> dict:
     """The conditions lines of the page's cards with spin; {} with no racket built.
-    ``serve_spin``, the serve card's: the head-on serve's line
-    (:func:`studies.page.conditions.page_conditions`), then the flat and kick serves';
+    ``serve_spin``, the serve card's: the flat and kick serves' (the serve head-on, without
+    spin, is the serve plot's: :func:`studies.page.conditions.page_conditions`);
     ``groundstroke``, the topspin forehand's.  Each names the rackets as the other cards do,
     the ball, each stroke's head speed, path and face, the incoming ball, where it is hit and
     how the racket moves, and what the bed does sideways (:func:`studies.strokes.stroke.bed_words`).
@@ -166,7 +166,6 @@ def stroke_conditions(inputs, a, b) -> dict:
     page = "(the page's)"
     serves = (
         f"{stroke_words(PAGE_SERVES[0], flat, page)}; {stroke_words(PAGE_SERVES[1], kick, page)}"
-        f"; the ball tossed {_incoming(flat)}"
     )
     forehand = strokes[PAGE_GROUNDSTROKE]
     ground = stroke_words(PAGE_GROUNDSTROKE, forehand, f"(the page's times "
@@ -176,8 +175,8 @@ def stroke_conditions(inputs, a, b) -> dict:
         for key, names in (("serve", PAGE_SERVES), ("ground", (PAGE_GROUNDSTROKE,)))
     }
     return {
-        "serve_spin": f"{lines['serve']}; with spin, {serves}, {how}"
-        + (f"; {notes['serve']}" if notes["serve"] else ""),
+        "serve_spin": f"{lines['racket']}, ball {inputs.ball} tossed {_incoming(flat)}, "
+        f"{serves}, {how}" + (f"; {notes['serve']}" if notes["serve"] else ""),
         "groundstroke": f"{lines['racket']}, ball {inputs.ball} {_incoming(forehand)}, "
         f"{ground}, {how}" + (f"; {notes['ground']}" if notes["ground"] else ""),
     }

@@ -17,6 +17,11 @@ _AT_REST = ("e_A", "exit_speed")
 """The fields whose largest values are the sweet area's: e_A, and the exit speed off the
 racket at rest, which is e_A times the ball's speed."""
 
+LEVELS = 14
+"""How many filled contours a face map has, about (spread at round values over its values,
+:class:`matplotlib.ticker.MaxNLocator`, as :meth:`matplotlib.axes.Axes.contourf` spreads a
+count)."""
+
 _LARGER_IS_BETTER = ("e", "exit_speed_swung")
 """The other fields whose peak region (within :data:`studies.face.maps.SWEET_FRACTION` of their
 largest value) is drawn: players seek their largest values."""
@@ -28,6 +33,7 @@ def plot_face_map(
     ax=None,
     unit: str = "m/s",
     conditions: str | None = None,
+    levels=LEVELS,
 ):
     """A :class:`studies.face.maps.FaceMap` as filled contours over the face, tip up: the
     string bed's outline, where the ball's centre may land (dotted), the first mode's node
@@ -49,6 +55,12 @@ def plot_face_map(
         :data:`common.units.SPEED_UNITS` (the one the user typed).
     conditions : str, optional
         The run's conditions, drawn as the figure's heading; None: none drawn.
+    levels : int or array_like
+        The filled contours: how many, spread over this map's own values (default
+        :data:`LEVELS`), or their edges, increasing [the field's unit: ``unit`` for a speed,
+        else as its colour bar says]: the colour scale runs from the first to the last, so
+        that maps drawn with the same edges share one scale (equal colours, equal values;
+        :func:`shared_levels`).
     """
     from studies.face.maps import FIELDS
 
@@ -63,7 +75,7 @@ def plot_face_map(
     x_cm = np.broadcast_to(100 * face_map.positions[:, None], y_cm.shape)
     values = getattr(face_map, field) / (size if field in _SPEEDS else 1.0)
     label = _FIELD_LABELS[field].format(unit=unit)
-    filled = ax.contourf(y_cm, x_cm, values, levels=14, cmap="viridis")
+    filled = ax.contourf(y_cm, x_cm, values, levels=levels, cmap="viridis")
     ax.figure.colorbar(filled, ax=ax, label=label, shrink=0.8)
     length = 100 * (strings.extent[1] - strings.extent[0])
     width = 100 * strings.full_width
@@ -103,6 +115,35 @@ def plot_face_map(
     ax.set_title(f"{label}\nball at {face_map.speed / size:.4g} {unit}")
     ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.1), fontsize="small")
     return finish(ax, conditions, made)
+
+
+def shared_levels(face_maps, field: str = "e_A", unit: str = "m/s"):
+    """Edges of filled contours spanning ``field`` over all ``face_maps`` (about
+    :data:`LEVELS` of them, at round values, as one map spreads them over its own values), for
+    :func:`plot_face_map`'s ``levels``: maps drawn with them share one colour scale.
+
+    Parameters
+    ----------
+    face_maps : iterable of FaceMap
+        The maps to be drawn on one scale.
+    field : str
+        One of :data:`studies.face.maps.FIELDS`, as :func:`plot_face_map` takes it.
+    unit : str
+        The unit of speeds, as :func:`plot_face_map` takes it.
+
+    Returns
+    -------
+    ndarray
+        The edges, increasing, the first at or below the smallest value of every map and the
+        last at or above the largest.
+    """
+    from matplotlib.ticker import MaxNLocator
+
+    size = speed_scale(unit) if field in _SPEEDS else 1.0
+    values = [np.asarray(getattr(face, field)) / size for face in face_maps]
+    low = min(float(np.min(v)) for v in values)
+    high = max(float(np.max(v)) for v in values)
+    return MaxNLocator(LEVELS + 1, min_n_ticks=1).tick_values(low, high)
 
 
 def _peak_region(ax, face_map, field: str, y_cm, x_cm, values) -> None:

@@ -12,7 +12,7 @@ from common.typechecks import choice
 from common.units import GRAVITY, KP_PER_CM, LB
 from racket import StringBed
 from racket.strings.sizes import diameter, parse_pattern
-from racket.strings.stringing import STATES, restrung, stringing
+from racket.strings.stringing import LINEAR, STATES, restrung, stringing
 from racket.strings.tension import TENSION_RANGE_LB
 from studies.sweeps import STRING_STIFFNESS_RANGE
 
@@ -62,17 +62,23 @@ def strings_from_table(bed: StringBed, table: dict) -> tuple[StringBed, float | 
     pattern = table.get("pattern")
     pattern = None if pattern is None else parse_pattern(pattern, f"{where} pattern")
     state = table.get("state") and choice(f"{where} state", table["state"], STATES)
-    stiffness = table.get("stiffness", KP_PER_CM * table.get("dt_kp_cm", 0.0)) or None
-    if "string" in table:
+    stiffness = table.get("stiffness")
+    if table.get("string", LINEAR) != LINEAR:
         stringing(table["string"], gauge, argument=f"{where} string")  # refused as typed
-    elif bed.stringing is None and (gauge or pattern or state):
+    elif (bed.stringing is None or "string" in table) and (gauge or pattern or state):
+        plain = f"string = {LINEAR!r} is" if "string" in table else "this bed is"
         raise ValueError(
-            f"{where} gauge, pattern and state describe a string, and this bed is a plain "
-            "spring with none: add string, e.g. string = 'polyester'"
+            f"{where} gauge, pattern and state describe a string, and {plain} a plain "
+            "spring with none: name a string, e.g. string = 'polyester'"
         )
     bed = replace(bed, extent=tuple(table.get("extent", bed.extent)),
                   profile=table.get("profile", bed.profile))  # fmt: skip
     if bed.stringing is not None or "string" in table or stiffness is not None:
         bed = restrung(bed, table.get("string"), gauge, pattern, state, stiffness)
+    if "dt_kp_cm" in table:  # read on the strings as strung, as an ERT reads them
+        from racket.strings.ert import stiffness_from_dt
+
+        k = stiffness_from_dt(bed, table["dt_kp_cm"], f"{where} dt_kp_cm")
+        bed = restrung(bed, stiffness=k)
     tension = table.get("tension_lb", 0.0) * LB or table.get("tension_kg", 0.0) * GRAVITY
     return bed, tension or None

@@ -17,7 +17,9 @@ Two kinds, kept apart (:attr:`Comparison.kind`):
 
 :func:`validation_table` runs them all (a few seconds).  Where the model falls outside a
 band the table says so; nothing is tuned to move it in (``tests/test_validation.py`` keeps
-each disagreement as an expected failure with the measured gap).
+each disagreement as an expected failure with the measured gap).  A calibration row outside
+its band says why (:attr:`Comparison.gap`, which ``validate`` prints), and a band that a guide
+states too is the same band there (``tests/test_one_band.py``).
 """
 
 from studies.validation.comparison import COLUMNS, KINDS, Comparison

@@ -11,7 +11,8 @@ from dataclasses import dataclass, field
 KINDS = ("validation", "calibration")
 """The kinds of comparison: a number the model was not set from, or one it was."""
 
-COLUMNS = ("quantity", "conditions", "measured", "low", "high", "model", "agrees", "kind", "source")
+COLUMNS = ("quantity", "conditions", "measured", "low", "high", "model", "agrees", "kind", "source",
+           "band_from", "gap")  # fmt: skip
 """The columns of :func:`validation_table`."""
 
 
@@ -44,6 +45,10 @@ class Comparison:
         measurement's stated input scatter (root-sum-square of each input's half range): the
         band widens by it on both sides, in quadrature (:meth:`limits`); None: no input
         scatter stated.
+    gap : str
+        Why a calibration row lies outside its band: the calibration's compromise, said by
+        ``validate`` beside the row, never silent; empty for a row that holds
+        (``tests/test_one_band.py`` keeps the two together).
     """
 
     name: str
@@ -57,6 +62,7 @@ class Comparison:
     band: str
     model: Callable[[], float] = field(repr=False, compare=False)
     spread: Callable[[], float] | None = field(default=None, repr=False, compare=False)
+    gap: str = ""
 
     def __post_init__(self):
         if self.kind not in KINDS:

@@ -21,7 +21,8 @@ def validation_table(items: list[Comparison] | None = None) -> pd.DataFrame:
     DataFrame
         Columns :data:`COLUMNS` (``measured``, ``low``, ``high``: the band widened by the
         inputs' scatter, :meth:`Comparison.limits`; and ``model``, in the unit of
-        ``quantity``; ``agrees`` a bool), indexed by each comparison's name.
+        ``quantity``; ``agrees`` a bool; ``band_from``, where the band comes from; ``gap``,
+        why a calibration row misses it), indexed by each comparison's name.
     """
     items = comparisons() if items is None else items
     rows = []
@@ -32,6 +33,7 @@ def validation_table(items: list[Comparison] | None = None) -> pd.DataFrame:
             dict(
                 quantity=c.quantity, conditions=c.conditions, measured=c.measured, low=low,
                 high=high, model=value, agrees=c.agrees(value), kind=c.kind, source=c.source,
+                band_from=c.band, gap=c.gap,
             )
         )  # fmt: skip
     return pd.DataFrame(rows, index=pd.Index([c.name for c in items], name="name"))
