@@ -91,6 +91,8 @@ def bpf(bat_ball_cor, ball_cor: float) -> np.ndarray:
     ball_cor : float
         The ball's COR on a rigid wall [-].
     """
+    if not 0.0 < ball_cor <= 1.0:  # a ball that keeps nothing has no performance to divide by
+        raise ValueError(f"ball_cor must be in (0, 1], got {ball_cor!r}")
     return np.asarray(bat_ball_cor, dtype=float) / ball_cor
 
 

@@ -105,6 +105,7 @@ def describe(
     options: dict | None = None,
     originals: dict | None = None,
     conditions: str | None = None,
+    written_utc: str | None = None,
 ) -> dict:
     """The sidecar's content for a run of ``racket-impact``.
 
@@ -122,6 +123,9 @@ def describe(
     conditions : str, optional
         What the table was computed for, in one line: racket, ball, speeds, support, grip,
         strings (:mod:`studies.conditions`), the header line of the printed table.
+    written_utc : str, optional
+        When the run was made (ISO 8601, UTC); default now.  A rerun keeps the time of the
+        run it reproduces, so that its sidecar is the same record, byte for byte.
     """
     originals = originals or {}
     argv = [_restored(word, originals) for word in argv]
@@ -142,7 +146,7 @@ def describe(
         "options": json.loads(json.dumps(options, default=str)),
         "inputs": inputs,
         "versions": versions(),
-        "written_utc": datetime.now(timezone.utc).isoformat(timespec="seconds"),
+        "written_utc": written_utc or datetime.now(timezone.utc).isoformat(timespec="seconds"),
     }
 
 
@@ -251,11 +255,12 @@ def _text(value: str) -> bool:
     return "\0" not in value
 
 
-def rerun_argv(sidecar, workdir) -> tuple[list[str], dict]:
+def rerun_argv(sidecar, workdir) -> tuple[list[str], dict, str | None]:
     """The command recorded in a sidecar (checked by :func:`read_sidecar`), its TOML inputs
     always taken from the recorded text (written to ``workdir``, never the file now at the
-    recorded path), and the map from those copies' paths to the paths first given (for
-    :func:`describe`).  ValueError for a file that is not a racket-impact sidecar, or a
+    recorded path), the map from those copies' paths to the paths first given (for
+    :func:`describe`), and the time the recorded run was made (its ``written_utc``, None if
+    the sidecar has none).  ValueError for a file that is not a racket-impact sidecar, or a
     command naming a TOML file whose text the sidecar does not hold.
 
     Parameters
@@ -287,7 +292,7 @@ def rerun_argv(sidecar, workdir) -> tuple[list[str], dict]:
             raise ValueError(
                 f"{str(path)!r}: inputs holds no text for {word!r}, which command names"
             )
-    return argv, replaced
+    return argv, replaced, record.get("written_utc")
 
 
 def temporary_directory():

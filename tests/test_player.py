@@ -159,6 +159,21 @@ def test_tables_describe_themselves_and_rerun_from_the_sidecar(tmp_path, capsys,
     assert "sidecar" in capsys.readouterr().err
 
 
+def test_rerun_twice_is_the_same_table_and_sidecar_byte_for_byte(tmp_path, capsys, monkeypatch):
+    # issue 46: the second rerun pointed at a temporary copy the first had named
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "mine.toml").write_text('[racket]\npreset = "pure-drive-2021"\n')
+    assert main(["sweep", "--racket", "mine.toml", "--points", "3", "--out", "t.csv"]) == 0
+    made = [(tmp_path / name).read_bytes() for name in ("t.csv", "t.csv.meta.json")]
+    for _ in range(2):
+        assert main(["rerun", "t.csv.meta.json"]) == 0
+        again = [(tmp_path / name).read_bytes() for name in ("t.csv", "t.csv.meta.json")]
+        assert again == made  # the record it reproduces, its time included
+    record = json.loads(made[1])
+    assert record["conditions"].startswith("racket mine.toml (")  # the user's own file
+    assert "racket-impact-rerun" not in capsys.readouterr().out
+
+
 def test_rerun_puts_back_only_whole_paths(tmp_path, capsys, monkeypatch):
     from studies.provenance import _restored
 

@@ -64,3 +64,27 @@ def test_a_racket_held_by_its_own_file_is_not_swung_nor_dropped_free(tmp_path, c
         assert out == "" and said in err
     assert main(["drop", "--onto", "racket", "--racket", str(held)]) == 0
     assert "held (medium grip)" in " ".join(capsys.readouterr().out.split())
+
+
+def test_an_option_another_overrides_is_refused_naming_both(tmp_path, capsys):
+    # issue 46: --played beside a measured bed did nothing, and nothing said so
+    for measured in (["--string-bed-dt", "30"], ["--string-stiffness", "3e4"]):
+        assert main(["sweep", "--played", *measured]) == 2
+        err = capsys.readouterr().err
+        assert "--played" in err and measured[0] in err and err.count("\n") == 1
+    toml = tmp_path / "r.toml"
+    toml.write_text('[racket]\npreset = "pure-drive-2021"\n[racket.strings]\nstate = "played"\n'
+                    "dt_kp_cm = 30\n")  # fmt: skip
+    assert main(["specs", "--racket", str(toml)]) == 2
+    assert "state = 'played'" in capsys.readouterr().err
+
+
+def test_empty_or_impossible_inputs_of_the_bat_and_string_tables_are_refused():
+    from bat.certification import bpf
+    from racket import default_ball, default_racket
+    from studies.strings.table import string_table
+
+    with pytest.raises(ValueError, match=r"ball_cor must be in \(0, 1\], got 0.0"):
+        bpf(0.5, 0.0)
+    with pytest.raises(ValueError, match="names no string to compare"):
+        string_table(default_racket(), default_ball(), 16.5, 40.0, [])

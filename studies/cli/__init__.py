@@ -108,7 +108,7 @@ def cmd_rerun(args) -> int:
 
     folder, moved = Path(args.sidecar).parent, {}
     with temporary_directory() as workdir:
-        argv, originals = rerun_argv(args.sidecar, workdir)
+        argv, originals, written = rerun_argv(args.sidecar, workdir)
         if argv[0] not in TABLE_COMMANDS:
             raise ValueError(
                 f"{args.sidecar!r}: command {argv[0]!r} makes no table; rerun replays only "
@@ -130,8 +130,8 @@ def cmd_rerun(args) -> int:
         shown = shlex.join(_restored(word, originals) for word in argv)
         into = "" if folder == Path(".") else f"  (files written into {folder}/)"
         print(f"racket-impact {shown}{into}")  # stdout: stderr is for one line of trouble
-        # the new sidecars record where the files went
-        return _start(replay, [_restored(word, moved) for word in argv], originals)
+        # the new sidecars record where the files went, at the time of the run they reproduce
+        return _start(replay, [_restored(word, moved) for word in argv], originals, written)
 
 
 def _serial(argv: list[str]) -> list[str]:

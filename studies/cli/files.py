@@ -178,7 +178,7 @@ def _sidecar(path) -> None:
         if "description" not in _RUN:
             _RUN["description"] = describe(
                 _RUN["argv"], _RUN["command"], _RUN["options"], _RUN.get("originals"),
-                _RUN.get("conditions"),
+                _RUN.get("conditions"), _RUN.get("written_utc"),
             )  # fmt: skip
         write_sidecar(path, _RUN["description"])
 
@@ -188,8 +188,11 @@ _NBSP = "\u00a0"  # not whitespace to textwrap
 
 def say_conditions(line: str) -> str:
     """Print a run's conditions (:mod:`studies.conditions`), the header line of its printed
-    tables, record them for its sidecars and return them (the plots' captions).
+    tables, record them for its sidecars and return them (the plots' captions); a rerun's
+    temporary copies of the user's files are named as the user named them.
     """
+    for copy, given in (_RUN.get("originals") or {}).items():  # a rerun's copies: the user's
+        line = line.replace(copy, given)  # own files named, not the temporary ones
     if _RUN:
         _RUN["conditions"] = line
     from studies.cli.show import WIDTH

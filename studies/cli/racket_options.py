@@ -268,6 +268,12 @@ def racket_from(args, spec: str | None = None, grid: bool = False):
     racket = lead_tape(load_racket(spec or args.racket), args.lead)
     supports = _many(getattr(args, "support", None) or [racket.support])
     newtons, _ = tensions(args), stiffnesses(args)  # checked before any work
+    measured = given(args, "string_stiffness", "string_bed_dt")
+    if getattr(args, "played", False) and measured:
+        raise ValueError(
+            f"--played lowers the strings' tension, and {measured[0]} sets the bed as measured "
+            "(played or not): give one"
+        )
     racket = restring(racket, args)
     if not grid:
         stiffness = stiffnesses(args, racket.strings)  # a DT read on the strings as strung

@@ -72,14 +72,18 @@ def _reader_may_go():
         sys.stdout = stream
 
 
-def _start(args, words: list[str], originals: dict | None = None) -> int:
+def _start(
+    args, words: list[str], originals: dict | None = None, written_utc: str | None = None
+) -> int:
     """Run the parsed ``args`` as the command line ``words``, which its tables' sidecars
-    record (``originals``: a rerun's copies of TOML inputs -> the paths first given).
+    record (``originals``: a rerun's copies of TOML inputs -> the paths first given;
+    ``written_utc``: the time of the run a rerun reproduces).
     """
     options = {k: v for k, v in vars(args).items() if k != "func" and not k.startswith("_")}
     outer = dict(_RUN)  # a rerun's own run, restored afterwards
     _RUN.clear()
-    _RUN.update(argv=words, command=args.command, options=options, originals=originals or {})
+    _RUN.update(argv=words, command=args.command, options=options, originals=originals or {},
+                written_utc=written_utc)  # fmt: skip
     try:
         return _run(args, f"racket-impact {args.command}")
     finally:

@@ -62,6 +62,12 @@ def strings_from_table(bed: StringBed, table: dict) -> tuple[StringBed, float | 
     pattern = table.get("pattern")
     pattern = None if pattern is None else parse_pattern(pattern, f"{where} pattern")
     state = table.get("state") and choice(f"{where} state", table["state"], STATES)
+    measured = [key for key in typed if key in ("stiffness", "dt_kp_cm")]
+    if state == "played" and measured:
+        raise ValueError(
+            f"{where} state = 'played' lowers the strings' tension, and {measured[0]} sets the "
+            "bed as measured (played or not): give one"
+        )
     stiffness = table.get("stiffness")
     if table.get("string", LINEAR) != LINEAR:
         stringing(table["string"], gauge, argument=f"{where} string")  # refused as typed

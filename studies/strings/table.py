@@ -86,6 +86,9 @@ def string_table(
             "the racket's string bed has no string (the paper's spring): string it first, "
             "e.g. --string polyester"
         )
+    strings = [strings] if isinstance(strings, str) else list(strings)
+    if not strings:
+        raise ValueError("strings names no string to compare: give at least one, e.g. 'nylon'")
     rows = []
     for name in strings:
         bed = restrung(racket.strings, string=name, gauge=gauge)
