@@ -63,9 +63,9 @@ def stiffness_from_dt(bed, dt_kp_cm: float, argument: str = "DT") -> float:
         return dt_reading(k, strung.stretch(area, k)) - dt_kp_cm
 
     low, high = 1e-3 * force, 10.0 * force
-    if misread(low) > 0.0 or misread(high) < 0.0:
-        end = low if misread(low) > 0.0 else high
-        side = "below the lowest" if end == low else "above the highest"
+    too_low = misread(low) > 0.0
+    if too_low or misread(high) < 0.0:
+        end, side = (low, "below the lowest") if too_low else (high, "above the highest")
         raise ValueError(
             f"{argument} {dt_kp_cm:g} kp/cm is {side} DT these strings "
             f"({strung.describe('')}) read at any tension on this head (about "

@@ -86,30 +86,31 @@ class TwuTest:
             )
         in_range("impact_tension", self.impact_tension, 0.0, TWU_REFERENCE, "N")
 
+    @property
+    def points(self) -> tuple[np.ndarray, np.ndarray]:
+        """TWU's points of the curve: strains (0 and :data:`TWU_STEPS`) [-] and the tensions
+        there (T_i and T_i + k L step) [N], increasing (checked at construction).
+        """
+        steps = np.array((0.0, *TWU_STEPS))
+        rises = np.array((0.0, *self.secants)) * TWU_LENGTH * steps
+        return steps, self.impact_tension + rises
+
     def tension(self, strain):
         """The tension [N] at ``strain`` [-] counted from the tension at impact: straight
-        between TWU's points (0, T_i) and (step, T_i + k L step), below the first on the
-        Slow secant's line and beyond the last on the last chord's (the module's
-        docstring).
+        between TWU's points (:attr:`points`), below the first on the Slow secant's line and
+        beyond the last on the last chord's (the module's docstring).
 
         Parameters
         ----------
         strain : float or array
             Strain from the tension at impact [-]; negative below it.
         """
-        strain = np.asarray(strain, dtype=float)
-        steps = np.array((0.0, *TWU_STEPS))
-        secants = zip(self.secants, TWU_STEPS, strict=True)
-        rises = np.array((0.0, *(k * TWU_LENGTH * step for k, step in secants)))
-        chords = np.diff(rises) / np.diff(steps)
-        rise = np.interp(strain, steps, rises)
-        rise = rise + chords[0] * np.minimum(strain, 0.0)
-        rise = rise + chords[-1] * np.maximum(strain - steps[-1], 0.0)
-        return self.impact_tension + rise
+        return _broken_line(strain, *self.points)
 
     def axial_stiffness(self, tension: float, step: float = BED_STRAIN) -> float:
         """The secant EA [N] of a string at ``tension`` [N] stretched by ``step`` [-]:
-        (T(eps_0 + step) - tension) / step with T(eps_0) = tension.
+        (T(eps_0 + step) - tension) / step with T(eps_0) = tension (the same broken line,
+        read the other way).
 
         Parameters
         ----------
@@ -118,8 +119,19 @@ class TwuTest:
         step : float, optional
             The strain step [-]; default :data:`BED_STRAIN`.
         """
-        from scipy.optimize import brentq  # here: the command line starts without scipy
-
         tension = positive("tension", tension, "N")
-        start = brentq(lambda eps: float(self.tension(eps)) - tension, -1.0, 1e3, xtol=1e-14)
+        strains, tensions = self.points
+        start = _broken_line(tension, tensions, strains)
         return float(self.tension(start + step) - tension) / step
+
+
+def _broken_line(x, xs: np.ndarray, ys: np.ndarray):
+    """The broken line through the points (``xs``, ``ys``), ``xs`` increasing, at ``x``:
+    straight between them, and on the first and the last chord's lines beyond them.
+    """
+    x = np.asarray(x, dtype=float)
+    chords = np.diff(ys) / np.diff(xs)
+    inside = np.interp(x, xs, ys)
+    return (
+        inside + chords[0] * np.minimum(x - xs[0], 0.0) + chords[-1] * np.maximum(x - xs[-1], 0.0)
+    )
