@@ -9,7 +9,16 @@ from dataclasses import dataclass
 import numpy as np
 
 from ball.laws import MonotoneLaw, SineLaw
-from common.checks import CM_AS_M, MM_AS_M, finite_array, in_range, positive
+from common.checks import (
+    CM_AS_M,
+    GRAMS_AS_KG,
+    MM_AS_M,
+    OZ_AS_KG,
+    finite_array,
+    in_range,
+    positive,
+    slip_hints,
+)
 from common.typechecks import instance
 
 BALL_RADIUS_RANGE = (0.005, 0.15)
@@ -21,6 +30,42 @@ as m (3.35 or 33.5 for 0.0335) is refused with the hint."""
 
 RADIUS_SLIPS = (CM_AS_M, MM_AS_M)
 """The likely slips of unit of a ball's radius: cm or mm typed as m."""
+
+
+BALL_MASS_RANGE = (0.001, 1.0)
+"""The mass of a ball [kg]: **an assumption**, generous around the balls of ball sports (a
+table-tennis ball 2.7 g, a tennis ball 57 g, a baseball 145 g, a basketball about 0.6 kg; the
+project's balls 10.3 g to 0.2 kg), the ``[ball]`` TOML's ``mass`` range
+(``studies.config.TOML_RANGES``).  A :class:`Ball` outside it that a slip of unit would
+bring into it (57 for 0.057: grams typed as kg) is refused with the hint; one heavier than
+any slip explains (over 1000 kg: 1e12 in the collision tests) stands in for an immovable
+partner, and is taken."""
+
+MASS_SLIPS = (GRAMS_AS_KG, OZ_AS_KG)
+"""The likely slips of unit of a ball's mass: grams or ounces typed as kg."""
+
+
+def ball_mass(name: str, value) -> float:
+    """A ball's mass [kg], > 0: ValueError naming ``name`` with :data:`BALL_MASS_RANGE` and
+    the slip if it lies outside that range and grams or ounces typed as kg would bring it in
+    (:data:`MASS_SLIPS`: 1-1000 kg); any other positive mass is taken (over 1000 kg, a body
+    standing in for an immovable one).
+
+    Parameters
+    ----------
+    name : str
+        The argument's name, as the message quotes it.
+    value : object
+        The mass [kg].
+    """
+    mass = positive(name, value, "kg")
+    low, high = BALL_MASS_RANGE
+    if not low <= mass <= high and slip_hints(value, low, high, "kg", MASS_SLIPS):
+        heaviest = high / min(factor for factor, *_ in MASS_SLIPS)  # the last a slip explains
+        in_range(name, value, low, high, "kg", slips=MASS_SLIPS,
+                 hint=f"; a body over {heaviest:g} kg is taken as a stand-in for an immovable "
+                      "one")  # fmt: skip
+    return mass
 
 
 def ball_radius(name: str, value) -> float:
@@ -45,7 +90,9 @@ class Ball:
     Parameters
     ----------
     mass : float
-        Ball mass [kg], > 0.
+        Ball mass [kg], > 0: a ball's is in :data:`BALL_MASS_RANGE`; one outside it that a
+        slip of unit would bring into it (57: grams typed as kg?) is refused with the hint,
+        any other is taken (a partner of 1e12 kg stands in for an immovable one).
     law : MonotoneLaw or SineLaw
         Its force law (:class:`~ball.LinearSpring`, :class:`~ball.LinearHysteresis`,
         :class:`~ball.PowerLawHysteresis`, :class:`~ball.GrowingHysteresis` or
@@ -61,7 +108,7 @@ class Ball:
     radius: float | None = None
 
     def __post_init__(self):
-        object.__setattr__(self, "mass", positive("mass", self.mass, "kg"))
+        object.__setattr__(self, "mass", ball_mass("mass", self.mass))
         if self.radius is not None:
             object.__setattr__(self, "radius", ball_radius("radius", self.radius))
         if not isinstance(self.law, (MonotoneLaw, SineLaw)):

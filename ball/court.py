@@ -24,9 +24,19 @@ from ball.bodies import WALL, Ball
 from ball.catalog import BALL_PRESETS, DEFAULT_BALL
 from ball.collision import collide
 from ball.grip import FRICTION_RANGE, slide
-from ball.spin import BallSpin
-from common.checks import RPM_AS_RAD_S, SPEED_RANGE, finite, in_range, shown, slip_hints, whole
-from common.typechecks import instance
+from ball.spin import BallSpin, ask_spin
+from common.checks import (
+    FASTEST_STROKE,
+    RPM_AS_RAD_S,
+    SPEED_RANGE,
+    finite,
+    in_range,
+    shown,
+    slip_hints,
+    too_fast,
+    whole,
+)
+from common.typechecks import ask, instance
 
 COR_RANGE = (0.05, 1.0)
 """Normal COR [-] of a bounce a :class:`Court` accepts."""
@@ -248,12 +258,14 @@ def bounce(
     court : Court
         The surface (:data:`COURTS`, :data:`LAB_SURFACES` or one's own).
     speed : float
-        Ball speed before [m/s], in (0, 80].
+        Ball speed before [m/s], in (0, 80]; one faster than the serve record
+        (:data:`common.checks.FASTEST_STROKE`) is asked about in a warning (mph typed as m/s?).
     angle : float
         Angle of its path below the horizontal as it falls, i.e. above the court [rad],
         in (0, pi/2).
     spin : float
-        Spin before [rad/s], topspin (the ball's top moving forward) positive.
+        Spin before [rad/s], topspin (the ball's top moving forward) positive, in [-1000,
+        1000]; one above :data:`ball.spin.MOST_SPIN` is asked about (rpm typed as rad/s?).
     ball : Ball, optional
         The ball (its mass, and its law's secant stiffness); None: the default preset's.
     ball_spin : BallSpin, optional
@@ -270,6 +282,7 @@ def bounce(
     speed = finite("speed", speed, "m/s")
     if not 0.0 < speed <= FASTEST_BOUNCE:
         raise ValueError(f"speed must be in (0, {FASTEST_BOUNCE:g}] m/s, got {shown(speed)}")
+    ask(too_fast, "speed", speed, "m/s", FASTEST_STROKE, "the serve record")
     angle = _angle(angle)
     if speed * math.sin(angle) < SPEED_RANGE[0]:
         raise ValueError(
@@ -278,6 +291,7 @@ def bounce(
             f"{speed * math.sin(angle):.3g} m/s"
         )
     spin = in_range("spin", spin, -1000.0, 1000.0, "rad/s", slips=(RPM_AS_RAD_S,))
+    ask_spin("spin", spin)
     steps = whole("steps", steps, 100, 100_000)
     if ball is None:
         ball = BALL_PRESETS[DEFAULT_BALL].ball()

@@ -12,8 +12,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from common.checks import in_range, positive
-from common.typechecks import choice
+from common.checks import RPM_AS_RAD_S, in_range, positive, suspect
+from common.typechecks import ask, choice
 
 INERTIA_FACTOR = 0.55
 """A tennis ball's moment of inertia over m R^2 [-]: 0.55, a hollow ball with a 6 mm wall
@@ -55,6 +55,32 @@ sets the number; the theory sets what is held fixed).  At Cross's 100 N it gives
 N/m (the constant this replaced was 8.7e4 N/m), at a stroke's 850 N 1.5e5 N/m.  The
 tangential period, 2 pi sqrt(m_t / k_t), is about the contact time, so the grip's
 spring-back moves fast with kappa."""
+
+MOST_SPIN = 5000.0 * RPM_AS_RAD_S[0]
+"""The most spin measured on a tennis ball in play [rad/s]: about 5000 rpm (523.6 rad/s):
+Nadal's forehands "about 2000 to almost 5000", second serves 3370-4650 and kick serves
+3270-4500 rpm (Yandell, tennisplayer.net; Cross, TWU 2011; ``data/measurements.md`` sec. 6,
+"Spin and swing in play").  A spin typed above it in rad/s that is one in rpm is asked about
+(:func:`ask_spin`)."""
+
+
+def ask_spin(name: str, value) -> None:
+    """Ask (a ``UserWarning``, :func:`common.typechecks.ask`) about a spin ``value``
+    [rad/s], of either sign, above :data:`MOST_SPIN` that is one in rpm typed as rad/s:
+    "topspin 800 rad/s is more than any ball in play spins (about 5000 rpm, 523.6 rad/s):
+    rpm typed as rad/s? 800 rpm would be 83.78 rad/s".
+
+    Parameters
+    ----------
+    name : str
+        The argument's name, as the message quotes it.
+    value : float
+        The spin [rad/s] (or the size of a spin vector).
+    """
+    why = (f"more than any ball in play spins (about {MOST_SPIN / RPM_AS_RAD_S[0]:.0f} rpm, "
+           f"{MOST_SPIN:.4g} rad/s)")  # fmt: skip
+    ask(suspect, name, value, (-MOST_SPIN, MOST_SPIN), "rad/s", (RPM_AS_RAD_S,), why)
+
 
 TANGENTIAL_FORMS = ("secant", "incremental")
 """How the patch's spring follows its changing stiffness: ``"secant"`` (F = k_t xi, the

@@ -6,17 +6,36 @@ of mass at 24 m/s and 51 rad/s about it, a turn about a point 9 cm from the knob
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
 
-from common.checks import in_range, shown
+from common.checks import RPM_AS_RAD_S, SPEED_SLIPS, in_range, shown, suspect
+from common.typechecks import ask
 from racket.swing import ARM_REACH
 
 ANGULAR_VELOCITY_RANGE = (0.0, 200.0)
 """A bat's angular velocity [rad/s] racket-impact accepts (> 0 for a :class:`BatSwing`: a
 bat at rest has no swing): **an assumption**, generous around a swing's (N2000: 51 and
 56 rad/s; a fast swing turns at 40-60)."""
+
+FASTEST_TURN = 1.5 * 51.0
+"""The fastest a batter is taken to turn a bat [rad/s]: 76.5 rad/s.  **An ASSUMPTION**: no
+record of bats' angular velocities is kept here; this is N2000's high-speed swing (51 rad/s,
+``studies.bat.sweep.ANGULAR_VELOCITY``) half as fast again, as the command line bounds the
+centre of mass's speed.  One typed faster is asked about (rpm or deg/s typed as rad/s?), not
+refused (:data:`ANGULAR_VELOCITY_RANGE` refuses above 200 rad/s)."""
+
+FASTEST_CM_SPEED = 1.5 * 24.0
+"""The fastest a batter is taken to swing a bat's centre of mass [m/s]: 36 m/s (81 mph).
+**An ASSUMPTION**, the command line's too: no record of bat speeds is kept here
+(``data/bats.md`` gives none); this is N2000's high-speed swing (24 m/s,
+``studies.bat.sweep.CM_SPEED``) half as fast again.  One typed faster is asked about (mph
+or km/h typed as m/s?), not refused (:data:`CM_SPEED_RANGE` refuses above 60 m/s)."""
+
+DEG_S_AS_RAD_S = (math.pi / 180.0, "deg/s typed as rad/s?", "deg/s")
+"""A slip of unit: an angular velocity in deg/s where rad/s are asked for."""
 
 CENTRE_BEYOND_KNOB = ARM_REACH
 """Farthest [m] beyond the knob the point a bat turns about may lie: the solver's reach for a
@@ -38,10 +57,13 @@ class BatSwing:
     Parameters
     ----------
     angular_velocity : float
-        The bat's angular velocity [rad/s], in [0, 200]; the barrel's end moves fastest.
+        The bat's angular velocity [rad/s], in (0, 200]; the barrel's end moves fastest.  One
+        above :data:`FASTEST_TURN` (76.5 rad/s) is asked about in a warning, with the slips of
+        unit that would explain it (136 for 136 rpm).
     cm_speed : float or None
         Speed of the centre of mass towards the ball [m/s], in [0, 60]: the bat turns about
         the point ``cm_speed / angular_velocity`` beyond its centre of mass towards the knob.
+        One above :data:`FASTEST_CM_SPEED` (36 m/s) is asked about (54 for 54 mph).
     pivot_from_knob : float or None
         Or the point it turns about [m from the knob] (of a pivoted bat: its pivot).  Give
         one of the two.
@@ -52,15 +74,24 @@ class BatSwing:
     pivot_from_knob: float | None = None
 
     def __post_init__(self):
-        w = in_range("angular_velocity", self.angular_velocity, *ANGULAR_VELOCITY_RANGE, "rad/s")
+        turns = (RPM_AS_RAD_S, DEG_S_AS_RAD_S)
+        w = in_range("angular_velocity", self.angular_velocity, *ANGULAR_VELOCITY_RANGE, "rad/s",
+                     slips=turns)  # fmt: skip
         if w == 0.0:
             raise ValueError("angular_velocity must be > 0 rad/s: a bat at rest has no swing "
                              "(None where a swing is asked for)")  # fmt: skip
+        why = f"faster than batters turn a bat (about {FASTEST_TURN:.3g} rad/s, estimated)"
+        ask(suspect, "angular_velocity", w, (0.0, FASTEST_TURN), "rad/s", turns, why, always=True)
         object.__setattr__(self, "angular_velocity", w)
         if (self.cm_speed is None) == (self.pivot_from_knob is None):
             raise ValueError("give one of cm_speed [m/s] and pivot_from_knob [m], not both")
         if self.cm_speed is not None:
-            v = in_range("cm_speed", self.cm_speed, *CM_SPEED_RANGE, "m/s")
+            v = in_range("cm_speed", self.cm_speed, *CM_SPEED_RANGE, "m/s",
+                         slips=SPEED_SLIPS["m/s"])  # fmt: skip
+            why = (f"faster than batters swing a bat's centre of mass (about "
+                   f"{FASTEST_CM_SPEED:.3g} m/s, estimated)")  # fmt: skip
+            ask(suspect, "cm_speed", v, (0.0, FASTEST_CM_SPEED), "m/s", SPEED_SLIPS["m/s"], why,
+                always=True)  # fmt: skip
             object.__setattr__(self, "cm_speed", v)
         else:
             pivot = in_range("pivot_from_knob", self.pivot_from_knob, *CENTRE_RANGE,

@@ -24,12 +24,25 @@ to the targets, not the absolute times; the load average is printed before and a
 * whole processes: ``python -c "import racket"``, a cached ``racket-impact sweep`` and
   ``racket-impact paper`` (warm: the compiled kernel on disk).
 
+Beside each figure is its ratio to the baseline, the same figure of the previous release
+measured on this machine, and "SLOWER" where a figure has moved the wrong way by more than
+:data:`SLOWER` (10 %).  The script records that baseline itself::
+
+    python benchmarks/sweep.py --record-baseline REV
+
+checks out the release ``REV`` (a tag or commit) in a temporary git worktree, runs this
+script against it, and writes its figures, the machine and the load to
+``benchmarks/baseline.json``; a machine other than the recorded one gets no ratios.
+
 The accuracy of the defaults is measured by ``benchmarks/accuracy.py``.
 """
 
 from __future__ import annotations
 
+import json
 import os
+import platform
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -50,6 +63,12 @@ from studies.sweeps import sweep
 
 POINTS = 200
 SPEED = 10.0
+BASELINE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "baseline.json")
+"""The previous release's figures on this machine (``--record-baseline``)."""
+SLOWER = 1.10
+"""A figure this much worse than its baseline is flagged."""
+FIGURES = {}
+"""This run's figures, by name (value, the direction that is better)."""
 
 
 def baseline_e(racket, ball, position, speed):
@@ -122,14 +141,72 @@ def _median_time(call, runs: int = 10) -> float:
     return float(np.median(times))
 
 
+def _machine() -> str:
+    """The machine, as the baseline records it: processor, cores and Python."""
+    cpu = platform.processor() or platform.machine()
+    with open("/proc/cpuinfo") as info:  # Linux: the model name, where processor() is bare
+        names = [line.split(":", 1)[1].strip() for line in info if line.startswith("model name")]
+    return (
+        f"{names[0] if names else cpu}, {os.cpu_count()} cores, Python {platform.python_version()}"
+    )
+
+
+def _baseline() -> dict:
+    """The recorded baseline's figures, or {} where none was recorded on this machine."""
+    if not os.path.exists(BASELINE):
+        return {}
+    with open(BASELINE) as file:
+        recorded = json.load(file)
+    return recorded["figures"] if recorded["machine"] == _machine() else {}
+
+
 def _row(name: str, value: float, unit: str, target: float, better: str = "lower") -> None:
-    """One figure beside its target, and their ratio (< 1 meets a 'lower' target)."""
+    """One figure beside its target, and their ratio (< 1 meets a 'lower' target), and its
+    ratio to the baseline's.
+    """
+    FIGURES[name] = value
     ratio = value / target
     met = ratio <= 1.0 if better == "lower" else ratio >= 1.0
+    against = ""
+    past = _BASE.get(name)
+    if past:
+        change = value / past if better == "lower" else past / value
+        against = f"  baseline {change:5.2f}{'  SLOWER' if change > SLOWER else ''}"
     print(
         f"{name:<48} {value:>10.3g} {unit:<5} target {'<=' if better == 'lower' else '>='} "
-        f"{target:<7g} ratio {ratio:6.2f}  {'met' if met else 'NOT MET'}"
+        f"{target:<7g} ratio {ratio:6.2f}  {'met' if met else 'NOT MET'}{against}"
     )
+
+
+def record_baseline(rev: str) -> None:
+    """Run this script against the release ``rev`` checked out in a temporary worktree and
+    write its figures to :data:`BASELINE`.
+    """
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    commit = subprocess.run(["git", "-C", root, "rev-parse", rev], check=True,
+                            capture_output=True, text=True).stdout.strip()  # fmt: skip
+    tree = tempfile.mkdtemp(prefix="racket-impact-baseline-")
+    subprocess.run(["git", "-C", root, "worktree", "add", "--detach", tree, commit], check=True,
+                   capture_output=True)  # fmt: skip
+    try:
+        env = dict(os.environ, PYTHONPATH=tree)
+        with tempfile.NamedTemporaryFile(suffix=".json") as out:
+            subprocess.run([sys.executable, os.path.abspath(__file__), "--json", out.name],
+                           check=True, cwd=tree, env=env)  # fmt: skip
+            figures = json.load(open(out.name))
+    finally:
+        subprocess.run(["git", "-C", root, "worktree", "remove", "--force", tree], check=True)
+        shutil.rmtree(tree, ignore_errors=True)
+    recorded = {"release": rev, "commit": commit, "machine": _machine(), "load": _load(),
+                "figures": figures}  # fmt: skip
+    partial = f"{BASELINE}.partial"
+    with open(partial, "w") as file:
+        json.dump(recorded, file, indent=1)
+    os.replace(partial, BASELINE)
+    print(f"baseline of {rev} ({commit[:10]}) written to {BASELINE}")
+
+
+_BASE = {}  # the baseline's figures, read when main starts
 
 
 def _traced(call):
@@ -253,8 +330,10 @@ def kernel_table(racket, ball) -> None:
 
 
 def main() -> None:
-    """Print every figure beside its target."""
+    """Print every figure beside its target and its baseline's."""
     warnings.simplefilter("ignore")
+    _BASE.update(_baseline())
+    print("baseline:", "recorded on this machine" if _BASE else "none for this machine")
     print(_load(), "(at the start)")
     racket, ball = paper_racket(), paper_ball()
     x = np.linspace(0.0, 0.32, POINTS)
@@ -342,4 +421,10 @@ def main() -> None:
 
 
 if __name__ == "__main__":
-    main()
+    if sys.argv[1:2] == ["--record-baseline"]:
+        record_baseline(sys.argv[2])
+    else:
+        main()
+        if sys.argv[1:2] == ["--json"]:  # (what --record-baseline reads)
+            with open(sys.argv[2], "w") as out:
+                json.dump(FIGURES, out)

@@ -140,6 +140,12 @@ for."""
 MM_AS_M = (1e-3, "mm typed as m?", "mm")
 """A length in mm where m are asked for."""
 
+MM_AS_CM = (0.1, "mm typed as cm?", "mm")
+"""A length in mm where cm are asked for."""
+
+KG_AS_G = (1e3, "kg typed as g?", "kg")
+"""A mass in kg where grams are asked for (lead tape: 0.005 for 5 g)."""
+
 # The slips below quote the value typed in its likely unit: "645 cm^2 would be 99.98 in^2".
 MPH_AS_M_S = (MPH, "mph typed as m/s?", "mph")
 """A speed in mph where m/s are asked for."""

@@ -54,6 +54,45 @@ def added_mass(name: str, value) -> float:
     return in_range(name, mass, 0.0, ADDED_MASS_MAX, "kg", slips=(GRAMS_AS_KG,))
 
 
+def check_strings_fit(beam: Beam, strings: StringBed, hand: Hand, name: str = "strings extent"):
+    """Refuse a string bed that does not fit its frame: one that runs past the frame's end,
+    or into its handle (the last ``hand.grip_length`` of it, where the hand holds a hand-held
+    racket and the handle is on any other).  The message names what was typed: the bed's
+    extent as ``name`` (a TOML key: "[racket.strings] extent") when the hand is a preset
+    grip (:data:`racket.hand.GRIPS`, a hand no one typed), the grip's length for a hand of
+    one's own; each with the frame and what would fit.
+
+    Parameters
+    ----------
+    beam : Beam
+        The frame.
+    strings : StringBed
+        Its string bed.
+    hand : Hand
+        The hand (its grip's length is the handle's).
+    name : str, optional
+        The bed's extent as the user gave it, as the message quotes it.
+    """
+    start, end = strings.extent
+    said = f"{name} ({start:g}, {end:g}) m from the tip"
+    if end > beam.length:
+        raise ValueError(f"{said} runs past the end of the {beam.length:g} m frame: the strings "
+                         f"must end at most {beam.length:g} m from the tip")  # fmt: skip
+    handle = beam.length - hand.grip_length
+    if end < handle:
+        return
+    if hand not in GRIPS.values():  # a grip of one's own: its length was typed
+        raise ValueError(
+            f"grip_length must end below the strings (they end {end:g} m from the tip of the "
+            f"{beam.length:g} m frame), < {beam.length - end:.4g} m, got {hand.grip_length:g}"
+        )
+    raise ValueError(
+        f"{said} runs into the handle: on this {beam.length:g} m frame the strings must end "
+        f"before its grip (grip_length {hand.grip_length:g} m from the butt), < {handle:.4g} m "
+        "from the tip"
+    )
+
+
 @dataclass(frozen=True)
 class Racket(Implement):
     """A racket frame (a free-free beam), its string bed, and its support.
@@ -83,16 +122,7 @@ class Racket(Implement):
         instance("strings", self.strings, StringBed, "a racket.StringBed")
         choice("support", self.support, SUPPORTS)
         instance("hand", self.hand, Hand, "a racket.Hand")
-        if self.strings.extent[1] > self.beam.length:
-            raise ValueError(
-                f"strings extent {self.strings.extent} runs past the beam's length "
-                f"{self.beam.length:g} m"
-            )
-        if self.hand.grip_length >= self.beam.length - self.strings.extent[1]:
-            raise ValueError(
-                f"grip_length must end below the strings, < "
-                f"{self.beam.length - self.strings.extent[1]:g} m, got {self.hand.grip_length!r}"
-            )
+        check_strings_fit(self.beam, self.strings, self.hand)
 
     @cached_property
     def system(self):

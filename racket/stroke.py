@@ -28,8 +28,20 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from common.checks import KMH_AS_M_S, MPH_AS_M_S, RPM_AS_RAD_S, finite, finite_array, in_range
+from ball.spin import ask_spin
+from common.checks import (
+    FASTEST_STROKE,
+    KMH_AS_M_S,
+    MPH_AS_M_S,
+    RPM_AS_RAD_S,
+    finite,
+    finite_array,
+    in_range,
+    too_fast,
+)
+from common.typechecks import ask
 from common.units import MPH
+from racket.swing import ask_head_speed
 
 RPM = 2.0 * math.pi / 60.0
 """One revolution per minute [rad/s] (spin is quoted in rpm)."""
@@ -46,7 +58,11 @@ LIMITS = {
 }
 """The range of each input of a :class:`Stroke` and its unit (angles are given in radians,
 their ranges here in degrees): head speeds from 0 (a block) to above the fastest serves, ball
-speeds to above the serve record (73 m/s), spins to +-9549 rpm, twice the most measured."""
+speeds to above the serve record (73 m/s), spins to +-9549 rpm, twice the most measured.
+Inside them, a head speed above :data:`common.checks.FASTEST_HEAD`, a ball speed above
+:data:`common.checks.FASTEST_STROKE` and a spin above :data:`ball.spin.MOST_SPIN` are asked
+about in a warning, with the slips of unit that would explain them (mph or km/h typed as m/s,
+rpm typed as rad/s)."""
 
 # The slips of unit (common.checks.slip_hints) a message names, by the unit asked for
 _DEG_AS_RAD = (math.pi / 180.0, "degrees typed as radians?", "deg")
@@ -225,7 +241,9 @@ class Stroke:
         head_speed (cos a cos g, cos a sin g, sin a), a the path angle, g this angle.
     topspin, sidespin : float, optional
         The incoming ball's spin [rad/s] in its own flight frame (its horizontal flight
-        direction d = -X: topspin about Z x d = -Y, sidespin about +Z), each in [-1000, 1000].
+        direction d = -X: topspin about Z x d = -Y, sidespin about +Z), each in [-1000, 1000]
+        (one above :data:`ball.spin.MOST_SPIN`, 523.6 rad/s, is asked about: rpm typed as
+        rad/s?).
     shaft : str, optional
         ``"horizontal"`` (groundstrokes, volleys) or ``"vertical"`` (serves): how the long
         axis lies in the face plane (the module's docstring).
@@ -255,6 +273,10 @@ class Stroke:
     def __post_init__(self):
         for name in LIMITS:
             object.__setattr__(self, name, _checked(name, getattr(self, name)))
+        ask_head_speed("head_speed", self.head_speed)  # in range, but faster than any stroke?
+        ask(too_fast, "ball_speed", self.ball_speed, "m/s", FASTEST_STROKE, "the serve record")
+        for name in ("topspin", "sidespin"):
+            ask_spin(name, getattr(self, name))
         if not isinstance(self.shaft, str) or self.shaft not in SHAFTS:
             raise ValueError(f"shaft must be 'horizontal' or 'vertical', got {self.shaft!r}")
         closing = float((self.racket_velocity() - self.ball_velocity()) @ self.normal())

@@ -2,12 +2,22 @@
 
 from __future__ import annotations
 
+import numbers
 from dataclasses import dataclass
 
 import numpy as np
 
-from common.checks import KGCM2_AS_KGM2, SPEED_RANGE, in_range, positive, shown
+from common.checks import (
+    FASTEST_HEAD,
+    KGCM2_AS_KGM2,
+    SPEED_RANGE,
+    in_range,
+    positive,
+    shown,
+    too_fast,
+)
 from common.checks import speed as check_speed
+from common.typechecks import ask, asked_by_caller, instance
 
 WRIST_BEYOND_BUTT = 0.05
 """Default swing pivot: the wrist, this far beyond the butt [m] (a hand on the grip holds
@@ -21,6 +31,23 @@ PIVOT_FROM_TIP_RANGE = (0.0, 2.5)
 """Where a pivot may be given [m from the tip], on any racket (the TOML's longest, 1.5 m,
 plus :data:`ARM_REACH`); on a racket, it must also be short of the impact points and
 within :data:`ARM_REACH` of its butt (:meth:`Swing.check_points`)."""
+
+
+def ask_head_speed(name: str, value: float) -> None:
+    """Ask (a ``UserWarning``, :func:`common.typechecks.ask`) about a racket-head speed
+    ``value`` [m/s] faster than any stroke's (:data:`common.checks.FASTEST_HEAD`), naming
+    the slips of unit that would explain it, as the command line asks about its own: "head_speed
+    90 m/s is faster than any recorded stroke (a racket head's fastest, estimated, about
+    51.2 m/s): mph typed as m/s? 90 mph would be 40.23 m/s; ...".
+
+    Parameters
+    ----------
+    name : str
+        The argument's name, as the message quotes it.
+    value : float
+        The head speed [m/s].
+    """
+    ask(too_fast, name, value, "m/s", FASTEST_HEAD, "a racket head's fastest, estimated")
 
 
 def check_swung_support(support: str) -> None:
@@ -47,7 +74,10 @@ class Swing:
     ----------
     head_speed : float
         Racket-head speed [m/s]: the speed of the string bed's centre towards the ball, in
-        [0.001, 300].  Every other point moves in proportion to its distance from the pivot.
+        [0.001, 300]; one faster than any stroke's (:data:`common.checks.FASTEST_HEAD`,
+        about 51.2 m/s) is asked about in a warning, with the slips of unit that would
+        explain it (90 for 90 mph).  Every other point moves in proportion to its distance
+        from the pivot.
     pivot_from_tip : float or None
         The pivot [m from the tip, like every position]; default None, the wrist, 5 cm
         beyond the butt of the racket swung (:data:`WRIST_BEYOND_BUTT`), whatever its
@@ -74,6 +104,7 @@ class Swing:
 
     def __post_init__(self):
         object.__setattr__(self, "head_speed", check_speed("head_speed", self.head_speed))
+        ask_head_speed("head_speed", self.head_speed)
         if self.pivot_from_tip is not None:
             pivot = in_range(
                 "pivot_from_tip", self.pivot_from_tip, *PIVOT_FROM_TIP_RANGE, "m from the tip"
@@ -194,7 +225,8 @@ def equal_effort(swing: Swing, reference_swingweight: float, swingweight: float)
     Parameters
     ----------
     swing : Swing
-        The reference racket's swing.
+        The reference racket's swing (a head speed alone is refused, saying how to make one:
+        ``Swing(30.0)``).
     reference_swingweight, swingweight : float
         Swingweights [kg m^2] (axis 10 cm from the butt) of the reference racket and of
         the racket swung, each in :data:`SWINGWEIGHT_RANGE`.
@@ -205,6 +237,9 @@ def equal_effort(swing: Swing, reference_swingweight: float, swingweight: float)
     >>> round(slower.head_speed, 3)
     29.752
     """
+    number = isinstance(swing, numbers.Real) and not isinstance(swing, bool)
+    hint = f" (a head speed? racket.Swing({shown(swing)}) swings about the wrist)" if number else ""
+    instance("swing", swing, Swing, "a racket.Swing", hint)
     reference, swung = (
         in_range(name, positive(name, value, "kg m^2"), *SWINGWEIGHT_RANGE, "kg m^2",
                  slips=(KGCM2_AS_KGM2,))
@@ -218,4 +253,5 @@ def equal_effort(swing: Swing, reference_swingweight: float, swingweight: float)
             f"{shown(reference_swingweight)} kg m^2 gives an equal-effort head speed of "
             f"{head:.4g} m/s, outside [{SPEED_RANGE[0]:g}, {SPEED_RANGE[1]:g}] m/s"
         )
-    return Swing(head, swing.pivot_from_tip)
+    with asked_by_caller():  # the swing given was asked about; this one follows from it
+        return Swing(head, swing.pivot_from_tip)

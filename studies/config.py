@@ -69,7 +69,6 @@ kg is asked about, as ``--tension-lb`` is (:func:`common.checks.loose_tension`).
 from __future__ import annotations
 
 import os
-import sys
 from dataclasses import replace
 
 from ball import (
@@ -83,11 +82,10 @@ from ball import (
     SineLaw,
     StiffeningHysteresis,
 )
-from ball.bodies import BALL_RADIUS_RANGE, RADIUS_SLIPS
+from ball.bodies import BALL_MASS_RANGE, BALL_RADIUS_RANGE, MASS_SLIPS, RADIUS_SLIPS
 from beam import Beam
 from common import checks as slip  # the slips of unit: slip.CM_AS_M, ...
-from common.checks import in_range, loose_tension, positive, shown
-from common.typechecks import file_path, instance
+from common.checks import in_range, loose_tension, positive, shown, suspect
 from racket import (
     CATALOG,
     DEFAULT_RACKET,
@@ -100,18 +98,14 @@ from racket import (
     paper_ball,
     paper_racket,
 )
-from racket.racket import ADDED_MASS_MAX
+from racket.racket import ADDED_MASS_MAX, added_mass, check_strings_fit
 from racket.solver import F1_MIN
 from racket.specs.restring import with_tension
 from racket.specs.sheet import SPEC_RANGES, SPEC_SLIPS
 from racket.strings.tension import TENSION_RANGE_LB
 from studies.strings import inputs  # the string bed as typed
 from studies.sweeps import F1_MAX, STRING_STIFFNESS_RANGE
-
-if sys.version_info >= (3, 11):
-    import tomllib
-else:  # pragma: no cover
-    import tomli as tomllib
+from studies.toml_files import preset_or_file, read_toml
 
 RACKETS = {"paper": paper_racket, **{name: entry.racket for name, entry in CATALOG.items()}}
 """Racket presets by name: the paper's uniform racket and the catalogue (racket.specs.catalog)."""
@@ -143,7 +137,7 @@ TOML_RANGES = {
     ("racket.strings", "tension_lb"): (*TENSION_RANGE_LB, "lb", (slip.N_AS_LB,)),
     ("racket.strings", "tension_kg"): (*inputs.TENSION_KG_RANGE, "kg", (inputs.LB_AS_KG,)),
     ("racket.strings", "dt_kp_cm"): (*inputs.DT_RANGE, "kp/cm", (inputs.N_M_AS_KP_CM,)),
-    ("ball", "mass"): (0.001, 1.0, "kg", (slip.GRAMS_AS_KG, slip.OZ_AS_KG)),
+    ("ball", "mass"): (*BALL_MASS_RANGE, "kg", MASS_SLIPS),
     ("ball", "radius"): (*BALL_RADIUS_RANGE, "m", RADIUS_SLIPS),
     ("ball", "x_lim"): (*BALL_RADIUS_RANGE, "m", RADIUS_SLIPS),
     ("ball", "k"): (1e3, 1e7, "N/m", (slip.KN_AS_N,)),
@@ -166,6 +160,10 @@ its law's ``x_lim`` in :data:`ball.bodies.BALL_RADIUS_RANGE` (the hand's are
 :class:`racket.Hand`'s own).  A value typed in g, oz, mm, cm, inches or kN/m falls outside
 and is refused with the hint (``mass = 57`` for a ball would be 0.057 kg)."""
 
+LEAD_GRAMS = (0.1, 1e3 * ADDED_MASS_MAX)
+"""Lead tape per side [g] ``--lead`` takes: 0.1 g (**an assumption**: less is no tape) to
+:data:`racket.racket.ADDED_MASS_MAX`; ``lead_tape`` asks about less (kg typed as g?)."""
+
 LAWS = {
     "linear-spring": (LinearSpring, {"k"}),
     "linear-hysteresis": (LinearHysteresis, {"k", "e"}),
@@ -175,25 +173,10 @@ LAWS = {
     "sine": (SineLaw, {"k0"}),
 }
 
-_RACKET_KEYS = {
-    "preset",
-    "length",
-    "mass",
-    "f1",
-    "stations",
-    "mass_per_length",
-    "bending_stiffness",
-    "point_masses",
-    "damping",
-    "n_modes",
-    "support",
-    "strings",
-    "specs",
-    "lead_tape",
-    "hand",
-    "roll_inertia_per_length",
-    "torsional_stiffness",
-}
+_RACKET_KEYS = {"preset", "length", "mass", "f1", "stations", "mass_per_length",
+                "bending_stiffness", "point_masses", "damping", "n_modes", "support", "strings",
+                "specs", "lead_tape", "hand", "roll_inertia_per_length",
+                "torsional_stiffness"}  # fmt: skip
 _SPEC_KEYS = {
     "length_m",
     "mass_kg",
@@ -247,28 +230,6 @@ def _preset(name: str, presets: dict, kind: str):
     if not isinstance(name, str) or name not in presets:
         raise ValueError(f"unknown {kind} preset {name!r}; presets: {', '.join(presets)}")
     return presets[name]()
-
-
-def read_toml(path: str | os.PathLike) -> dict:
-    """The TOML file as a dict; ValueError naming the file if it cannot be read.
-
-    Parameters
-    ----------
-    path : str or os.PathLike
-        The TOML file.
-    """
-    path = file_path("path", path)
-    if "\0" in str(path):  # open() would say only "embedded null byte"
-        raise ValueError(f"cannot read {str(path)!r}: a file name cannot hold a NUL byte")
-    try:
-        with open(path, "rb") as f:
-            return tomllib.load(f)
-    except OSError as err:
-        raise ValueError(f"cannot read {path}: {err.strerror}") from None
-    except UnicodeDecodeError:
-        raise ValueError(f"{path} is not valid TOML: it is not UTF-8 text") from None
-    except tomllib.TOMLDecodeError as err:
-        raise ValueError(f"{path} is not valid TOML: {err}") from None
 
 
 def _list(table: dict, key: str, where: str) -> list:
@@ -347,7 +308,11 @@ def racket_from_table(table: dict) -> Racket:
         )
     else:
         beam = replace(beam, damping=damping, n_modes=n_modes)
-    beam = beam.with_point_masses(*_list(table, "point_masses", "racket"))
+    points = _list(table, "point_masses", "racket")
+    for point in points:  # lead tape in SI: its mass in kg (12 is grams typed as kg)
+        if isinstance(point, list) and len(point) in (2, 3):
+            added_mass("[racket] point_masses mass", point[1])
+    beam = beam.with_point_masses(*points)
     strings_table = table.get("strings", {})
     _check_keys(strings_table, inputs.STRING_KEYS, "racket.strings")
     _check_ranges(strings_table, "racket.strings")
@@ -360,6 +325,8 @@ def racket_from_table(table: dict) -> Racket:
     if grip is not None and (not isinstance(grip, str) or grip not in GRIPS):
         raise ValueError(f"unknown grip {grip!r}; grips: {', '.join(GRIPS)}")
     hand = GRIPS[grip] if grip else Hand(**hand_table) if hand_table else base.hand
+    if "extent" in strings_table:  # a bed too long for the frame, named as typed
+        check_strings_fit(beam, strings, hand, "[racket.strings] extent")
     racket = Racket(beam, strings, table.get("support", base.support), hand)
     if tension is not None:
         racket = with_tension(racket, tension)
@@ -378,9 +345,11 @@ def _with_lead_tape(racket: Racket, tape) -> Racket:
             "each lead_tape entry needs mass_g and one of from_tip_cm or at (a clock "
             "position such as '12' or '3 and 9')"
         )
-    mass_g = in_range("lead_tape mass_g", tape["mass_g"], 0.0, 1e3 * ADDED_MASS_MAX, "g")
+    mass_g = in_range("lead_tape mass_g", tape["mass_g"], 0.0, LEAD_GRAMS[1], "g")
     if mass_g == 0.0:
         raise ValueError("lead_tape mass_g must be > 0 g, got 0")
+    suspect("lead_tape mass_g", mass_g, LEAD_GRAMS, "g", (slip.KG_AS_G,),
+            f"less than lead tape weighs (at least {LEAD_GRAMS[0]:g} g)")  # fmt: skip
     if "at" in tape:
         return racket.with_lead_tape(mass_g / 1000.0, tape["at"])
     length = racket.beam.length
@@ -425,23 +394,9 @@ def ball_from_table(table: dict) -> Ball:
     return Ball(table["mass"], law, table.get("radius", TENNIS_BALL_RADIUS))
 
 
-def _preset_or_file(spec, presets: dict, kind: str) -> tuple[str | None, str | None]:
-    """(name, None) for a preset, (None, path) for a file: a Path, or a str ending in .toml."""
-    if isinstance(spec, os.PathLike):
-        return None, file_path("spec", spec)
-    what = f"a {kind} preset's name or a .toml file's path (str or os.PathLike)"
-    if instance("spec", spec, str, what) in presets:
-        return spec, None
-    if not spec.endswith(".toml"):
-        raise ValueError(
-            f"unknown {kind} preset {spec!r}; presets: {', '.join(presets)} (or a .toml file)"
-        )
-    return None, spec
-
-
 def _load(spec, presets: dict, kind: str, from_table):
     """A preset by name, or the ``[kind]`` table of a TOML file built by ``from_table``."""
-    name, spec = _preset_or_file(spec, presets, kind)
+    name, spec = preset_or_file(spec, presets, kind)
     if name is not None:
         return presets[name]()
     data = read_toml(spec)
@@ -486,7 +441,7 @@ def racket_specs(spec: str | os.PathLike) -> tuple[dict | None, dict | None]:
     spec : str or os.PathLike
         A key of :data:`RACKETS`, or a ``.toml`` file (a str, or a ``pathlib.Path``).
     """
-    name, spec = _preset_or_file(spec, RACKETS, "racket")
+    name, spec = preset_or_file(spec, RACKETS, "racket")
     if name in CATALOG:
         return dict(CATALOG[name].specs), dict(CATALOG[name].sources)
     if name is not None:

@@ -37,10 +37,12 @@ import pandas as pd
 from ball import Ball, LinearHysteresis, SineLaw, StiffeningHysteresis, serve_speed
 from common.checks import SPEED_RANGE, finite, finite_array, in_range, positive, shown
 from common.checks import speed as check_speed
-from common.typechecks import flag
+from common.typechecks import asked_by_caller, flag
 from common.units import MPH
 from racket import Racket, Swing, impact
+from racket.solver import Unanswered
 from racket.strings.stringing import restrung
+from racket.swing import ask_head_speed
 from studies.arguments import ball_argument, racket_argument
 
 
@@ -131,7 +133,8 @@ def serve_table(
         Impact point(s) [m from the tip]; default the centre of the strings.
     racket_speed : float
         Racket-head speed [m/s]: the string centre's speed (:class:`racket.Swing`); the
-        impact point's speed follows from its distance to the pivot.
+        impact point's speed follows from its distance to the pivot.  One faster than any
+        stroke's is asked about in a warning (mph typed as m/s?), as ``racket_speed``.
     pivot_from_tip : float, optional
         The swing's pivot [m from the tip]; default the wrist, 5 cm beyond the butt.
     zero_cor : bool
@@ -158,7 +161,9 @@ def serve_table(
             f"position must be one impact point or a list of them [m from the tip], got "
             f"{shown(position)}"
         )
-    swing = Swing(racket_speed, pivot_from_tip)
+    ask_head_speed("racket_speed", racket_speed)
+    with asked_by_caller():  # asked about as racket_speed, its name here
+        swing = Swing(racket_speed, pivot_from_tip)
     rows = [{"ball": "normal", **serve(racket, ball, float(x), swing)} for x in positions]
     table = pd.DataFrame(rows).set_index("ball")
     if not zero_cor:
@@ -240,7 +245,8 @@ def serve_reach(
 ) -> tuple[tuple[float, float], tuple[float, float]]:
     """The racket-head speeds [m/s] :func:`head_speed_for` searches, and the serve speeds
     [m/s] they reach (the simulated serve at each end): from :data:`SLOWEST_HEAD_SPEED` to
-    the head speed that moves the impact point at the fastest speed racket-impact accepts.
+    the head speed that moves the impact point at the fastest speed racket-impact accepts,
+    or answers (:class:`racket.solver.Unanswered`) where that is slower.
 
     Parameters
     ----------
@@ -248,11 +254,16 @@ def serve_reach(
         As in :func:`head_speed_for` (``position`` given).
     """
     ratio = float(Swing(1.0, pivot_from_tip).point_speeds(racket, position))
-    heads = SLOWEST_HEAD_SPEED, SPEED_RANGE[1] / max(ratio, 1.0)
+    slowest, fastest = SLOWEST_HEAD_SPEED, SPEED_RANGE[1] / max(ratio, 1.0)
     with warnings.catch_warnings():  # the ends are absurd speeds
         warnings.simplefilter("ignore")
-        reach = tuple(_serve(racket, ball, position, h, pivot_from_tip) for h in heads)
-    return heads, reach
+        reach = _serve(racket, ball, position, slowest, pivot_from_tip)
+        try:
+            top = _serve(racket, ball, position, fastest, pivot_from_tip)
+        except Unanswered as beyond:  # the model's limit, below the fastest accepted
+            fastest = beyond.limit / max(ratio, 1.0)
+            top = _serve(racket, ball, position, fastest, pivot_from_tip)
+    return (slowest, fastest), (reach, top)
 
 
 def _serve(racket, ball, position, head, pivot_from_tip) -> float:
@@ -312,13 +323,15 @@ def serve_what_if(
     ball_stiffness = [
         positive("ball_stiffness", k_b, "N/m") for k_b in np.atleast_1d(ball_stiffness)
     ]
+    ask_head_speed("racket_speed", racket_speed)  # once, not once a row
     rows = []
-    for k_s in string_stiffness:
-        variant = replace(racket, strings=restrung(racket.strings, stiffness=float(k_s)))
-        row = serve_table(variant, ball, position, racket_speed, pivot_from_tip).loc["zero-COR"]
-        rows.append({"varied": "strings", "value": float(k_s), **row.to_dict()})
-    for k_b in ball_stiffness:
-        stiff = replace(ball, law=replace(ball.law, k=float(k_b)))
-        row = serve_table(racket, stiff, position, racket_speed, pivot_from_tip).loc["zero-COR"]
-        rows.append({"varied": "ball", "value": float(k_b), **row.to_dict()})
+    with asked_by_caller():
+        for k_s in string_stiffness:
+            variant = replace(racket, strings=restrung(racket.strings, stiffness=float(k_s)))
+            row = serve_table(variant, ball, position, racket_speed, pivot_from_tip)
+            rows.append({"varied": "strings", "value": float(k_s), **row.loc["zero-COR"].to_dict()})
+        for k_b in ball_stiffness:
+            stiff = replace(ball, law=replace(ball.law, k=float(k_b)))
+            row = serve_table(racket, stiff, position, racket_speed, pivot_from_tip)
+            rows.append({"varied": "ball", "value": float(k_b), **row.loc["zero-COR"].to_dict()})
     return pd.DataFrame(rows)

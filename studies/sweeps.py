@@ -26,6 +26,7 @@ from racket import SUPPORTS, Racket, Swing
 from racket.solver import F1_MIN
 from racket.specs.restring import with_tension
 from racket.specs.sheet import SPEC_RANGES
+from racket.strings.bed import BED_STIFFNESS_RANGE
 from racket.strings.stringing import restrung
 from racket.swing import check_swung_support
 from racket.swing import equal_effort as same_effort
@@ -50,9 +51,9 @@ TENSION_RANGE = SPEC_RANGES["tension_n"][:2]
 """String tension [N] a sweep accepts: 20-80 lb (strung rackets: 40-65 lb), the spec sheets'
 range (:data:`racket.specs.sheet.SPEC_RANGES`, which :func:`with_tension` checks too)."""
 
-STRING_STIFFNESS_RANGE = (1e3, 1e7)
+STRING_STIFFNESS_RANGE = BED_STIFFNESS_RANGE
 """String-bed stiffness [N/m] a sweep accepts (a strung racket's is 2e4-5e4; paper Secs. III
-and VIII)."""
+and VIII): the bed's own (:data:`racket.strings.bed.BED_STIFFNESS_RANGE`)."""
 
 F1_MAX = 2000.0
 """Highest f1 [Hz] a sweep accepts (a racket's is 100-200 Hz; Taraborrelli et al. 2019)."""

@@ -10,11 +10,17 @@
   this process waits for that one and loads the cached kernel, so that no test's captured
   output holds the one-off "compiling the solver" notice.  A module wrongly listed would
   only compile the kernel a second time, in this process, not fail.
+* Under pytest-xdist (the README's command runs ``-n auto``, set in pyproject.toml) only the
+  controller starts that second process; it writes a marker file when it ends, whether it
+  compiled or failed, and each worker waits for the marker before its first test that may
+  run the kernel.
 """
 
 import os
 import subprocess
 import sys
+import tempfile
+import time
 
 import pytest
 from hypothesis import Phase, settings
@@ -43,13 +49,28 @@ SOLVER_FREE = {
 """Test modules that never run the racket solver's compiled kernel."""
 
 _LOAD = "from racket.solver import load_kernel; load_kernel()"
+_MARKER = "RACKET_IMPACT_KERNEL_MARKER"  # the file the second process writes when it ends
 _COMPILER = {}  # the process compiling the kernel, while it may still run
 
 
+def _worker(config) -> bool:
+    return hasattr(config, "workerinput")
+
+
 def pytest_configure(config):
-    """Start compiling (or loading) the kernel in a second process."""
+    """Start compiling (or loading) the kernel in a second process (in xdist's controller
+    only; its workers wait for the marker that process writes)."""
+    if _worker(config):
+        _COMPILER["marker"] = os.environ[_MARKER]
+        return
+    fd, marker = tempfile.mkstemp(prefix="racket-impact-kernel-")
+    os.close(fd)
+    os.remove(marker)
+    os.environ[_MARKER] = marker  # the workers, started after this hook, inherit it
+    _COMPILER["marker"] = marker
+    code = f"try:\n    {_LOAD}\nfinally:\n    open({marker!r}, 'w').close()"
     _COMPILER["process"] = subprocess.Popen(
-        [sys.executable, "-c", _LOAD], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL
+        [sys.executable, "-c", code], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL
     )
 
 
@@ -61,19 +82,29 @@ def pytest_collection_modifyitems(items):
 def pytest_runtest_setup(item):
     """Before the first test that may run the kernel: wait for the second process, then load
     the kernel it cached."""
-    if "process" in _COMPILER and item.module.__name__.rpartition(".")[2] not in SOLVER_FREE:
-        _COMPILER.pop("process").wait()
+    if "marker" in _COMPILER and item.module.__name__.rpartition(".")[2] not in SOLVER_FREE:
+        marker = _COMPILER.pop("marker")
+        process = _COMPILER.pop("process", None)
+        if process is not None:
+            process.wait()
+        while not os.path.exists(marker):
+            time.sleep(0.1)
         from racket.solver import load_kernel
 
         load_kernel()
 
 
 def pytest_unconfigure(config):
-    """Stop the second process if no test needed the kernel before the session ended."""
+    """Stop the second process if no test needed the kernel before the session ended, and
+    remove its marker."""
     process = _COMPILER.pop("process", None)
     if process is not None:
         process.terminate()
         process.wait()
+    if not _worker(config):
+        marker = os.environ.pop(_MARKER, None)
+        if marker is not None and os.path.exists(marker):
+            os.remove(marker)
 
 
 @pytest.fixture

@@ -1,6 +1,7 @@
 """Helpers shared by the tests of the model (the command line's are in clihelpers.py): the
-force laws drawn by hypothesis, a ball preset's round trip through TOML, and a script's
-numbers from the solver's Python code run uncompiled."""
+force laws drawn by hypothesis and how many examples a property test draws, a ball preset's
+round trip through TOML, and a script's numbers from the solver's Python code run
+uncompiled."""
 
 import json
 import os
@@ -8,6 +9,18 @@ import subprocess
 import sys
 
 from hypothesis import strategies as st
+
+LOCAL_SHARE = 4
+"""Outside CI (``CI`` unset), a property test draws this many times fewer examples (at least
+:data:`LOCAL_LEAST`): the suite a contributor runs often stays short, and CI, which sets
+``CI`` and derandomizes the draws (``tests/conftest.py``), runs the full set every time."""
+
+LOCAL_LEAST = 5
+
+
+def examples(count: int) -> int:
+    """The examples a property test draws: ``count`` on CI, a share of it elsewhere."""
+    return count if os.environ.get("CI") else max(LOCAL_LEAST, count // LOCAL_SHARE)
 
 
 def drawn_law(make, *ranges):

@@ -191,7 +191,7 @@ def test_nathans_pivoted_case_runs_from_the_command_line():
         (["feel", "--bat", "r161", "alloy"], "bat feel follows one bat: give one --bat"),
         (["feel", "--at", "0.68"], "--at 0.68 cm is on the knob: m typed as cm?"),
         (["feel", "--duration-ms", "0.5"], "seconds typed as ms? 0.5 s would be 500 ms"),
-        (["--bat", "nope"], "unknown bat 'nope'; presets: r161, alloy"),
+        (["--bat", "nope"], "argument --bat: unknown bat preset 'nope'; presets: r161, alloy"),
         (["--bat", "r161", "r161"], "--bat 'r161' is given twice"),
         (["--ball", "nope"], "unknown ball preset 'nope'"),
     ],

@@ -12,6 +12,7 @@ from dataclasses import replace
 
 import numpy as np
 import pytest
+from helpers import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy.integrate import quad
@@ -39,7 +40,7 @@ def _bed(racket, stretch=0.0, loss=0.0, support=None):
     s=st.floats(0.0, 1e5),
     f=st.floats(1e-9, 1e4),
 )
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=examples(200), deadline=None)
 def test_the_deflection_solves_the_cubic_at_any_force(k, s, f):
     w, dw = deflection(k, s, f)
     assert k * w * (1.0 + s * w * w) == pytest.approx(f, rel=1e-12)
@@ -52,7 +53,7 @@ def test_the_deflection_solves_the_cubic_at_any_force(k, s, f):
     f_max=st.floats(1.0, 3e3),
     share=st.floats(0.0, 1.0),
 )
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=examples(200), deadline=None)
 def test_unloading_returns_one_minus_loss_of_what_was_stored_and_keeps_rising(
     s, loss, f_max, share
 ):

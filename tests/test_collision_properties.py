@@ -4,7 +4,7 @@ import math
 
 import numpy as np
 import pytest
-from helpers import drawn_law
+from helpers import drawn_law, examples
 from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
@@ -43,7 +43,7 @@ def check_invariants(r, a, b):
 
 # 20 examples (60 before): each pair's event-located collision takes about 0.35 s, and this
 # test took a fifth of the suite; CI derandomizes, so it checks the same 20 every run.
-@settings(max_examples=20, deadline=None)
+@settings(max_examples=examples(20), deadline=None)
 @given(mass, monotone_laws, mass, monotone_laws, speed, speed)
 @example(  # found by hypothesis: 17 J into two soft 5 mm stiffening balls (refused)
     0.79,
@@ -78,7 +78,7 @@ def _storable(law):
     return quad(lambda u: law.k * r * r * u / (1 - u), 0.0, 1 - 1e-9, limit=200)[0]
 
 
-@settings(max_examples=15, deadline=None)
+@settings(max_examples=examples(15), deadline=None)
 @given(
     st.sampled_from(sorted(BASEBALL_PRESETS)),
     st.one_of(st.just(None), st.tuples(mass, monotone_laws)),
@@ -95,7 +95,7 @@ def test_baseballs_and_softballs_with_any_partner(name, partner, closing):
     check_invariants(collide(a, b, closing), a, b)
 
 
-@settings(max_examples=25, deadline=None)
+@settings(max_examples=examples(25), deadline=None)
 @given(
     mass,
     stiffness,
@@ -128,7 +128,7 @@ def bracketed(laws, f, f_max, z):
     return z_at(below) <= z * (1 + 1e-14) and z_at(above) >= z * (1 - 1e-14)
 
 
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=examples(200), deadline=None)
 @given(
     st.lists(monotone_laws, min_size=1, max_size=2),
     st.floats(0.0, 1e4),

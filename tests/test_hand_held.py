@@ -5,6 +5,7 @@ from dataclasses import replace
 
 import numpy as np
 import pytest
+from helpers import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy.linalg import block_diag
@@ -102,7 +103,7 @@ def test_grip_must_end_below_the_strings():
         replace(paper_racket(), hand=Hand(grip_length=0.5))
 
 
-@settings(max_examples=15, deadline=None)
+@settings(max_examples=examples(15), deadline=None)
 @given(
     position=st.floats(RACKET.strings.extent[0], 0.33),
     stiffness=st.floats(1e3, 3e4),

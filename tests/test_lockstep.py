@@ -7,7 +7,7 @@ from functools import cache
 
 import numpy as np
 import pytest
-from helpers import drawn_law, run_uncompiled
+from helpers import drawn_law, examples, run_uncompiled
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -61,7 +61,7 @@ def _assert_same(a, b):
         assert np.array_equal(x, y, equal_nan=True), name
 
 
-@settings(max_examples=40, deadline=None)
+@settings(max_examples=examples(40), deadline=None)
 @given(
     name=st.sampled_from(RACKETS),
     law=LAWS,

@@ -25,6 +25,8 @@ def _value(action) -> list[str]:
     """Words a parser accepts for ``action`` once."""
     if action.choices:
         word = str(next(iter(action.choices)))
+    elif hasattr(action.type, "names"):  # a preset's name (or a TOML file)
+        word = action.type.names[0]
     elif action.type in (int, float):
         word = "1"
     else:

@@ -1,7 +1,7 @@
 """Property tests of racket impacts: momentum conserved, 0 <= e <= 1, budget closes."""
 
 import numpy as np
-from helpers import drawn_law
+from helpers import drawn_law, examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -19,7 +19,7 @@ laws = st.one_of(
 )
 
 
-@settings(max_examples=15, deadline=None)
+@settings(max_examples=examples(15), deadline=None)
 @given(
     st.floats(0.03, 0.2),
     laws,

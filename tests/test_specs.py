@@ -7,6 +7,7 @@ import dataclasses
 
 import numpy as np
 import pytest
+from helpers import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -139,7 +140,7 @@ def test_membrane_model_calibration_and_trends():
         string_bed_stiffness(245.0, 10 * IN2)
 
 
-@settings(max_examples=40, deadline=None)
+@settings(max_examples=examples(40), deadline=None)
 @given(
     st.floats(20.0, 400.0),
     st.floats(1.001, 2.0),
@@ -211,7 +212,7 @@ def test_catalogue_rackets_fit_and_name_every_source(name):
     assert beam.swingweight == pytest.approx(sheet.swingweight, rel=1e-9)
 
 
-@settings(max_examples=30, deadline=None)
+@settings(max_examples=examples(30), deadline=None)
 @given(
     mass=st.floats(0.22, 0.40),
     balance=st.floats(0.28, 0.38),

@@ -5,6 +5,7 @@ from dataclasses import replace
 
 import numpy as np
 import pytest
+from helpers import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -122,7 +123,7 @@ def test_rigid_frame_gives_eq20_with_the_roll_term():
     assert impulse / result.point_velocity_dc == pytest.approx(m2, rel=1e-9)
 
 
-@settings(max_examples=15, deadline=None)
+@settings(max_examples=examples(15), deadline=None)
 @given(
     s=st.floats(-0.9, 0.9),
     t=st.floats(-0.95, 0.95),

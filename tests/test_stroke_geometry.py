@@ -5,6 +5,7 @@ import math
 
 import numpy as np
 import pytest
+from helpers import examples
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
@@ -65,7 +66,7 @@ def test_head_on_the_face_sees_no_slip_and_the_speeds_add():
     assert frame.spin == pytest.approx([0.0, 0.0, 0.0], abs=1e-12)
 
 
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=examples(200), deadline=None)
 @given(strokes())
 def test_the_face_axes_are_orthonormal_and_right_handed(stroke):
     basis = stroke.face_frame().basis
@@ -82,7 +83,7 @@ def test_the_face_axes_are_orthonormal_and_right_handed(stroke):
         assert basis[1] == pytest.approx(-Y)
 
 
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=examples(200), deadline=None)
 @given(strokes())
 def test_the_incoming_ball_goes_to_the_face_and_back(stroke):
     frame = stroke.face_frame()

@@ -88,3 +88,15 @@ def test_empty_or_impossible_inputs_of_the_bat_and_string_tables_are_refused():
         bpf(0.5, 0.0)
     with pytest.raises(ValueError, match="names no string to compare"):
         string_table(default_racket(), default_ball(), 16.5, 40.0, [])
+
+
+def test_a_sweep_held_by_hand_says_so_and_its_grip(capsys):
+    """The conditions line named a sweep's racket free when --support hand-held was given
+    alone (its numbers were the held racket's)."""
+    from studies.cli import main
+
+    assert main(["sweep", "--support", "hand-held", "--points", "3"]) == 0
+    assert "(hand-held, medium grip, " in capsys.readouterr().out
+    both = ["--support", "free", "hand-held", "--grip", "tight"]
+    assert main(["sweep", *both, "--points", "3"]) == 0
+    assert "(free / hand-held, tight grip, " in capsys.readouterr().out.replace("\n  ", " ")

@@ -149,6 +149,7 @@ def served():
 _SETTLED = """plots => document.getElementById('card_serve_a_0') !== null
     && plots.every(id => document.querySelector(`#${id} img`) !== null)
     && !document.documentElement.classList.contains('shiny-busy')
+    && document.getElementById('ready') !== null
     && getComputedStyle(document.getElementById('ready')).display !== 'none'"""
 _HEIGHT = """() => {
     const main = document.querySelector('.bslib-sidebar-layout > .main');

@@ -11,6 +11,8 @@ importing it).  Its public face is small:
   obliquely, and :func:`hit` (:class:`StrokeImpact`), a stroke and the ball's flight after
   (issue 36);
 * :func:`load_kernel`, to compile the kernels before the first impact;
+* :class:`Unanswered`, the refusal (a ValueError) of an impact the model cannot answer, with
+  the closing speed up to which it answers (:mod:`~racket.solver.closure`);
 * :data:`F1_MIN` and :data:`DEFAULT_STEPS_PER_CONTACT`, the solver's limits and default
   resolution;
 * :func:`one_blas_thread`, for a caller that runs impacts on several threads of its own;
@@ -24,7 +26,8 @@ Inside: :mod:`~racket.solver.driver` (:func:`impact`), :mod:`~racket.solver.step
 tile together), :mod:`~racket.solver.ball_kernel` (the force solve of each law),
 :mod:`~racket.solver.expm` (the blocks' exact steps), :mod:`~racket.solver.dispatch`
 (threads), :mod:`~racket.solver.outcome` and :mod:`~racket.solver.budget` (e, e_A and the
-energy budget at separation) and :mod:`~racket.solver.unhappy_search` (the unhappy ball's
+energy budget at separation), :mod:`~racket.solver.closure` (what a passive impact allows,
+checked after every impact) and :mod:`~racket.solver.unhappy_search` (the unhappy ball's
 self-consistent Xo); :mod:`~racket.solver.oblique` and :mod:`~racket.solver.stroke_hit`
 (the tangential contact on the strings, :mod:`ball.grip`, driven by the head-on force
 history).  :mod:`~racket.solver.cache_stamp` drops numba's on-disk cache when
@@ -35,6 +38,7 @@ only).
 from pathlib import Path
 
 from racket.solver.cache_stamp import drop_stale_cache
+from racket.solver.closure import Unanswered
 from racket.solver.dispatch import COMPILE_SECONDS, announced, one_blas_thread
 from racket.solver.driver import (
     DEFAULT_STEPS_PER_CONTACT,
@@ -56,6 +60,7 @@ __all__ = [
     "Impact",
     "ObliqueImpact",
     "StrokeImpact",
+    "Unanswered",
     "announced",
     "hit",
     "impact",

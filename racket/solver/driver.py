@@ -42,7 +42,7 @@ from common.checks import finite, finite_array, in_range, shown
 from common.checks import speed as check_speed
 from common.typechecks import flag, instance
 from racket.implement import Implement
-from racket.solver import layout
+from racket.solver import closure, layout
 from racket.solver.dispatch import IMPACTS_PER_THREAD, LOCKSTEP_MIN, one_blas_thread, pool_size
 from racket.solver.dispatch import compile_notice as _compile_notice  # noqa: F401  (kept importable here)
 from racket.solver.outcome import (  # noqa: F401  (as above)
@@ -305,8 +305,38 @@ def _solve(
 ):
     """:func:`impact` at the points ``x`` (offsets ``y`` or None) once its inputs are
     checked: the Impact's fields (and the ball's largest compression, ``compression``) and
-    the histories' times.
+    the histories' times.  Impacts whose answer a passive impact does not allow are stepped
+    again, finer (:func:`racket.solver.closure.refined`); ValueError where that does not
+    settle them either.
     """
+    run = (racket, ball, speed, pivot, watch_after, histories)
+    fields, t = _solve_at(x, y, swing_speed, steps_per_contact, *run)
+    bad = closure.unclosed(fields, ball)
+    if not bad.any():
+        return fields, t
+    if histories:  # one time axis for all: every impact again
+        bad[:] = True
+
+    def solve(steps):
+        return _solve_at(x[bad], None if y is None else y[bad], swing_speed[bad], steps, *run)
+
+    again, t_again, settled = closure.refined(solve, steps_per_contact)
+    if histories:  # every impact again, on the finer time axis
+        fields, t = again, t_again
+    else:
+        for k, v in fields.items():
+            if v is not None:
+                v[bad] = again[k]
+    if not settled.all():
+        _refuse_unclosed(fields, np.flatnonzero(bad)[~settled][0], x, y, swing_speed,
+                         steps_per_contact, *run)  # fmt: skip
+    return fields, t
+
+
+def _solve_at(
+    x, y, swing_speed, steps_per_contact, racket, ball, speed, pivot, watch_after, histories
+):
+    """:func:`_solve` at one number of steps per contact, unchecked."""
     stepper = _Stepper(racket, ball, x, y, speed, swing_speed, pivot, steps_per_contact)
     x_o = np.full(x.size, np.nan)
     if stepper.code == layout.SINE:
@@ -324,6 +354,36 @@ def _solve(
             f"{stepper.max_steps * stepper.dt:.3g} s"
         )
     return outcome(stepper, racket, ball, x, y, speed, x_o, outputs, histories, extra_steps)
+
+
+def _refuse_unclosed(fields, i, x, y, swing_speed, steps, racket, ball, speed, pivot, *_):
+    """:class:`~racket.solver.closure.Unanswered` (a ValueError) for the impact ``i`` that
+    refinement did not settle, naming up to what closing speed this racket and ball are
+    answered there.
+    """
+    point = x[i : i + 1], None if y is None else y[i : i + 1], np.zeros(1)
+    closing = speed + swing_speed[i]
+
+    def answers(v):
+        run = (racket, ball, v, pivot, 0.0, False)
+        fields, _ = _solve_at(*point, steps, *run)
+        if not closure.unclosed(fields, ball)[0]:
+            return True
+        return bool(closure.refined(lambda n: _solve_at(*point, n, *run), steps)[2][0])
+
+    limit = closure.answered_up_to(answers, closing)
+    squash = ""
+    if ball.radius is not None:
+        squash = (
+            f"; the ball is squashed to {fields['compression'][i] / ball.radius:.1%} of its "
+            "radius, beyond what its force law describes"
+        )
+    raise closure.Unanswered(
+        closing,
+        limit,
+        f"the impact at {x[i]:g} m from the tip gives e = {fields['e'][i]:.3g} and does not "
+        f"settle even with {closure.REFINE**closure.REFINEMENTS} times the steps{squash}",
+    )
 
 
 def load_kernel() -> None:

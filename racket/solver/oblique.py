@@ -17,7 +17,7 @@ import numpy as np
 
 from ball.bodies import Ball
 from ball.grip import Grip, slide
-from ball.spin import BallSpin
+from ball.spin import BallSpin, ask_spin
 from common.checks import SPEED_RANGE, finite_array
 from common.typechecks import instance
 from racket.in_plane import inverse_mass
@@ -84,14 +84,20 @@ SPIN_MAX = LIMITS["topspin"][1]
 9549 rpm, twice the most measured)."""
 
 
-def _vectors(name: str, values, size: int, unit: str, largest: float) -> np.ndarray:
-    """``values`` as finite numbers of shape (size,) or (n, size), each vector's size at most
-    ``largest``; one line otherwise.
+def _vectors(name: str, values, size: int, unit: str, largest: float, points: int) -> np.ndarray:
+    """``values`` as finite numbers of shape (size,), or (n, size) with n 1 or ``points``
+    (the impact points), each vector's size at most ``largest``; one line otherwise.
     """
     values = finite_array(name, values, unit)
-    if values.ndim not in (1, 2) or values.shape[-1] != size:
-        raise ValueError(f"{name} must be {size} numbers [{unit}] (or a row of them per point), "
-                         f"got shape {values.shape}")  # fmt: skip
+    rows = (1, points) if points > 1 else (1,)
+    if (
+        values.ndim not in (1, 2)
+        or values.shape[-1] != size
+        or (values.ndim == 2 and values.shape[0] not in rows)
+    ):
+        per_point = f" ({points} points: shape ({points}, {size}))" if points > 1 else ""
+        raise ValueError(f"{name} must be {size} numbers [{unit}], or a row of {size} per impact "
+                         f"point{per_point}, got shape {values.shape}")  # fmt: skip
     size_of = float(np.max(np.linalg.norm(values, axis=-1)))
     if size_of > largest:
         raise ValueError(f"{name} must be at most {largest:g} {unit} in size, got {size_of:.4g}")
@@ -125,9 +131,12 @@ def oblique_impact(
         own swing speed with the ITF ball: one call per point).
     slip_velocity : array_like
         (2,) or (n, 2) ball's velocity along the strings [m/s] relative to the impact point,
-        (along, across).
+        (along, across): one for every point, or a row per point (n the points' number);
+        another shape is refused before any impact runs.
     spin : array_like
-        (3,) or (n, 3) ball's spin [rad/s], (along, across, normal) components.
+        (3,) or (n, 3) ball's spin [rad/s], (along, across, normal) components, shaped as
+        ``slip_velocity``; a spin larger than :data:`ball.spin.MOST_SPIN` (about 5000 rpm) is
+        asked about in a warning (rpm typed as rad/s?).
     ball_spin : BallSpin, optional
         The ball's radius, inertia, tangential stiffness and offset (default
         :class:`ball.spin.BallSpin`, a tennis ball's; its radius is the ball's if it has one).
@@ -144,8 +153,10 @@ def oblique_impact(
     instance(
         "side", side, (BedSideways, type(None)), "a racket.strings.sideways.BedSideways or None"
     )
-    slip_velocity = _vectors("slip_velocity", slip_velocity, 2, "m/s", SPEED_RANGE[1])
-    spin = _vectors("spin", spin, 3, "rad/s", SPIN_MAX)
+    points = racket.check_points(position, offset)[0].size  # refused as impact refuses them
+    slip_velocity = _vectors("slip_velocity", slip_velocity, 2, "m/s", SPEED_RANGE[1], points)
+    spin = _vectors("spin", spin, 3, "rad/s", SPIN_MAX, points)
+    ask_spin("|spin|", float(f"{np.max(np.linalg.norm(spin, axis=-1)):.4g}"))  # the largest
     if ball_spin is None:
         ball_spin = BallSpin() if ball.radius is None else BallSpin(radius=ball.radius)
     side = sideways(racket.strings) if side is None else side

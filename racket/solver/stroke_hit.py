@@ -102,7 +102,10 @@ def hit(
     instance("racket", racket, Racket, "a racket.Racket")
     instance("ball", ball, Ball, "a ball.Ball")
     if racket.support == "clamped-head":
-        raise ValueError("a stroke needs a racket that moves: support 'free' or 'hand-held'")
+        raise ValueError(
+            "racket must move for a stroke (support 'free' or 'hand-held'), got support "
+            "'clamped-head': a clamped head cannot swing"
+        )
     if position is not None:
         position = finite("position", position, "m from the tip")
     position = racket.strings.center if position is None else position

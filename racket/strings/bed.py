@@ -9,12 +9,32 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from common.checks import GRAMS_AS_KG, finite_array, in_range, non_negative, positive, shown
+from common.checks import (
+    CM_AS_M,
+    GRAMS_AS_KG,
+    KN_AS_N,
+    finite_array,
+    in_range,
+    non_negative,
+    positive,
+    shown,
+)
 from common.typechecks import choice
 from racket.strings.head import HEAD_ASPECT
 from racket.strings.membrane import bed_radius, stiffness_ratio
 
 STRING_PROFILES = ("uniform", "membrane")
+
+BED_STIFFNESS_RANGE = (1e3, 1e7)
+"""String-bed stiffnesses [N/m] a :class:`StringBed` takes: **an assumption**, generous
+around a strung racket's 2e4-5e4 (paper Secs. III and VIII); a sweep's range too
+(``studies.sweeps.STRING_STIFFNESS_RANGE``).  A stiffness in kN/m typed as N/m (30 for 3e4)
+is refused with the hint, before any number that follows from it (the bed's stretch)."""
+
+BED_END_MAX = 1.5
+"""The farthest from the tip a string bed may end [m]: the longest racket a TOML file
+describes (``[racket] length``, 0.2-1.5 m; ``studies.config.TOML_RANGES``).  An extent
+typed in cm (``(5, 37)`` for 0.05-0.37 m) is refused with the hint."""
 
 STRETCH_MAX = 1e5
 """Largest :attr:`StringBed.stretch` [1/m^2]: the bed twice as stiff at a 3 mm deflection,
@@ -27,6 +47,21 @@ could turn back on itself; strings lose about 5 % (Kawazoe's steel ball, COR 0.9
 BED_MASS_MAX = 0.02
 """Largest :attr:`StringBed.moving_mass` [kg]: the whole of a 20 g string bed moving with
 the ball, beyond any bed (a 16x19 bed weighs 12-20 g, of which about a quarter moves)."""
+
+
+def bed_stiffness(name: str, value) -> float:
+    """A string bed's stiffness [N/m] in :data:`BED_STIFFNESS_RANGE`: ValueError naming
+    ``name`` with the range and the slip (kN/m typed as N/m?) otherwise.
+
+    Parameters
+    ----------
+    name : str
+        The argument's name, as the message quotes it.
+    value : object
+        The stiffness [N/m].
+    """
+    positive(name, value, "N/m")  # a sign slip said as such
+    return in_range(name, value, *BED_STIFFNESS_RANGE, "N/m", slips=(KN_AS_N,))
 
 
 @dataclass(frozen=True)
@@ -43,9 +78,11 @@ class StringBed:
     ----------
     stiffness : float
         Stiffness of the string plane against a ball pushed into it [N/m] (about 3e4 to
-        4e4 N/m for a racket strung at 55 lb; paper Secs. III and VIII).
+        4e4 N/m for a racket strung at 55 lb; paper Secs. III and VIII), in
+        :data:`BED_STIFFNESS_RANGE`.
     extent : (float, float)
-        Where the strings are, as distances from the tip [m]: (start, end), start < end.
+        Where the strings are, as distances from the tip [m]: (start, end), start < end,
+        each at most :data:`BED_END_MAX`.
     width : float or None
         Width of the string bed across the racket [m]; None (default) for an elliptical bed
         of length / width :data:`racket.strings.head.HEAD_ASPECT`.
@@ -83,7 +120,7 @@ class StringBed:
     moving_mass: float = 0.0
 
     def __post_init__(self):
-        object.__setattr__(self, "stiffness", positive("stiffness", self.stiffness, "N/m"))
+        object.__setattr__(self, "stiffness", bed_stiffness("stiffness", self.stiffness))
         extent = finite_array("extent", self.extent, "m from the tip")
         if extent.shape != (2,):
             raise ValueError(
@@ -91,6 +128,8 @@ class StringBed:
             )
         start = non_negative("extent start", extent[0], "m from the tip")
         end = positive("extent end", extent[1], "m from the tip")
+        for name, x in (("extent start", start), ("extent end", end)):
+            in_range(name, x, 0.0, BED_END_MAX, "m from the tip", slips=(CM_AS_M,))
         if end <= start:
             raise ValueError(f"extent must have start < end [m from the tip], got {self.extent!r}")
         object.__setattr__(self, "extent", (start, end))

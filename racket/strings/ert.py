@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from common.checks import positive
 from common.units import KP_PER_CM
-from racket.strings.bed import STRETCH_MAX
+from racket.strings.bed import BED_STIFFNESS_RANGE, STRETCH_MAX
 
 ERT_DEFLECTION = 0.01
 """The deflection [m] at which the ERT reads the bed: 1 cm (ert300.com, its definition of
@@ -40,7 +40,9 @@ def stiffness_from_dt(bed, dt_kp_cm: float, argument: str = "DT") -> float:
     ERT: k (1 + stretch(k) (1 cm)**2) = DT x 980.665 N/m, stretch(k) the stretch of the bed's
     stringing at the tension that gives k (none for the paper's plain spring).  A DT no
     tension of these strings reads (a stiff string's stiffening by 1 cm alone reads a few
-    kp/cm) is refused in one line naming ``argument``.
+    kp/cm), or that gives a stiffness outside
+    :data:`racket.strings.bed.BED_STIFFNESS_RANGE`, is refused in one line naming
+    ``argument``.
 
     Parameters
     ----------
@@ -79,5 +81,12 @@ def stiffness_from_dt(bed, dt_kp_cm: float, argument: str = "DT") -> float:
         raise ValueError(
             f"{argument} {dt_kp_cm:g} kp/cm would need these strings ({strung.describe('')}) "
             f"pulled {way}: check the reading and its unit"
+        )
+    low, high = BED_STIFFNESS_RANGE
+    if not low <= k <= high:  # a bed the solver does not take, said as the DT typed
+        raise ValueError(
+            f"{argument} {dt_kp_cm:g} kp/cm gives these strings ({strung.describe('')}) a "
+            f"centre stiffness of {k:.4g} N/m, outside the {low:g}-{high:g} N/m a string bed "
+            "may have: check the reading and its unit"
         )
     return k

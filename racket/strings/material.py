@@ -15,6 +15,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from common.checks import in_range, positive
+from common.typechecks import instance
 from common.units import LB
 from racket.strings.twu_test import LB_PER_IN, TwuTest
 
@@ -160,8 +161,7 @@ def material_key(name, argument: str = "string") -> str:
     argument : str, optional
         The argument or option it came from, as the message quotes it.
     """
-    if not isinstance(name, str):
-        raise TypeError(f"{argument} must be a string material's name (text), got {name!r}")
+    instance(argument, name, str, f"a string material's name ({', '.join(MATERIALS)})")
     said = name.strip().lower().replace("_", "-").replace(" ", "-")
     for key, material in MATERIALS.items():
         if said in (key, material.name.replace(" ", "-"), *material.aliases):

@@ -43,6 +43,8 @@ from ball.catalog import BALL_MASS
 from ball.grip import Layer
 from ball.spin import INERTIA_FACTOR
 from common.checks import in_range, non_negative, positive
+from common.typechecks import flag, instance
+from racket.strings.bed import StringBed
 
 CONTACT_WIDTH = 0.04
 """Width [m] of the ball's contact on the strings, across the mains and along them.
@@ -198,13 +200,17 @@ def sideways(bed, lubricated: bool = False, slide: bool = True, share: float = S
         tension) gets its materials' friction and its strings' tension and mass; any other
         is stiff sideways, with :data:`STIFF_BALL_FRICTION`.
     lubricated : bool, optional
-        Lubricated strings: the crossings' friction is :data:`LUBRICATED_FRICTION`.
+        Lubricated strings: the crossings' friction is :data:`LUBRICATED_FRICTION`.  True or
+        False (a word such as ``'no'`` is refused, not taken as True).
     slide : bool, optional
-        False: the strings never slide (a stiff-sideways bed, the limit).
+        False: the strings never slide (a stiff-sideways bed, the limit); True or False.
     share, kinetic_ratio : float, optional
         The grip's share on the mains [-] and kinetic over static string friction [-], as
         :class:`BedSideways` (:data:`SHARE`, :data:`KINETIC_RATIO`: assumptions).
     """
+    instance("bed", bed, StringBed, "a racket.StringBed",
+             " (a racket's is racket.strings)" if hasattr(bed, "strings") else "")  # fmt: skip
+    lubricated, slide = flag("lubricated", lubricated), flag("slide", slide)
     stringing = bed.stringing
     if stringing is None or stringing.tension is None:
         return BedSideways(STIFF_BALL_FRICTION)

@@ -23,9 +23,9 @@ from common.checks import (
     positive,
     shown,
 )
-from common.typechecks import choice
+from common.typechecks import choice, instance
 from common.units import LB
-from racket.strings.bed import StringBed
+from racket.strings.bed import BED_STIFFNESS_RANGE, StringBed, bed_stiffness
 from racket.strings.ert import dt_reading
 from racket.strings.head import HEAD_ASPECT
 from racket.strings.material import MATERIALS, Material, material_key
@@ -272,7 +272,7 @@ class Stringing:
         if stiffness is None:
             tension = self.bed_tension
         else:
-            stiffness = positive("stiffness", stiffness, "N/m")
+            stiffness = positive("stiffness", stiffness, "N/m")  # (a search's too: no range)
             per_newton = string_bed_stiffness(1.0, area) * self.pattern_factor  # k is linear in T
             tension = stiffness / per_newton
         length = 2.0 * np.sqrt(area / np.pi)
@@ -344,7 +344,9 @@ class Stringing:
             :func:`racket.strings.ert.stiffness_from_dt`) instead of the tension's; the
             stretch then follows from it.
         """
-        shape = StringBed(1.0, extent, width, profile)
+        shape = StringBed(BED_STIFFNESS_RANGE[0], extent, width, profile)  # its shape alone
+        if stiffness is not None:  # as typed, before the stretch that follows from it
+            stiffness = bed_stiffness("stiffness", stiffness)
         k = self.stiffness(shape.area) if stiffness is None else stiffness
         return StringBed(
             k,
@@ -386,7 +388,8 @@ def stringing(
     Parameters
     ----------
     name : str
-        The preset, or two joined by "/".
+        The preset, or two joined by "/" (a word; anything else is refused, saying what it
+        takes).
     gauge : float or str, optional
         The gauge of every string [m or a name]; default each preset's.
     pattern : (int, int) or str, optional
@@ -398,11 +401,14 @@ def stringing(
     argument : str, optional
         The argument or option ``name`` came from, as a message quotes it ("--string").
     """
-    if not isinstance(name, str):
-        raise TypeError(f"{argument} must be a string's name (text), got {name!r}")
+    takes = f"a preset or MAINS/CROSSES ({', '.join(STRINGS)}; e.g. {HYBRID!r})"
+    instance(argument, name, str, takes)
     parts = name.split("/")
     if len(parts) > 2:
-        raise ValueError(f"{argument} must be a preset or MAINS/CROSSES, got {name!r}")
+        raise ValueError(f"{argument} must be {takes}, got {name!r}")
+    if len(parts) == 2 and not all(part.strip() for part in parts):
+        raise ValueError(f"{argument} must give the mains and the crosses either side of '/' "
+                         f"(e.g. {HYBRID!r}), got {name!r}")  # fmt: skip
     if tension_n is not None:
         tension_n = finite("tension_n", tension_n, "N")
     mains, crosses = (string(part, gauge, argument) for part in (parts * 2)[:2])

@@ -68,6 +68,13 @@ by about BPF times a change of e0: ``tests/test_bat_study.py`` checks it).  The 
 136 mph or the quoted "at least 150 mph", moves the R161's BBCOR by less than a tenth of
 it (checked there too)."""
 
+BBCOR_CANNON_SPEED = 150.0 * MPH
+"""The NCAA BBCOR machine's cannon's speed [m/s]: "a muzzle velocity of at least 150 mph"
+(markrichard.org, a reader's summary of the NCAA protocol, as quoted in ``data/bats.md``
+section 4.1).  With :data:`BBCOR_TEST_SPEED` it brackets the speeds the sources give the
+test: a verdict at a speed outside them is not the standard's, and the command line says so
+(``racket-impact bat bbcor --pitch 136``: mph typed as m/s?)."""
+
 VERDICTS = ("passes", "fails", "cannot call")
 """What :func:`verdict` says of a BBCOR."""
 

@@ -12,21 +12,12 @@ from dataclasses import replace
 from pathlib import Path
 
 from ball import DEFAULT_BASEBALL
-from bat import DEFAULT_BAT, BatSwing
+from bat import BATS, DEFAULT_BAT
 from bat.bat import BAT_SUPPORTS
 from bat.pivot import CLAMP_OFFSET, PIVOT_FROM_KNOB
-from bat.swing import ANGULAR_VELOCITY_RANGE, CENTRE_BEYOND_KNOB, CM_SPEED_RANGE
 from common.checks import (
-    INCH_AS_CM,
-    M_AS_CM,
-    RPM_AS_RAD_S,
     S_AS_MS,
-    SPEED_RANGE,
-    SPEED_SLIPS,
     in_range,
-    shown,
-    slip_hints,
-    too_fast,
 )
 from common.units import MPH, SPEED_SUFFIXES, SPEED_UNITS
 from studies.bat.certification import BBCOR_TEST_SPEED, BBCOR_UNCERTAINTY
@@ -34,36 +25,25 @@ from studies.bat.feel import FEEL_DURATION, FEEL_FROM_KNOB, HANDLE_POINTS, LEFT_
 from studies.bat.sweep import (
     ANGULAR_VELOCITY,
     CM_SPEED,
-    FASTEST_PITCH,
     PITCH_SPEED,
     SWEEP_FROM_KNOB,
     SWEEP_STEP,
     SWEET_ZONE_FRACTION,
 )
+from studies.cli.bat_inputs import _beyond, _clamps, _from_knob, _pitch, _pivot, _swing
 from studies.cli.files import add_outputs, check_table_and_plot, say_conditions, write_outputs
 from studies.cli.options import (
     _ball_arg,
     _count,
     _print_table,
     _speed_option,
-    _typed,
-    refuse_unused,
+    preset_or_toml,
     speed_unit,
 )
 from studies.config import load_ball
 
 ACTIONS = ("sweep", "bbcor", "feel")
 """The questions ``bat`` answers."""
-
-DEG_S_AS_RAD_S = (3.141592653589793 / 180.0, "deg/s typed as rad/s?", "deg/s")
-"""An angular velocity in degrees per second where rad/s are asked for."""
-
-MM_AS_CM = (0.1, "mm typed as cm?", "mm")
-"""A length in mm where cm are asked for."""
-
-NEAREST_KNOB_CM = 1.0
-"""A point typed closer to the knob than this [cm] is refused as a length in m typed as cm
-(**an assumption**: no ball is hit, nor a handle read, within 1 cm of the knob's end)."""
 
 _ONLY = {
     "sweep": ("at", "handle", "duration_ms"),
@@ -84,6 +64,7 @@ def add_bat(sub) -> None:
                    "of maximum BBCOR, the bat pivoted as in the test; feel: the handle's motion "
                    "after one impact")  # fmt: skip
     p.add_argument("--bat", nargs="+", default=[DEFAULT_BAT], metavar="NAME_OR_TOML",
+                   type=preset_or_toml(BATS, "bat"),
                    help=f"bat(s): preset (r161: Nathan's wooden R161, alloy: a hollow alloy "
                    f"what-if) or TOML file with a [bat] table (default {DEFAULT_BAT}); several "
                    "side by side (sweep, bbcor), e.g. --bat r161 alloy")  # fmt: skip
@@ -109,15 +90,10 @@ def add_bat(sub) -> None:
     p.add_argument("--from", dest="from_", type=float, metavar="CM",
                    help=f"sweep: first impact point [cm from the knob] (default "
                    f"{100 * SWEEP_FROM_KNOB:g})")  # fmt: skip
-    p.add_argument(
-        "--to",
-        type=float,
-        metavar="CM",
-        help="sweep: last impact point [cm from the knob] (default the barrel's end)",
-    )
-    p.add_argument(
-        "--points", type=int, metavar="N", help="sweep: impact points (default one every cm)"
-    )
+    p.add_argument("--to", type=float, metavar="CM", help="sweep: last impact point [cm from "
+                   "the knob] (default the barrel's end)")  # fmt: skip
+    p.add_argument("--points", type=int, metavar="N",
+                   help="sweep: impact points (default one every cm)")  # fmt: skip
     p.add_argument("--at", type=float, metavar="CM",
                    help=f"feel: the impact point [cm from the knob] (default "
                    f"{100 * FEEL_FROM_KNOB:g}, Nathan's)")  # fmt: skip
@@ -169,119 +145,6 @@ def _bats(args, support: str | None = None) -> list:
     return bats
 
 
-def _pivot(args) -> float | None:
-    """``--pivot-from-knob`` [cm] checked (the rig's range, :class:`bat.Bat`), in m."""
-    if args.pivot_from_knob is None:
-        return None
-    return in_range("--pivot-from-knob", args.pivot_from_knob, 2.0, 50.0, "cm from the knob",
-                    slips=(M_AS_CM, INCH_AS_CM)) / 100  # fmt: skip
-
-
-def _clamps(args) -> float | None:
-    """``--clamps`` [cm] checked (:class:`bat.Bat`'s range), in m."""
-    if args.clamps is None:
-        return None
-    return in_range("--clamps", args.clamps, 0.0, 5.0, "cm", slips=(MM_AS_CM,)) / 100
-
-
-def _pitch(args, default: float, fastest: bool = True) -> float:
-    """``--pitch[-mph|-kmh]`` [its unit] in m/s (``default`` [m/s] without one), in the
-    speed range; one faster than the fastest pitch on record asked about (``fastest``).
-    """
-    flag, value, unit, size = _typed(args, "pitch")
-    if value is None:
-        return default
-    value = in_range(flag, value, SPEED_RANGE[0] / size, SPEED_RANGE[1] / size, unit,
-                     slips=SPEED_SLIPS[unit])  # fmt: skip
-    if fastest:
-
-        def instead(typed: str) -> str:
-            return f" (--pitch-{SPEED_SUFFIXES[typed]} {shown(value)})"
-
-        too_fast(flag, value, unit, FASTEST_PITCH, "the fastest on record", instead, "pitch")
-    return value * size
-
-
-def _swing(args, bat) -> BatSwing | None:
-    """The swing of ``--omega``, ``--cm-speed[-mph|-kmh]`` and ``--pivot-from-knob``, each
-    checked as typed, for ``bat``: None for a bat at rest (``--omega 0``, or a hand-held bat,
-    whose hands are at rest in this model); a pivoted bat turns about its pivot.
-    """
-    speeds = ("cm_speed", "cm_speed_mph", "cm_speed_kmh")
-    if bat.support == "hand-held":
-        refuse_unused(
-            args,
-            ("omega", *speeds, "pivot_from_knob"),
-            "to a hand-held bat: the "
-            "hands are at rest in this model (swing a free bat, as Nathan does)",
-        )
-        return None
-    omega = ANGULAR_VELOCITY
-    if args.omega is not None:
-        omega = in_range("--omega", args.omega, *ANGULAR_VELOCITY_RANGE, "rad/s",
-                         slips=(RPM_AS_RAD_S, DEG_S_AS_RAD_S))  # fmt: skip
-    if bat.support == "pivoted":
-        refuse_unused(args, speeds, "to a pivoted bat: it turns about its pivot "
-                      "(--pivot-from-knob)")  # fmt: skip
-    elif args.pivot_from_knob is not None:
-        refuse_unused(args, speeds, "with --pivot-from-knob: give the point the bat turns "
-                      "about or its centre of mass's speed, not both")  # fmt: skip
-    if omega == 0.0:
-        refuse_unused(args, speeds, "with --omega 0: the bat at rest does not move")
-        return None
-    if bat.support == "pivoted" or args.pivot_from_knob is not None:
-        return BatSwing(omega, pivot_from_knob=bat.pivot_from_knob if bat.support == "pivoted"
-                        else _pivot(args))  # fmt: skip
-    flag, value, unit, size = _typed(args, "cm_speed")
-    cm = CM_SPEED
-    if value is not None:
-        cm = in_range(flag, value, CM_SPEED_RANGE[0] / size, CM_SPEED_RANGE[1] / size, unit,
-                      slips=SPEED_SLIPS[unit]) * size  # fmt: skip
-    swing = BatSwing(omega, cm_speed=cm)
-    beyond = swing.pivot(bat) - bat.beam.length  # the turn's centre beyond the knob [m]
-    if beyond > CENTRE_BEYOND_KNOB:
-        typed = flag if value is not None else "the default --cm-speed"
-        raise ValueError(
-            f"--omega {omega:g} rad/s with {typed} {cm / size:g} {unit} turns the bat about a "
-            f"point {100 * beyond:.4g} cm beyond the knob, farther than "
-            f"{100 * CENTRE_BEYOND_KNOB:g} cm: a faster --omega or a slower --cm-speed"
-        )
-    return swing
-
-
-def _from_knob(flag: str, value: float, length: float) -> float:
-    """A point typed [cm from the knob] on a bat ``length`` [m] long, in m from the knob; one
-    within :data:`NEAREST_KNOB_CM` of the knob refused as a length in m typed as cm.
-    """
-    value = in_range(flag, value, 0.0, 100 * length, "cm from the knob",
-                     slips=(M_AS_CM, INCH_AS_CM))  # fmt: skip
-    if 0.0 < value < NEAREST_KNOB_CM:
-        slipped = slip_hints(value, 0.0, 100 * length, "cm", (M_AS_CM,))
-        raise ValueError(f"{flag} {shown(value)} cm is on the knob: {slipped}")
-    return value / 100
-
-
-def _beyond(flag: str, z: float, bat, swing) -> None:
-    """A point ``z`` [m from the knob] the bat can be hit at: beyond the swing's centre, short
-    of a pivoted bat's clamps or of the hands (ValueError in the option's words).
-    """
-    length = bat.beam.length
-    if swing is not None:
-        centre = length - swing.pivot(bat)
-        if z <= centre:
-            raise ValueError(f"{flag} {100 * z:g} cm is not beyond the point the bat turns "
-                             f"about, {100 * centre:.3g} cm from the knob: hit it towards the "
-                             "barrel")  # fmt: skip
-    try:
-        bat.check_points(length - z)
-    except ValueError:
-        near = {"pivoted": bat.pivot_from_knob + bat.clamp_offset,
-                "hand-held": bat.hand.grip_length}.get(bat.support, 0.0)  # fmt: skip
-        raise ValueError(f"{flag} {100 * z:g} cm must lie beyond the {bat.support} bat's "
-                         f"{'clamps' if bat.support == 'pivoted' else 'hands'}, "
-                         f"{100 * near:.3g} cm from the knob") from None  # fmt: skip
-
-
 def _say(line: str) -> None:
     """Print ``line`` wrapped at the printed tables' width (a leading blank line kept)."""
     import textwrap
@@ -292,10 +155,8 @@ def _say(line: str) -> None:
     print(lead + textwrap.fill(line.strip("\n"), WIDTH, subsequent_indent="  "))
 
 
-TRAMPOLINE = (
-    "the trampoline effect of its thin wall, what makes a real hollow bat livelier "
-    "than wood, is left out"
-)
+TRAMPOLINE = ("the trampoline effect of its thin wall, what makes a real hollow bat livelier "
+              "than wood, is left out")  # fmt: skip
 """What a beam leaves out of a hollow bat's exit speed and BBCOR (``docs/guide/bats.md``;
 :func:`bat.presets.alloy`: a beam model has no hoop modes)."""
 
@@ -350,10 +211,8 @@ def _sweep(args) -> int:
     sweeps = [bat_sweep(bat, ball, pitch, swing, z, unit, label, args.ball)
               for label, bat, swing, z in plans]  # fmt: skip
     hollow = _hollow(args, [(label, bat) for label, bat, _, _ in plans])
-    conditions = say_conditions(
-        "; ".join(s.conditions for s in sweeps)
-        + _hollow_conditions(hollow, "its wall's trampoline effect")
-    )
+    joined = "; ".join(s.conditions for s in sweeps)
+    conditions = say_conditions(joined + _hollow_conditions(hollow, "its wall's trampoline effect"))
     suffix = SPEED_SUFFIXES[unit]
     view = {"bat": "bat", "position_from_knob_cm": "from the knob [cm]",
             "position_from_tip_cm": "from the tip [cm]", f"bat_speed_{suffix}":
@@ -391,10 +250,8 @@ def _bbcor(args) -> int:
     bats, ball = _bats(args, "pivoted"), load_ball(args.ball)
     tests = [bbcor_test(bat, ball, speed, unit, label, args.ball) for label, bat in bats]
     hollow = _hollow(args, bats)
-    conditions = say_conditions(
-        "; ".join(t.conditions for t in tests)
-        + _hollow_conditions(hollow, "its wall's trampoline effect")
-    )
+    joined = "; ".join(t.conditions for t in tests)
+    conditions = say_conditions(joined + _hollow_conditions(hollow, "its wall's trampoline effect"))
     table = pd.concat([t.table for t in tests], ignore_index=True)
     view = {"bat": "bat", "method": "set-up", "position_from_knob_cm": "from the knob [cm]",
             "bbcor": "BBCOR [-]", "ball_e_A": "ball v_out/v_in [-]",

@@ -28,6 +28,7 @@ from racket.specs.sheet import SPEC_RANGES
 from racket.swing import WRIST_BEYOND_BUTT
 from studies.config import BALLS
 from studies.scheduler import SCHEDULER_TIMEOUT
+from studies.toml_files import unknown_preset
 
 if TYPE_CHECKING:
     import pandas as pd
@@ -345,7 +346,31 @@ def _labels(names: list[str]) -> list[tuple[str, str]]:
 
 
 # ----- parser -----------------------------------------------------------------------------
+def preset_or_toml(presets, kind: str):
+    """An argparse ``type``: the text given where it names one of ``presets`` or a .toml
+    file (read later), else refused naming the option (argparse prefixes it).
+
+    Parameters
+    ----------
+    presets : iterable of str
+        The presets' names.
+    kind : str
+        "racket", "ball", "bat", ...
+    """
+    names = tuple(presets)
+
+    def preset_or_file(text: str) -> str:
+        if text in names or text.endswith(".toml"):
+            return text
+        raise argparse.ArgumentTypeError(unknown_preset(text, names, kind))
+
+    preset_or_file.names = names  # (what the option takes, for a caller to pick from)
+    return preset_or_file
+
+
 def _ball_arg(p, flag="--ball", default=DEFAULT_BALL, what="ball", **extra):
+    if flag.startswith("--"):  # (a positional's bad word may be an option's, said later)
+        extra["type"] = preset_or_toml(BALLS, "ball")
     p.add_argument(
         flag,
         default=default,

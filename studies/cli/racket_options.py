@@ -10,10 +10,9 @@ from __future__ import annotations
 import re
 from dataclasses import replace
 
-from common.checks import KN_AS_N, M_AS_CM, in_range, shown
+from common.checks import KG_AS_G, KN_AS_N, M_AS_CM, in_range, shown, suspect
 from common.units import GRAVITY, KP_PER_CM
 from racket import DEFAULT_RACKET, GRIPS, STRINGS, SUPPORTS
-from racket.racket import ADDED_MASS_MAX
 from racket.strings.sizes import GAUGE_RANGE, GAUGES, diameter, parse_pattern
 from racket.strings.stringing import LINEAR, restrung, stringing
 from studies.cli.options import (
@@ -23,12 +22,19 @@ from studies.cli.options import (
     _swing_options,
     _tension,
     given,
+    preset_or_toml,
     refuse_unused,
     speed_unit,
 )
 from studies.conditions import PLAIN_BED, conditions_line, racket_details
-from studies.config import RACKETS, load_racket
-from studies.strings.inputs import DT_RANGE, LB_AS_KG, N_M_AS_KP_CM, TENSION_KG_RANGE
+from studies.config import LEAD_GRAMS, RACKETS, load_racket, read_toml
+from studies.strings.inputs import (
+    DT_RANGE,
+    LB_AS_KG,
+    N_M_AS_KP_CM,
+    TENSION_KG_RANGE,
+    stiff_dt,
+)
 from studies.sweeps import BALL_SPEED, STRING_STIFFNESS_RANGE
 
 _LEAD = re.compile(r"^\s*(\d+(?:\.\d*)?|\.\d+)\s*(?:g)?\s*@\s*(.+?)\s*$")
@@ -42,9 +48,18 @@ STRING_OPTIONS = (
 GAUGE_MM = tuple(1e3 * g for g in GAUGE_RANGE)
 """The gauges ``--gauge`` takes [mm]."""
 
-LEAD_GRAMS = (0.1, 1e3 * ADDED_MASS_MAX)
-"""Lead tape per side [g]: from a tenth of a gram (an assumption: less is no tape) to
-:data:`racket.racket.ADDED_MASS_MAX`, as the TOML's ``lead_tape``, the page and the API."""
+NEAR_AXIS_CM = 1.0
+"""An ``--offset`` typed nearer the long axis than this [cm] (but not on it) that is one in m
+typed as cm is asked about (**an assumption**: a player's off-centre hits are centimetres
+off the axis; 0.05 is more likely 5 cm than half a millimetre)."""
+
+HAND_READERS = ("specs", "modes", "map", "sweetspots", "feel")
+"""The commands that read the racket's hand whatever holds it (its held modes, the pivot of
+the centre of percussion, the grip the feel is read at): elsewhere a ``[racket.hand]`` table
+on a racket no hand holds is refused, as nothing would read it."""
+
+FREE_ONLY = {"serve": "serve swings a free racket", "strings": "strings serves a free racket"}
+"""The commands that take a free racket only, and why (the hand has no place there)."""
 
 
 def add_racket_options(
@@ -158,6 +173,7 @@ def _racket_option(p) -> None:
     p.add_argument(
         "--racket",
         default=DEFAULT_RACKET,
+        type=preset_or_toml(RACKETS, "racket"),
         metavar="PRESET_OR_TOML",
         help=f"racket: preset ({', '.join(RACKETS)}; 'paper' is the paper's uniform racket) "
         f"or TOML file with a [racket] table (default: {DEFAULT_RACKET})",
@@ -194,6 +210,8 @@ def stiffnesses(args, bed=None) -> list[float] | None:
         hint, slips = "; in N/m: --string-stiffness", (N_M_AS_KP_CM,)
         dts = [in_range("--string-bed-dt", dt, *DT_RANGE, "kp/cm", hint, slips)
                for dt in _many(args.string_bed_dt)]  # fmt: skip
+        for dt in dts:  # (N/cm typed as kp/cm?)
+            stiff_dt("--string-bed-dt", dt)
         return [KP_PER_CM * dt if bed is None else stiffness_from_dt(bed, dt, "--string-bed-dt")
                 for dt in dts]  # fmt: skip
     if args.string_stiffness is None:
@@ -236,7 +254,8 @@ def lead_tape(racket, words):
             raise ValueError(
                 f"--lead {word!r} must be GRAMS@CLOCK, e.g. 3@12, 2@3/9 or 4@6 (grams per side)"
             )
-        grams = in_range("--lead", float(match.group(1)), *LEAD_GRAMS, "g per side")
+        grams = in_range("--lead", float(match.group(1)), *LEAD_GRAMS, "g per side",
+                         slips=(KG_AS_G,))  # fmt: skip
         at = match.group(2)
         try:
             racket = racket.with_lead_tape(grams / 1e3, at.replace("/", " and "))
@@ -267,6 +286,7 @@ def racket_from(args, spec: str | None = None, grid: bool = False):
     """
     racket = lead_tape(load_racket(spec or args.racket), args.lead)
     supports = _many(getattr(args, "support", None) or [racket.support])
+    check_hand(args, spec or args.racket, supports)
     newtons, _ = tensions(args), stiffnesses(args)  # checked before any work
     measured = given(args, "string_stiffness", "string_bed_dt")
     if getattr(args, "played", False) and measured:
@@ -294,6 +314,42 @@ def racket_from(args, spec: str | None = None, grid: bool = False):
     return racket
 
 
+def check_hand(args, spec, supports) -> None:
+    """A ``[racket.hand]`` table in the racket's TOML file ``spec`` refused in one line where
+    no hand holds the racket (none of ``supports`` is hand-held) and the command does not
+    read the hand otherwise (:data:`HAND_READERS`): it would be ignored in silence.
+    """
+    command = getattr(args, "command", None)
+    if spec in RACKETS or "hand-held" in supports or command in HAND_READERS:
+        return
+    table = read_toml(spec).get("racket", {})  # (a file load_racket has read)
+    if "hand" not in table:
+        return
+    support = table.get("support")
+    typed = given(args, "support")
+    held = " / ".join(supports)
+    said = (f"{typed[0]} {held}" if typed else f'its support = "{support}"' if support
+            else f"its preset's support, {held}")  # fmt: skip
+    what = (f"{FREE_ONLY[command]}: leave the table out" if command in FREE_ONLY
+            else "give --support hand-held, or leave the table out")  # fmt: skip
+    raise ValueError(f"[racket.hand] in {spec} does not apply to a {held} racket ({said}): only "
+                     f"a hand-held racket has a hand; {what}")  # fmt: skip
+
+
+def offset_cm(value, half: float) -> float:
+    """``--offset`` [cm from the long axis] checked on strings ``half`` [cm] wide either side
+    (one in m typed as cm refused with the hint beyond them, asked about within
+    :data:`NEAR_AXIS_CM` of the axis), in cm.
+    """
+    unit = "cm from the long axis"
+    x = in_range("--offset", value, -half, half, unit, slips=(M_AS_CM,))
+    if x != 0.0:
+        usual = (NEAR_AXIS_CM, half) if x > 0 else (-half, -NEAR_AXIS_CM)
+        suspect("--offset", x, usual, unit, (M_AS_CM,),
+                f"within {NEAR_AXIS_CM:g} cm of it")  # fmt: skip
+    return x
+
+
 def check_offset(args, racket) -> None:
     """``--offset`` refused in one line on a racket whose roll inertia is not modelled (its
     impacts are all on the long axis), the racket named as ``--racket`` gave it.
@@ -316,9 +372,7 @@ def impact_point(args, racket) -> tuple[float | None, float | None]:
                             slips=(M_AS_CM,)) / 100  # fmt: skip
     check_offset(args, racket)
     if args.offset is not None:
-        half = 50 * racket.strings.full_width
-        offset = in_range("--offset", args.offset, -half, half, "cm from the long axis",
-                          slips=(M_AS_CM,)) / 100  # fmt: skip
+        offset = offset_cm(args.offset, 50 * racket.strings.full_width) / 100
     return position, offset
 
 
@@ -371,8 +425,10 @@ def racket_conditions(
     elif tension and (strung is None or "," in tension):  # a grid's: no one stiffness
         details["strings"] = strung.describe(tension) if strung else f"{PLAIN_BED} at {tension}"
     supports = getattr(args, "support", None)
-    if isinstance(supports, list) and len(supports) > 1:
+    if isinstance(supports, list) and supports:  # sweep's grid: one support or several
         details["support"] = " / ".join(supports)
+        if "hand-held" in supports:  # the grid holds the racket in its own hand
+            details["grip"] = racket_details(replace(racket, support="hand-held"))["grip"]
     if args.lead:
         details["strings"] += f", lead {' '.join(args.lead)}"
     speeds = ("speed", "swing_speed", "racket_speed", "target_ball_speed")

@@ -10,11 +10,16 @@ import re
 import sys
 import warnings
 
-from racket.solver import one_blas_thread
+from common.typechecks import asked_by_caller
+from racket.solver import Unanswered, one_blas_thread
 from studies import outputs
 from studies.cli.files import _RUN
 from studies.cli.notice import compile_watch
+from studies.cli.options import speed_unit
 from studies.outputs import interrupted
+
+_SPEEDS = {"speed", "swing_speed", "racket_speed", "pitch", "cm_speed"}
+"""The speed options whose unit an unanswered impact's refusal is said in (their ``dest``)."""
 
 
 class _Stdout:
@@ -107,8 +112,14 @@ def _run(args, prefix: str) -> int:
         warnings.showwarning = one_line
         files = None
         try:
-            # BLAS on one thread: the same bits as a study's tasks on --workers or a cluster
-            with outputs.transaction() as files, compile_watch(), one_blas_thread():
+            # BLAS on one thread: the same bits as a study's tasks on --workers or a cluster;
+            # the API asks nothing: each option was asked about as typed, in its own unit
+            with (
+                outputs.transaction() as files,
+                compile_watch(),
+                one_blas_thread(),
+                asked_by_caller(),
+            ):
                 status = args.func(args)
             for line in said.values():  # (a run refused says one line: its error)
                 print(line, file=sys.stderr)
@@ -121,6 +132,8 @@ def _run(args, prefix: str) -> int:
             if args.debug:
                 raise
             message = err.strerror if isinstance(err, OSError) and err.strerror else str(err)
+            if isinstance(err, Unanswered):  # in the unit the speeds were typed in
+                message = err.said_in(speed_unit(args, *_SPEEDS.intersection(vars(args))))
             where = f" ({err.filename})" if isinstance(err, OSError) and err.filename else ""
             line = f"{prefix}: error: {message}{where}"
             for copy, original in _RUN.get("originals", {}).items():  # a rerun's TOML copies

@@ -29,6 +29,7 @@ from studies.cli.options import (
 from studies.cli.racket_options import (
     check_offset,
     impact_parser,
+    offset_cm,
     racket_conditions,
     racket_from,
     stiffnesses,
@@ -203,9 +204,7 @@ def _ends(args, racket) -> tuple[list[float], str]:
     check_offset(args, racket)
     offset = None
     if args.offset is not None:
-        offset = in_range(
-            "--offset", args.offset, -half, half, "cm from the long axis", slips=(M_AS_CM,)
-        )
+        offset = offset_cm(args.offset, half)
     span = list(extent)
     if offset:
         shrink = np.sqrt(max(1.0 - (offset / half) ** 2, 0.0))

@@ -23,6 +23,7 @@ import threading
 
 from shiny import App, reactive, render, ui
 
+from common.typechecks import asked_by_caller
 from racket import CATALOG
 from racket.swing import ARM_REACH
 from studies.config import BALLS
@@ -208,7 +209,8 @@ def server(input, output, session):
             reactive.invalidate_later(1.0)
             return None
         try:
-            return page_results(inputs())
+            with asked_by_caller():  # the page asked about its controls, in their own words
+                return page_results(inputs())
         except ValueError as err:
             return str(err)
 

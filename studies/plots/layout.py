@@ -43,9 +43,16 @@ def legend_outside(ax, **options) -> None:
 
 def finish(axes, conditions: str | None = None, made: bool = False):
     """Lay out the figure holding ``axes`` so that everything in it fits and return
-    ``axes``: a figure made here (``made``) widened until its Axes keep
+    ``axes``: a figure made here (``made``) widened so that its Axes keep
     :data:`AXES_WIDTH` beside their legends, each Axes' title wrapped to the Axes' width, and
     ``conditions`` (if given) drawn as the figure's heading, wrapped to the figure's width.
+
+    Nothing is drawn here: the figure's layout engine (matplotlib's constrained layout, for
+    a figure made here) places the Axes once, from the extents of their labels, ticks,
+    legends and the heading that the renderer measures without drawing, and the figure is
+    widened from that in one step (nothing beside the Axes grows with the figure: what it
+    gains, its Axes gain). Saving it then draws it twice, as matplotlib saves any figure
+    with a layout engine: once to lay it out, nothing rendered, and once to render it.
 
     Parameters
     ----------
@@ -59,36 +66,47 @@ def finish(axes, conditions: str | None = None, made: bool = False):
         gave.
     """
     fig = np.atleast_1d(axes)[0].figure
-    fig.draw_without_rendering()
-    for ax in fig.axes:
-        room = ax.get_window_extent().width
-        if made and ax.get_aspect() == "auto":  # these Axes will be widened to AXES_WIDTH
-            room = max(room, AXES_WIDTH * fig.dpi)
-        _wrap(ax.title, min(room, 0.96 * fig.bbox.width))
+    heading = fig.suptitle(conditions, fontsize="medium") if conditions else None
+    _place(fig)
+    rooms = [(ax, ax.get_window_extent().width) for ax in fig.axes]
     if made:
         _widen(fig)
-    if conditions:
-        heading = fig.suptitle(conditions, fontsize="medium")
+    for ax, room in rooms:
+        if made and ax.get_aspect() == "auto":  # these Axes were widened to AXES_WIDTH
+            room = max(room, AXES_WIDTH * fig.dpi)
+        _wrap(ax.title, min(room, 0.96 * fig.bbox.width))
+    if heading is not None:
         _wrap(heading, 0.96 * fig.bbox.width)
-    fig.draw_without_rendering()
     return axes
 
 
-def _widen(fig) -> None:
-    """Widen ``fig`` until its narrowest Axes (of the automatic aspect, not a colour bar's)
-    is :data:`AXES_WIDTH` wide after the layout; at most three passes (legends do not grow
-    with the figure, so one usually does).
+def _place(fig) -> None:
+    """Place the Axes of ``fig`` as its layout engine would when drawing it, without drawing
+    it: the engine run once (constrained layout measures each Axes' labels, ticks, legends
+    and the heading with the renderer), then each Axes' aspect applied; with no engine the
+    Axes stay where they are.
     """
-    for _ in range(3):
-        fig.draw_without_rendering()
-        widths = [
-            ax.get_position().width * fig.get_figwidth()
-            for ax in fig.axes
-            if ax.get_aspect() == "auto" and not hasattr(ax, "_colorbar") and ax.get_visible()
-        ]
-        short = AXES_WIDTH - min(widths, default=AXES_WIDTH)
-        if short < 0.05:
-            return
+    engine = fig.get_layout_engine()
+    if engine is None:
+        return
+    engine.execute(fig)
+    for ax in fig.axes:  # as Axes.draw does first: a fixed aspect shrinks the Axes' box
+        locator = ax.get_axes_locator()
+        ax.apply_aspect(locator(ax, fig._get_renderer()) if locator else None)
+
+
+def _widen(fig) -> None:
+    """Widen ``fig`` so that its narrowest Axes (of the automatic aspect, not a colour
+    bar's) is :data:`AXES_WIDTH` wide once laid out again, from where :func:`_place` put
+    them: in one step, as nothing beside the Axes grows with the figure.
+    """
+    widths = [
+        ax.get_position().width * fig.get_figwidth()
+        for ax in fig.axes
+        if ax.get_aspect() == "auto" and not hasattr(ax, "_colorbar") and ax.get_visible()
+    ]
+    short = AXES_WIDTH - min(widths, default=AXES_WIDTH)
+    if short >= 0.05:
         fig.set_figwidth(fig.get_figwidth() + short)
 
 

@@ -7,10 +7,19 @@ from __future__ import annotations
 
 from dataclasses import replace
 
-from common.checks import loose_tension
+from common.checks import (
+    CM_AS_M,
+    finite_array,
+    in_range,
+    loose_tension,
+    non_negative,
+    shown,
+    suspect,
+)
 from common.typechecks import choice
 from common.units import GRAVITY, KP_PER_CM, LB
 from racket import StringBed
+from racket.strings.bed import BED_END_MAX
 from racket.strings.sizes import diameter, parse_pattern
 from racket.strings.stringing import LINEAR, STATES, restrung, stringing
 from racket.strings.tension import TENSION_RANGE_LB
@@ -28,12 +37,53 @@ LB_AS_KG = (LB / GRAVITY, "lb typed as kg?", "lb")
 N_M_AS_KP_CM = (1.0 / KP_PER_CM, "N/m typed as kp/cm?", "N/m")
 """A slip of unit: a string bed's stiffness in N/m where the ERT's kp/cm are asked for."""
 
+N_CM_AS_KP_CM = (1.0 / GRAVITY, "N/cm typed as kp/cm?", "N/cm")
+"""A slip of unit: the ERT's dynamic tension in N/cm where kp/cm are asked for (1 kp/cm =
+9.80665 N/cm; a bed typed ten times too stiff)."""
+
+PLAYED_DT = (28.0, 46.0)
+"""What players' string beds read on the ERT [kp/cm]: "most players' DT values fall between
+28-46" (ert300.com, ``data/measurements.md`` sec. 5).  A DT above it that is one in N/cm is
+asked about (:func:`stiff_dt`)."""
+
 STRING_KEYS = {"stiffness", "extent", "profile", "string", "gauge", "pattern", "state",
                "tension_lb", "tension_kg", "dt_kp_cm"}  # fmt: skip
 """The keys of a ``[racket.strings]`` table."""
 
 BED_KEYS = ("tension_lb", "tension_kg", "stiffness", "dt_kp_cm")
 """The ``[racket.strings]`` keys that each set the bed's stiffness: one at most."""
+
+
+def stiff_dt(name: str, dt_kp_cm: float) -> None:
+    """Warn (``UserWarning``, :func:`common.checks.suspect`) when a DT [kp/cm] lies above
+    :data:`PLAYED_DT` and is one in N/cm typed as kp/cm ("--string-bed-dt 300 kp/cm is
+    stiffer than players' beds read (most 28-46 kp/cm): N/cm typed as kp/cm? 300 N/cm would
+    be 30.59 kp/cm").
+
+    Parameters
+    ----------
+    name : str
+        The input, as the message quotes it (a flag or a TOML key).
+    dt_kp_cm : float
+        The DT typed [kp/cm].
+    """
+    low, high = PLAYED_DT
+    why = f"stiffer than players' beds read (most {low:g}-{high:g} kp/cm)"
+    suspect(name, dt_kp_cm, PLAYED_DT, "kp/cm", (N_CM_AS_KP_CM,), why)
+
+
+def _extent(name: str, value) -> tuple[float, float]:
+    """A string bed's extent as typed (``name``): two numbers [m from the tip], each within
+    :data:`racket.strings.bed.BED_END_MAX` (one in cm refused with the hint); their order and
+    the frame are the bed's and the racket's to check.
+    """
+    extent = finite_array(name, value, "m from the tip")
+    if extent.shape != (2,):
+        raise ValueError(f"{name} must be [start, end] [m from the tip], got {shown(value)}")
+    for x in extent:
+        non_negative(name, x, "m from the tip")
+        in_range(name, x, 0.0, BED_END_MAX, "m from the tip", slips=(CM_AS_M,))
+    return float(extent[0]), float(extent[1])
 
 
 def strings_from_table(bed: StringBed, table: dict) -> tuple[StringBed, float | None]:
@@ -57,6 +107,8 @@ def strings_from_table(bed: StringBed, table: dict) -> tuple[StringBed, float | 
         raise ValueError(f"{where} takes one of {', '.join(BED_KEYS)}; got {' and '.join(typed)}")
     if "tension_lb" in table:  # asked about as --tension-lb is (kg typed as lb?)
         loose_tension(f"{where} tension_lb", table["tension_lb"])
+    if "dt_kp_cm" in table:  # asked about as --string-bed-dt is (N/cm typed as kp/cm?)
+        stiff_dt(f"{where} dt_kp_cm", table["dt_kp_cm"])
     gauge = table.get("gauge")
     gauge = None if gauge is None else diameter(gauge, f"{where} gauge", "mm")
     pattern = table.get("pattern")
@@ -77,8 +129,8 @@ def strings_from_table(bed: StringBed, table: dict) -> tuple[StringBed, float | 
             f"{where} gauge, pattern and state describe a string, and {plain} a plain "
             "spring with none: name a string, e.g. string = 'polyester'"
         )
-    bed = replace(bed, extent=tuple(table.get("extent", bed.extent)),
-                  profile=table.get("profile", bed.profile))  # fmt: skip
+    extent = bed.extent if "extent" not in table else _extent(f"{where} extent", table["extent"])
+    bed = replace(bed, extent=extent, profile=table.get("profile", bed.profile))
     if bed.stringing is not None or "string" in table or stiffness is not None:
         bed = restrung(bed, table.get("string"), gauge, pattern, state, stiffness)
     if "dt_kp_cm" in table:  # read on the strings as strung, as an ERT reads them

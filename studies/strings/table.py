@@ -16,14 +16,16 @@ from dataclasses import replace
 import pandas as pd
 
 from ball import Ball
+from common.checks import finite
 from common.checks import speed as check_speed
-from common.typechecks import instance
+from common.typechecks import ask, instance
 from racket import STROKES, Racket, Swing, impact
 from racket.feel import hand_feel
 from racket.strings.ert import dt_reading, stiffness_from_dt
 from racket.strings.stringing import STRING_CHOICES, restrung
 from studies.feel import FEEL_SUPPORT, feel_numbers
 from studies.serve import serve
+from studies.strings.inputs import stiff_dt
 from studies.strokes.stroke import stroke_table
 
 SPIN_STROKE = "topspin-forehand"
@@ -86,6 +88,8 @@ def string_table(
             "the racket's string bed has no string (the paper's spring): string it first, "
             "e.g. --string polyester"
         )
+    if dt is not None:  # a DT in N/cm typed as kp/cm asked about (refused by the search)
+        ask(stiff_dt, "dt", finite("dt", dt, "kp/cm"))
     strings = [strings] if isinstance(strings, str) else list(strings)
     if not strings:
         raise ValueError("strings names no string to compare: give at least one, e.g. 'nylon'")

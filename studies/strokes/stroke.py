@@ -19,13 +19,14 @@ takes radians and rad/s); speeds are in m/s, and also in mph or km/h with ``unit
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable
 from dataclasses import replace
 
 import numpy as np
 import pandas as pd
 
-from common.checks import finite, finite_array, shown
-from common.typechecks import choice, flag, instance
+from common.checks import ArgumentTypeError, finite, finite_array, shown
+from common.typechecks import choice, flag, instance, quoted
 from common.units import SPEED_SUFFIXES, SPEED_UNITS
 from racket import STROKES, Stroke, hit
 from racket.strings.sideways import BedSideways
@@ -50,7 +51,7 @@ def spin_note(strokes) -> str:
 
     Parameters
     ----------
-    strokes : dict or sequence
+    strokes : Stroke or dict or sequence
         As :func:`stroke_table`.
     """
     outside = [name for name, s in _strokes(strokes)
@@ -64,23 +65,48 @@ def spin_note(strokes) -> str:
 
 def _strokes(strokes) -> list[tuple[str, Stroke]]:
     """``strokes`` as (name, Stroke) pairs: a dict name -> Stroke, or a sequence of pairs
-    (a name may repeat: a grid of one stroke's angles).
+    (a name may repeat: a grid of one stroke's angles) or of Strokes; one Stroke is a
+    sequence of one.  A Stroke given without a name is named after the preset it is
+    (:data:`racket.STROKES`), or "stroke".
     """
+    if isinstance(strokes, Stroke):
+        strokes = [strokes]
+    if isinstance(strokes, str | bytes) or not isinstance(strokes, dict | Iterable):
+        raise ArgumentTypeError(
+            f"strokes must be a Stroke, a dict name -> Stroke or a sequence of (name, Stroke) "
+            f"pairs, got {quoted(strokes)} (e.g. racket.STROKES)"
+        )
     pairs = list(strokes.items()) if isinstance(strokes, dict) else list(strokes)
     if not pairs:
         raise ValueError("strokes must hold one stroke or more, got none")
     checked = []
     for k, pair in enumerate(pairs):
+        if isinstance(pair, Stroke):
+            pair = (_preset_name(pair), pair)
         if not (isinstance(pair, tuple | list) and len(pair) == 2):
             raise ValueError(
-                f"strokes must be a dict name -> Stroke or (name, Stroke) pairs, got "
-                f"{shown(pair)} at {k}"
+                f"strokes must be a dict name -> Stroke, (name, Stroke) pairs or Strokes, got "
+                f"{quoted(pair)} at {k}"
             )
         name, stroke = pair
         instance(f"strokes[{k}] name", name, str, "a str")
         instance(f"stroke {name!r}", stroke, Stroke, "a racket.Stroke")
         checked.append((name, stroke))
     return checked
+
+
+def _preset_name(stroke: Stroke) -> str:
+    """The name of the preset (:data:`racket.STROKES`) ``stroke`` is, or "stroke"."""
+    return next((name for name, preset in STROKES.items() if preset == stroke), "stroke")
+
+
+def _moves(racket) -> None:
+    """Refuse a racket that cannot swing, naming its support: a clamped head."""
+    if racket.support == "clamped-head":
+        raise ValueError(
+            "racket must move for a stroke (support 'free' or 'hand-held'), got support "
+            "'clamped-head': a clamped head cannot swing"
+        )
 
 
 def _degrees(name: str, values, default: float) -> list[float]:
@@ -154,11 +180,12 @@ def stroke_table(
 
     Parameters
     ----------
-    strokes : dict or sequence
+    strokes : Stroke or dict or sequence
         Name -> :class:`racket.Stroke` (e.g. :data:`racket.STROKES`), or (name, Stroke)
-        pairs (a name may repeat).
+        pairs (a name may repeat), or Strokes (each named after the preset it is, or
+        "stroke"); one Stroke is a list of one.
     racket : Racket
-        The racket (free or hand-held).
+        The racket (free or hand-held; a clamped head is refused, naming its support).
     ball : Ball
         The ball.
     position : float, optional
@@ -196,6 +223,7 @@ def stroke_table(
     """
     pairs = _strokes(strokes)
     racket, ball = racket_argument(racket), ball_argument(ball)
+    _moves(racket)
     if position is not None:
         position = finite("position", position, "m from the tip")
     instance("side", side, BedSideways | type(None), "a BedSideways or None",
