@@ -91,13 +91,19 @@ def unclosed(fields: dict, ball) -> np.ndarray:
     ball : ball.Ball
         The ball.
     """
-    e = np.atleast_1d(fields["e"])
-    initial = np.atleast_1d(fields["energy_initial"])
-    residual = np.abs(np.atleast_1d(fields["energy_residual"]))
     limit = getattr(ball.law, "x_lim", np.inf) * STIFF_FRACTION
     with np.errstate(invalid="ignore"):
-        fine = (e <= 1.0 + BUDGET_TOL) & (residual <= BUDGET_TOL * initial)
-        return ~(fine & (np.atleast_1d(fields["compression"]) <= limit))
+        return ~(_closes(fields) & (np.atleast_1d(fields["compression"]) <= limit))
+
+
+def _closes(fields: dict) -> np.ndarray:
+    """Which impacts (P,) give e <= 1 and close their budget, both to :data:`BUDGET_TOL`."""
+    e = np.atleast_1d(fields["e"])
+    residual = np.abs(np.atleast_1d(fields["energy_residual"]))
+    with np.errstate(invalid="ignore"):
+        return (e <= 1.0 + BUDGET_TOL) & (
+            residual <= BUDGET_TOL * np.atleast_1d(fields["energy_initial"])
+        )
 
 
 def refined(solve, steps: int):
@@ -119,11 +125,7 @@ def refined(solve, steps: int):
         if before is not None:
             moved = np.abs(np.atleast_1d(fields["e"]) - np.atleast_1d(before))
         before = fields["e"]
-    residual = np.abs(np.atleast_1d(fields["energy_residual"]))
-    closes = (np.atleast_1d(fields["e"]) <= 1.0) & (
-        residual <= BUDGET_TOL * np.atleast_1d(fields["energy_initial"])
-    )
-    return fields, t, closes & (moved <= SETTLED_E)
+    return fields, t, _closes(fields) & (moved <= SETTLED_E)
 
 
 def answered_up_to(answers, closing: float) -> float:
