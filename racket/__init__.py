@@ -16,35 +16,43 @@ with (:class:`Stringing` of a :class:`String` of a material of :data:`MATERIALS`
 :data:`STRINGS` presets, :func:`stringing` by name); spin (issue 36): a :class:`Stroke`
 (the :data:`STROKES` presets) and :func:`hit`, the ball's flight after it; a spinning ball
 meeting the strings obliquely, :func:`oblique_impact`.
+
+``import racket`` loads none of them (nor numpy): each name loads on first use
+(:mod:`common.lazy`).
 """
 
+from typing import TYPE_CHECKING
+
+from common.lazy import lazy_names
 from common.version import __version__
-from racket.hand import GRIPS, Hand
-from racket.presets import (
-    DEFAULT_RACKET,
-    TENNIS_BALL_MASS,
-    TENNIS_BALL_RADIUS,
-    default_ball,
-    default_racket,
-    paper_ball,
-    paper_racket,
-)
-from racket.racket import SUPPORTS, Racket
-from racket.solver import Impact, ObliqueImpact, StrokeImpact, hit, impact, oblique_impact
-from racket.specs import from_specs
-from racket.specs.catalog import CATALOG
-from racket.specs.stiffness import flex_test_stiffness
-from racket.strings import (
-    MATERIALS,
-    STRINGS,
-    String,
-    StringBed,
-    Stringing,
-    string_bed_stiffness,
-    stringing,
-)
-from racket.stroke import STROKES, Stroke
-from racket.swing import Swing
+
+if TYPE_CHECKING:  # the public names, loaded on first use (common.lazy): by module below
+    from racket.hand import GRIPS, Hand
+    from racket.presets import (
+        DEFAULT_RACKET,
+        TENNIS_BALL_MASS,
+        TENNIS_BALL_RADIUS,
+        default_ball,
+        default_racket,
+        paper_ball,
+        paper_racket,
+    )
+    from racket.racket import SUPPORTS, Racket
+    from racket.solver import Impact, ObliqueImpact, StrokeImpact, hit, impact, oblique_impact
+    from racket.specs import from_specs
+    from racket.specs.catalog import CATALOG
+    from racket.specs.stiffness import flex_test_stiffness
+    from racket.strings import (
+        MATERIALS,
+        STRINGS,
+        String,
+        StringBed,
+        Stringing,
+        string_bed_stiffness,
+        stringing,
+    )
+    from racket.stroke import STROKES, Stroke
+    from racket.swing import Swing
 
 __all__ = [
     "CATALOG",
@@ -79,3 +87,42 @@ __all__ = [
     "string_bed_stiffness",
     "stringing",
 ]
+
+__getattr__, __dir__ = lazy_names(
+    __name__,
+    {
+        "racket.hand": ("GRIPS", "Hand"),
+        "racket.presets": (
+            "DEFAULT_RACKET",
+            "TENNIS_BALL_MASS",
+            "TENNIS_BALL_RADIUS",
+            "default_ball",
+            "default_racket",
+            "paper_ball",
+            "paper_racket",
+        ),
+        "racket.racket": ("SUPPORTS", "Racket"),
+        "racket.solver": (
+            "Impact",
+            "ObliqueImpact",
+            "StrokeImpact",
+            "hit",
+            "impact",
+            "oblique_impact",
+        ),
+        "racket.specs": ("from_specs",),
+        "racket.specs.catalog": ("CATALOG",),
+        "racket.specs.stiffness": ("flex_test_stiffness",),
+        "racket.strings": (
+            "MATERIALS",
+            "STRINGS",
+            "String",
+            "StringBed",
+            "Stringing",
+            "string_bed_stiffness",
+            "stringing",
+        ),
+        "racket.stroke": ("STROKES", "Stroke"),
+        "racket.swing": ("Swing",),
+    },
+)

@@ -2,7 +2,8 @@
 
 Each combination of the grid runs all its impact positions together (one vectorized call
 of :func:`racket.impact`); the rows are gathered into one pandas DataFrame, one row per
-impact, SI columns.
+impact, SI columns (:func:`sweep`), or into its columns, without pandas
+(:func:`sweep_columns`: the command line's).
 """
 
 from __future__ import annotations
@@ -32,7 +33,7 @@ from racket.swing import check_swung_support
 from racket.swing import equal_effort as same_effort
 from studies.arguments import ball_argument, racket_argument, swing_argument
 from studies.scale import impacts_of, run_calls
-from studies.tables import impact_columns
+from studies.tables import frame, impact_columns
 
 if TYPE_CHECKING:
     import pandas as pd
@@ -214,8 +215,55 @@ def sweep(
         One row per impact: :data:`COLUMNS`, then one column per parameter that varies.
         At most :data:`MAX_IMPACTS` rows (positions times the combinations).
     """
-    import pandas as pd
+    return frame(
+        sweep_columns(
+            racket,
+            ball,
+            positions,
+            speed,
+            string_stiffness=string_stiffness,
+            tension=tension,
+            f1=f1,
+            support=support,
+            offset=offset,
+            swing=swing,
+            progress=progress,
+            executor=executor,
+        )
+    )
 
+
+def sweep_columns(
+    racket: Racket,
+    ball: Ball | Sequence[Ball] | Mapping[str, Ball],
+    positions=None,
+    speed: float | Sequence[float] = BALL_SPEED,
+    *,
+    string_stiffness=None,
+    tension=None,
+    f1=None,
+    support=None,
+    offset=None,
+    swing: Swing | None = None,
+    progress: bool | None = None,
+    executor: Executor | None = None,
+) -> dict:
+    """The table of :func:`sweep` as its columns, without pandas (the command line's).
+
+    Parameters
+    ----------
+    racket, ball, positions, speed
+        As for :func:`sweep`.
+    string_stiffness, tension, f1, support, offset, swing, progress, executor
+        As for :func:`sweep`.
+
+    Returns
+    -------
+    dict
+        Column name -> 1-D array, in :func:`sweep`'s order; a parameter that varies in
+        words (``support``, ``ball``) is an array of str (dtype object), which
+        :func:`studies.tables.frame` makes the DataFrame's categorical column.
+    """
     racket, swing = racket_argument(racket), swing_argument(swing)
     if positions is None:
         positions = np.linspace(*racket.strings.extent, 101)
@@ -289,13 +337,9 @@ def sweep(
         table[name] = np.concatenate(columns.pop(name))
     for name in varying:
         values = labels[name]
-        if isinstance(values[0], str):
-            categories = list(dict.fromkeys(values))
-            codes = np.repeat([categories.index(v) for v in values], count)
-            table[PARAMETERS[name]] = pd.Categorical.from_codes(codes, categories)
-        else:
-            table[PARAMETERS[name]] = np.repeat(np.asarray(values, dtype=float), count)
-    return pd.DataFrame(table, copy=False)
+        kind = object if isinstance(values[0], str) else float  # words: an array of str
+        table[PARAMETERS[name]] = np.repeat(np.asarray(values, dtype=kind), count)
+    return table
 
 
 def _first_of_each_kind(caught) -> None:

@@ -29,6 +29,27 @@ def impact_table(result: Impact) -> pd.DataFrame:
     return pd.DataFrame(impact_columns(result))
 
 
+def frame(columns: dict) -> pd.DataFrame:
+    """The table of ``columns`` (name -> 1-D array, as :func:`studies.sweeps.sweep_columns`
+    gives them); an array of words (dtype object) becomes a categorical column, its
+    categories in the order they first appear.
+
+    Parameters
+    ----------
+    columns : dict
+        Column name -> 1-D array.
+    """
+    import pandas as pd
+
+    table = {}
+    for name, values in columns.items():
+        if values.dtype == object:
+            codes, categories = pd.factorize(values)
+            values = pd.Categorical.from_codes(codes, categories.tolist())
+        table[name] = values
+    return pd.DataFrame(table, copy=False)
+
+
 def impact_columns(result: Impact) -> dict:
     """The columns of :func:`impact_table` as a dict of 1-D arrays.
 

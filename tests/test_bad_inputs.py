@@ -233,7 +233,7 @@ def test_internal_errors_say_so_and_debug_shows_the_traceback(workdir, capsys, m
     def broken(*args, **kwargs):
         raise KeyError("a bug")
 
-    monkeypatch.setattr(studies.sweeps, "sweep", broken)
+    monkeypatch.setattr(studies.sweeps, "sweep_columns", broken)  # the command line's sweep
     assert main(["sweep", *POINTS]) == 1
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "internal error (KeyError" in err and "--debug" in err

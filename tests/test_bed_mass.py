@@ -166,3 +166,40 @@ def test_every_ball_law_runs_on_a_bed_with_a_mass_alike_in_both_kernels(law):
         assert np.array_equal(getattr(scalar, name), getattr(lockstep, name)), name
     assert np.abs(scalar.energy_residual / scalar.energy_initial).max() < 1e-4
     assert np.all((scalar.e > 0.0) & (scalar.e < 1.0))
+
+
+@pytest.mark.parametrize("peak", [0.9, 1.2], ids=["loading", "unloading"])
+def test_the_two_unknown_newton_iteration_solves_both_equations(peak):
+    """The ball's and the bed's forces at a step's end (issue 47) satisfy the ball's
+    equation g(F1) + a1 F1 = X0 + h F2 and the bed's w(F2) + c F2 = R0 + h F1 to round-off,
+    loading and unloading, from guesses a few percent off; the one sweep of scalar solves
+    it replaced left the ball's off by h times its guess's error in F2.
+    """
+    from racket.solver.ball_kernel import ball_compression, force_coefficients
+    from racket.solver.bed_kernel import deflection, stored
+    from racket.solver.bed_mass_kernel import BED_MEMO_ROWS, massed_forces
+
+    code, numbers = BALL.law.kernel_law
+    params = np.array(numbers, dtype=float)
+    k, s, loss = 3e4, 900.0, 0.07
+    bed = np.array([s, loss, 0.0036])
+    a1, comp, h = 2e-7, 5e-6, 2e-8
+    f1, f2 = 600.0, 590.0  # the solution
+    f1_max, f2_max = peak * f1, peak * f2
+    u = deflection(k, s, f2)[0]
+    if f2 < f2_max:  # on the set-back curve
+        u_max = deflection(k, s, f2_max)[0]
+        w = u + 2.0 * loss * stored(k, s, u_max) / f2_max * (1.0 - f2 / f2_max)
+    else:
+        w = u
+    x0 = ball_compression(code, params, f1, max(f1, f1_max)) + a1 * f1 - h * f2
+    r0 = w + comp * f2 - h * f1
+    memo = np.zeros((BED_MEMO_ROWS, 1))
+    memo[0, 0] = memo[4, 0] = -1.0
+    memo[8:11, 0] = 0.97 * f1, 0.93 * f1, 0.88 * f1  # last first: 3 x 0.04 + 0.88 = 1.0 f1
+    memo[[3, 7, 11], 0] = 0.98 * u, 0.95 * u, 0.9 * u
+    coef = force_coefficients(code, params, a1)
+    got1, got2 = massed_forces(code, params, coef, a1, bed, k, comp, h, x0, r0,
+                               f1_max, f2_max, 0.0, 0.0, memo, 0)  # fmt: skip
+    assert got1 == pytest.approx(f1, rel=1e-12)
+    assert got2 == pytest.approx(f2, rel=1e-12)

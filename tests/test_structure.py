@@ -61,13 +61,24 @@ def _absolute(module: str, node: ast.ImportFrom) -> str:
     return f"{base}.{node.module}" if node.module else base
 
 
+def _top(tree: ast.Module) -> list[ast.stmt]:
+    """A module's top-level statements, with those under ``if TYPE_CHECKING:`` (where a
+    package whose names load on first use, :mod:`common.lazy`, re-exports them)."""
+    guarded = [
+        node.body
+        for node in tree.body
+        if isinstance(node, ast.If) and ast.unparse(node.test) == "TYPE_CHECKING"
+    ]
+    return [*tree.body, *(statement for body in guarded for statement in body)]
+
+
 def _defining(module: str, name: str, seen=()) -> str:
     """The module that defines ``name`` as ``module`` offers it: followed through the
     package's re-exports (``from racket.racket import Racket`` in ``racket/__init__.py``).
     """
     if f"{module}.{name}" in MODULES:
         return f"{module}.{name}"
-    for node in _tree(module).body:
+    for node in _top(_tree(module)):
         if isinstance(node, ast.ImportFrom) and (module, name) not in seen:
             source = _absolute(module, node)
             for alias in node.names:

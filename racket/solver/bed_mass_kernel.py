@@ -15,9 +15,10 @@ with X0 and R0 what the step would give without either force at its end, h = dt*
 (6 m_s), a1 the ball's and the bed mass's step compliance, and c_f the frame's step
 compliance plus the modes left out.  Each equation alone rises with its force (the ball's
 :func:`racket.solver.ball_kernel.monotone_force`, the bed's :func:`bed_force`); the two are
-coupled only through h, some 1e-4 of either compliance at the default step, so one sweep
-(the ball's from the bed's force extrapolated, then the bed's) solves them to a third order
-in the step (:func:`massed_forces`).
+coupled only through h, some 1e-4 of either compliance at the default step.  One Newton
+iteration in the two unknowns solves them together (:func:`massed_forces`), with one sweep of
+the two safeguarded scalar solves (the ball's from the bed's force extrapolated, then the
+bed's, third order in the step) where it does not settle.
 
 The bed's law is :mod:`racket.solver.bed_kernel`'s, written in u, its deflection on the
 loading curve: F(u) = k u (1 + s u**2), and w = u + delta clip(1 - F / F_max, 0, 1), delta
@@ -34,6 +35,7 @@ import math
 from numba import njit
 
 from racket.solver.ball_kernel import (
+    NEWTON_SETTLED,
     _loading,
     ball_compression,
     branch_force,
@@ -43,13 +45,17 @@ from racket.solver.ball_kernel import (
 from racket.solver.bed_kernel import deflection, stored
 from racket.solver.layout import LINEAR
 
-BED_MEMO_ROWS = 7
+BED_MEMO_ROWS = 12
 """Rows of a massed bed's memo: the bed's largest force F_max it was made for [N], its
 loading deflection u there [m], its set-back delta [m] and its last solution's u [m]; the
 ball's largest force it was made for [N], its compression there [m] and its unloading
-exponent (NaN until needed).  A new memo holds -1 in rows 0 and 4, 0 in row 3."""
+exponent (NaN until needed); the bed's u a step and two steps before the last [m] (rows 7
+and 11) and the ball's force at the last three steps [N] (rows 8-10, the last first), from
+which :func:`massed_forces` extrapolates its guesses.  A new memo holds -1 in rows 0 and 4,
+0 in rows 3 and 7-11."""
 
 _NEWTON_STEPS = 100
+_FUSED_STEPS = 8  # the two-unknown Newton iteration settles in two or three from its guesses
 
 
 @njit(cache=True)
@@ -65,7 +71,7 @@ def _remember(k, s, loss, f_max, memo, i):
 
 
 @njit(cache=True)
-def bed_force(k, s, loss, comp, z, f_max, memo, i):
+def bed_force(k, s, loss, comp, z, f_max, guess, memo, i):
     """The bed's force F [N] and loading-curve deflection u [m] where w_bed(F) + comp F = z.
 
     Parameters
@@ -78,8 +84,10 @@ def bed_force(k, s, loss, comp, z, f_max, memo, i):
         What the bed's deflection and the series compliance's take up [m].
     f_max : float
         The bed's largest force so far [N].
+    guess : float
+        The Newton iteration's first guess [m].
     memo : ndarray (BED_MEMO_ROWS, n)
-        The beds' memos; column ``i`` is this one's (its last solution is the Newton guess).
+        The beds' memos; column ``i`` is this one's.
     """
     _remember(k, s, loss, f_max, memo, i)
     u_max, delta = memo[1, i], memo[2, i]
@@ -90,7 +98,6 @@ def bed_force(k, s, loss, comp, z, f_max, memo, i):
         lo, hi, set_back, shift = 0.0, u_max, delta / f_max, delta
     else:  # beyond the set-back: pulling back about it
         lo, hi, set_back, shift = z - delta, 0.0, 0.0, delta
-    guess = memo[3, i]
     u = guess if lo < guess < hi else 0.5 * (lo + hi)
     for _ in range(_NEWTON_STEPS):
         f = k * u * (1.0 + s * u * u)
@@ -105,28 +112,32 @@ def bed_force(k, s, loss, comp, z, f_max, memo, i):
         newton = lo < u_new < hi
         if not newton:
             u_new = 0.5 * (lo + hi)
-        # a Newton step this small leaves the next one at round-off (quadratic convergence);
         # the scale is the bed's largest deflection, as u goes through 0 beyond its set-back
         step, scale = abs(u_new - u), abs(u_new) + u_max
         u = u_new
-        if step <= 1e-15 * scale or (newton and step <= 1e-7 * scale):
+        if step <= 1e-15 * scale or (newton and step <= NEWTON_SETTLED * scale):
             break
-    memo[3, i] = u
-    f = k * u * (1.0 + s * u * u)
-    if loading and f > 0.0:  # the memo made for the largest force this sets
-        memo[0, i], memo[1, i], memo[2, i] = f, u, 2.0 * loss * stored(k, s, u) / f
-    return f, u
+    return k * u * (1.0 + s * u * u), u
 
 
 @njit(cache=True)
 def massed_forces(law, params, coef, a1, bed, k, comp, h, x0, r0, f1_max, f2_max, guess, f2_guess,
                   memo, i):  # fmt: skip
     """The ball's force F1 and the bed's F2 [N] at the step's end (see the module docstring):
-    the ball's from the bed's force extrapolated, then the bed's from the ball's.
+    one Newton iteration in two unknowns, F1 and the bed's loading-curve deflection u
+    (F2 = k u (1 + s u**2)).
 
-    The equations are coupled through h alone, some 1e-4 of the compliances beside it, so
-    one sweep leaves the ball's equation off by h times the extrapolation's error in F2
-    (about 1e-13 m at the default step), a third order in the step.
+    Each equation rises with its own unknown on every branch (the ball's compression with
+    F1, the bed's deflection with u), and they are coupled through h alone, some 1e-4 of the
+    compliances beside it: the Jacobian [[g' + a1, -h F2'], [-h, w' + c F2']] is all but
+    diagonal, the iteration converges quadratically from the unknowns extrapolated
+    (quadratically) from the last three steps, and each iteration evaluates each law once,
+    the two evaluations independent of each other (the processor runs them side by side).
+    It ends at a step within :data:`racket.solver.ball_kernel.NEWTON_SETTLED` of both
+    unknowns.  Where it does not settle in ``_FUSED_STEPS``, or the ball's force reaches
+    zero (the ball touching or leaving the bed), one sweep of the safeguarded scalar solves
+    takes over: the ball's from the bed's force extrapolated, then the bed's from the ball's
+    (off by h times the extrapolation's error in F2, about 1e-13 m at the default step).
 
     Parameters
     ----------
@@ -143,12 +154,79 @@ def massed_forces(law, params, coef, a1, bed, k, comp, h, x0, r0, f1_max, f2_max
         The ball's compression and the bed's deflection with neither force at the end [m].
     f1_max, f2_max, guess, f2_guess : float
         The ball's and the bed's largest forces, and the ball's and the bed's forces
-        extrapolated from the last two steps [N].
+        extrapolated from the last two steps [N] (the scalar solves' guesses).
     memo : ndarray (BED_MEMO_ROWS, n)
         The beds' memos (column ``i``).
     """
-    f1 = _ball_force(law, params, coef, a1, x0 + h * f2_guess, f1_max, guess, memo, i)
-    return f1, bed_force(k, bed[0], bed[1], comp, r0 + h * f1, f2_max, memo, i)[0]
+    s = bed[0]
+    _remember(k, s, bed[1], f2_max, memo, i)
+    u_max, delta = memo[1, i], memo[2, i]
+    rate = delta / f2_max if f2_max > 0.0 else 0.0  # the set-back curve's delta / F_max
+    u_guess = 3.0 * (memo[3, i] - memo[7, i]) + memo[11, i]
+    f1, u = 3.0 * (memo[8, i] - memo[9, i]) + memo[10, i], u_guess
+    for _ in range(_FUSED_STEPS):
+        if not f1 > 0.0:
+            break
+        uu = u * u
+        f2, df2 = k * u * (1.0 + s * uu), k * (1.0 + 3.0 * s * uu)
+        w, dw = u, 1.0  # the bed's deflection: loading, set-back curve, beyond the set-back
+        if u < 0.0:
+            w += delta
+        elif u < u_max:
+            w += delta - rate * f2
+            dw -= rate * df2
+        r2, d2 = w + comp * f2 - r0 - h * f1, dw + comp * df2
+        g, dg = _ball_at(law, params, f1, f1_max, memo, i)
+        r1, d1 = g + a1 * f1 - x0 - h * f2, dg + a1
+        step1 = -(r1 * d2 + h * df2 * r2) / (d1 * d2 - h * h * df2)
+        step2 = (h * step1 - r2) / d2
+        f1 += step1
+        u += step2
+        if abs(step1) <= NEWTON_SETTLED * f1 and abs(step2) <= NEWTON_SETTLED * (abs(u) + u_max):
+            break
+    else:
+        f1 = 0.0  # (not settled: the scalar solves)
+    if not f1 > 0.0:
+        f1 = _ball_force(law, params, coef, a1, x0 + h * f2_guess, f1_max, guess, memo, i)
+        u = bed_force(k, s, bed[1], comp, r0 + h * f1, f2_max, u_guess, memo, i)[1]
+    memo[11, i], memo[7, i], memo[3, i] = memo[7, i], memo[3, i], u
+    memo[10, i], memo[9, i], memo[8, i] = memo[9, i], memo[8, i], f1
+    f2 = k * u * (1.0 + s * u * u)
+    if f2 > f2_max:  # loading: the memo made for the largest force this sets
+        memo[0, i], memo[1, i], memo[2, i] = f2, u, 2.0 * bed[1] * stored(k, s, u) / f2
+    return f1, f2
+
+
+@njit(cache=True)
+def _ball_at(law, params, f, f_max, memo, i):
+    """The ball's compression [m] at force ``f`` > 0 [N] after the largest ``f_max`` [N], and
+    its d/dF [m/N], on the branch it is on: the linear law's lines, a power law's loading
+    curve, or its unloading curve from what rows 4-6 of ``memo`` keep for ``f_max``.
+    """
+    if law == LINEAR:
+        k, e2 = params[0], params[1] * params[1]
+        if f >= f_max:
+            return f / k, 1.0 / k
+        return (f_max * (1.0 - e2) + e2 * f) / k, e2 / k
+    if f >= f_max:
+        return _loading(law, params, f)
+    _ball_memo(law, params, f_max, memo, i)
+    if math.isnan(memo[6, i]):
+        memo[6, i] = unloading_exponent(law, params, f_max)
+    b = memo[6, i]
+    x = memo[5, i] * (f / f_max) ** (1.0 / b)
+    return x, x / (b * f)
+
+
+@njit(cache=True)
+def _ball_memo(law, params, f_max, memo, i):
+    """Rows 4-6 of column ``i`` of ``memo`` made for the ball's largest force ``f_max`` [N]
+    (:data:`BED_MEMO_ROWS`).
+    """
+    if memo[4, i] != f_max:
+        memo[4, i] = f_max
+        memo[5, i] = _loading(law, params, f_max)[0] if f_max > 0.0 else 0.0
+        memo[6, i] = math.nan
 
 
 @njit(cache=True)
@@ -159,10 +237,7 @@ def _ball_force(law, params, coef, a, z, f_max, guess, memo, i):
     """
     if law == LINEAR:
         return monotone_force(law, params, coef, a, z, f_max, guess)
-    if memo[4, i] != f_max:
-        memo[4, i] = f_max
-        memo[5, i] = _loading(law, params, f_max)[0] if f_max > 0.0 else 0.0
-        memo[6, i] = math.nan
+    _ball_memo(law, params, f_max, memo, i)
     switch = memo[5, i] + a * f_max
     if math.isnan(memo[6, i]) and 0.0 < z < switch:  # unloading
         memo[6, i] = unloading_exponent(law, params, f_max)

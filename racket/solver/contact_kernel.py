@@ -16,7 +16,13 @@ import math
 
 from numba import njit
 
-from racket.solver.ball_kernel import _branch, ball_compression, monotone_force, unloading_exponent
+from racket.solver.ball_kernel import (
+    NEWTON_SETTLED,
+    _branch,
+    ball_compression,
+    monotone_force,
+    unloading_exponent,
+)
 from racket.solver.bed_kernel import bed_active, bed_extra, deflection, stored
 from racket.solver.layout import LINEAR
 
@@ -114,7 +120,8 @@ def _ball(law, params, f, f_max, b):
 def _root(law, params, k, s, rest_of, delta, target, u_lo, u_hi, f_max, b, guess):
     """The bed's loading-curve deflection u in [u_lo, u_hi] where g_ball(F) + u +
     delta (1 - F / f_max) + rest_of F = target, F = k u (1 + s u**2), by safeguarded Newton
-    from ``guess`` (the bracket's middle if outside it); returns F and u there.
+    from ``guess`` (the bracket's middle if outside it), to
+    :data:`racket.solver.ball_kernel.NEWTON_SETTLED`; returns F and u there.
     """
     u = guess if u_lo < guess < u_hi else 0.5 * (u_lo + u_hi)
     set_back = delta / f_max if delta > 0.0 else 0.0
@@ -130,10 +137,11 @@ def _root(law, params, k, s, rest_of, delta, target, u_lo, u_hi, f_max, b, guess
             u_hi = u
         slope = (dg + rest_of - set_back) * k * (1.0 + 3.0 * s * u * u) + 1.0
         u_new = u - resid / slope
-        if not (u_lo < u_new < u_hi):
+        newton = u_lo < u_new < u_hi
+        if not newton:
             u_new = 0.5 * (u_lo + u_hi)
-        if abs(u_new - u) <= 1e-15 * u_new:
-            u = u_new
-            break
+        step = abs(u_new - u)
         u = u_new
+        if step <= 1e-15 * u_new or (newton and step <= NEWTON_SETTLED * u_new):
+            break
     return k * u * (1.0 + s * u * u), u

@@ -159,7 +159,7 @@ def _one_impact(frame, points, ball, controls, out, p):
         comp = h + (points.series[p] - inv_ks) + _dot(out_d, gin1)
         k_bed = 1.0 / inv_ks
         q, qd = _dot(out_d, s), _dot(points.out_v[p], s)  # the bed moves with the frame
-        memo[3, 0] = 0.0
+        memo[3, 0], memo[7:, 0] = 0.0, 0.0
     force, f_before, f_peak, x_ball, snapped = 0.0, 0.0, 0.0, 0.0, False
     residual = -math.inf
     damping_loss, sine_work = 0.0, 0.0

@@ -65,6 +65,8 @@ def _tile(frame, points, ball, controls, out, ids, w, v, flags, scratch, memo):
         slot.start_slot(frame, points, ball, out, ids[i], i, w, v, flags, record, h)
         memo[0, i] = -1.0
         memo[3, i], memo[4, i] = 0.0, -1.0
+        for r in range(7, memo.shape[0]):
+            memo[r, i] = 0.0
     step = 0
     t00, t01, t10, t11 = ball.trans[0, 0], ball.trans[0, 1], ball.trans[1, 0], ball.trans[1, 1]
     g00, g01, g10, g11 = ball.g0[0], ball.g0[1], ball.g1[0], ball.g1[1]

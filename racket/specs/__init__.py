@@ -5,7 +5,8 @@ fitting in ``ivtools``).
 * :mod:`~racket.specs.parts`: the parts of a racket, where their mass sits and its plausible
   range;
 * :mod:`~racket.specs.mass_fit`: the part masses that meet the sheet (constrained least
-  squares);
+  squares), and :mod:`~racket.specs.fitted`, the record of the catalogue's fits (read, not
+  fitted again);
 * :mod:`~racket.specs.stiffness`: the bending-stiffness profile and the flex test;
 * :mod:`~racket.specs.ra`: the first free frequency from the RA rating (a regression on 622
   measured rackets);

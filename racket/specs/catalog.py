@@ -23,6 +23,9 @@ from dataclasses import dataclass, field
 
 from racket.racket import Racket
 from racket.specs.fit import from_specs
+from racket.specs.mass_fit import fit_key, fit_masses
+from racket.specs.parts import layout
+from racket.specs.sheet import spec_sheet
 from racket.specs.strung import STRUNG, STRUNG_SOURCES
 
 ASSUMED_F1 = 150.0
@@ -153,3 +156,18 @@ CATALOG = {
     ),
 }
 """Catalogue rackets by preset name."""
+
+
+def catalogue_fits() -> dict:
+    """The part-mass fit of every sheet of :data:`CATALOG`, fitted afresh
+    (:func:`racket.specs.mass_fit.fit_masses`, with scipy), keyed as the record of fits
+    keeps them: what :data:`racket.specs.fitted.FITTED` must hold, and how it is made.
+    """
+    fits = {}
+    for name, entry in CATALOG.items():
+        sheet = spec_sheet(**entry.specs)
+        lay = layout(sheet.length, sheet.head_area)
+        given = (lay, sheet.mass, sheet.balance, sheet.swingweight, sheet.twistweight)
+        fit = fit_masses(*given, recorded=False)
+        fits[fit_key(*given)] = (name, tuple(fit.masses.tolist()), fit.twistweight_residual)
+    return fits

@@ -13,16 +13,23 @@ Mass, balance and swingweight are met exactly (to rounding) whenever a racket wi
 their ranges can meet them; otherwise the sheet is refused, naming the quantity and the
 range such rackets reach (found by linear programming).  A twistweight is met exactly when
 it can be, else as closely as the parts allow, and the residual is reported.
+
+The fits of the catalogue's sheets are recorded (:mod:`racket.specs.fitted`): a process that
+builds a catalogue racket, every command's default, reads them there, bit for bit what the
+fit gives, and does not import :mod:`scipy.optimize` (a few tenths of a second) to fit
+them again.
 """
 
 from __future__ import annotations
 
+import hashlib
 from dataclasses import dataclass
 
 import numpy as np
 
 from beam import SWINGWEIGHT_AXIS
 from common.units import IN2, POINT
+from racket.specs.fitted import FITTED
 from racket.specs.parts import PARTS, Layout
 
 _NAMES = ("mass", "first moment", "swingweight", "twistweight")
@@ -178,6 +185,46 @@ def _least_distance(a_eq, b_eq, typical, soft=None) -> np.ndarray:
     return low + span * z
 
 
+def _problem(layout: Layout, mass: float, balance: float, swingweight: float):
+    """The racket's length [m], the parts' moments (:meth:`Layout.moments`) and the
+    targets ``A m = t`` of mass, first moment about the tip and swingweight.
+    """
+    length = float(layout.stations[-1])
+    return length, layout.moments(), np.array([mass, mass * (length - balance), swingweight])
+
+
+def _key(moments, target, typical, twistweight) -> str:
+    """SHA-256 [hex] of every input of a fit: the moments, the targets, the typical split,
+    the parts' ranges and the twistweight (None: none given).
+    """
+    low, high = _bounds()
+    digest = hashlib.sha256()
+    twist = np.nan if twistweight is None else twistweight
+    for part in (moments, target, typical, low, high, [twist]):
+        digest.update(np.ascontiguousarray(part, dtype=float).tobytes())
+    return digest.hexdigest()
+
+
+def fit_key(
+    layout: Layout,
+    mass: float,
+    balance: float,
+    swingweight: float,
+    twistweight: float | None = None,
+) -> str:
+    """The key of :func:`fit_masses`'s fit of these arguments in the record of fits,
+    :data:`racket.specs.fitted.FITTED`: a digest of every input of the fit, so that a changed
+    input (a part's range, the layout) finds no record and is fitted afresh.
+
+    Parameters
+    ----------
+    layout, mass, balance, swingweight, twistweight
+        As for :func:`fit_masses`.
+    """
+    _, moments, target = _problem(layout, mass, balance, swingweight)
+    return _key(moments, target, typical_split(mass), twistweight)
+
+
 def fit_masses(
     layout: Layout,
     mass: float,
@@ -185,6 +232,7 @@ def fit_masses(
     swingweight: float,
     twistweight: float | None = None,
     recoil_given: bool = False,
+    recorded: bool = True,
 ) -> MassFit:
     """Part masses [kg] meeting ``mass`` [kg], ``balance`` [m from the butt] and
     ``swingweight`` [kg m^2] exactly, and ``twistweight`` (roll inertia) [kg m^2] if given
@@ -207,13 +255,19 @@ def fit_masses(
     recoil_given : bool, optional
         The sheet gave the recoil weight, from which ``swingweight`` was derived: a refusal
         names the recoil weight.
+    recorded : bool, optional
+        Read the fit from the record of fits (:data:`racket.specs.fitted.FITTED`, the
+        catalogue's sheets) when it is there (default); False: fit afresh (how the record
+        is made and checked).
     """
-    length = float(layout.stations[-1])
-    moments = layout.moments()
-    target = np.array([mass, mass * (length - balance), swingweight])
+    length, moments, target = _problem(layout, mass, balance, swingweight)
+    typical = typical_split(mass)
+    record = FITTED.get(_key(moments, target, typical, twistweight)) if recorded else None
+    if record is not None:
+        _, masses, residual = record
+        return MassFit(np.array(masses), residual)
     if _linprog(np.zeros(len(PARTS)), moments[:3], target).status != 0:
         raise ValueError(_refusal(moments[:3], target, length, layout.strings_area, recoil_given))
-    typical = typical_split(mass)
     if twistweight is None:
         return MassFit(_least_distance(moments[:3], target, typical))
     with_roll = np.append(target, twistweight)

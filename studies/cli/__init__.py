@@ -9,50 +9,42 @@ line naming the problem and exits with status 2.
 One module per command family (each adds its subcommands' parsers and holds their
 handlers), :mod:`studies.cli.options` for the options they share, :mod:`studies.cli.files`
 for the files they write, :mod:`studies.cli.runner` for running a parsed command; here the
-parser, :func:`main` and ``rerun`` (which replays a command through the whole parser).
+parser, :func:`main` and ``rerun`` (which replays a command through the whole parser).  A
+command line imports the module of its own command only (:data:`COMMANDS`): the handlers
+named here load on first use (:mod:`common.lazy`).
 """
 
 from __future__ import annotations
 
 import argparse
+import importlib
 import sys
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from ball import DEFAULT_BALL
+from common.lazy import lazy_names
 from common.version import __version__
-from studies.cli import (
-    app,
-    balls,
-    bat,
-    compare,
-    court,
-    face,
-    paper,
-    rackets,
-    serve,
-    strings,
-    stroke,
-    sweep,
-    validate,
-)
-from studies.cli.app import cmd_app
-from studies.cli.balls import cmd_ball, cmd_collide, cmd_drop
-from studies.cli.bat import cmd_bat
-from studies.cli.compare import cmd_compare
-from studies.cli.court import cmd_court
-from studies.cli.face import cmd_map, cmd_sweetspots
 from studies.cli.files import _RUN as _RUN  # the run being made (tests read it)
 from studies.cli.files import check_outputs, save_plot, write_table
 from studies.cli.options import _Parser, _Replay
-from studies.cli.paper import cmd_paper, paper_figures
-from studies.cli.rackets import cmd_feel, cmd_modes, cmd_specs
 from studies.cli.runner import _reader_may_go, _start
-from studies.cli.serve import cmd_serve
-from studies.cli.strings import cmd_strings
-from studies.cli.stroke import cmd_stroke
-from studies.cli.sweep import cmd_sweep
-from studies.cli.validate import cmd_validate
 from studies.outputs import interrupted
+
+if TYPE_CHECKING:  # the handlers, loaded on first use (common.lazy): by module below
+    from studies.cli.app import cmd_app
+    from studies.cli.balls import cmd_ball, cmd_collide, cmd_drop
+    from studies.cli.bat import cmd_bat
+    from studies.cli.compare import cmd_compare
+    from studies.cli.court import cmd_court
+    from studies.cli.face import cmd_map, cmd_sweetspots
+    from studies.cli.paper import cmd_paper, paper_figures
+    from studies.cli.rackets import cmd_feel, cmd_modes, cmd_specs
+    from studies.cli.serve import cmd_serve
+    from studies.cli.strings import cmd_strings
+    from studies.cli.stroke import cmd_stroke
+    from studies.cli.sweep import cmd_sweep
+    from studies.cli.validate import cmd_validate
 
 __all__ = [
     "TABLE_COMMANDS",
@@ -82,6 +74,35 @@ __all__ = [
     "save_plot",
     "write_table",
 ]
+
+__getattr__, __dir__ = lazy_names(
+    __name__,
+    {
+        "studies.cli.app": ("cmd_app",),
+        "studies.cli.balls": ("cmd_ball", "cmd_collide", "cmd_drop"),
+        "studies.cli.bat": ("cmd_bat",),
+        "studies.cli.compare": ("cmd_compare",),
+        "studies.cli.court": ("cmd_court",),
+        "studies.cli.face": ("cmd_map", "cmd_sweetspots"),
+        "studies.cli.paper": ("cmd_paper", "paper_figures"),
+        "studies.cli.rackets": ("cmd_feel", "cmd_modes", "cmd_specs"),
+        "studies.cli.serve": ("cmd_serve",),
+        "studies.cli.strings": ("cmd_strings",),
+        "studies.cli.stroke": ("cmd_stroke",),
+        "studies.cli.sweep": ("cmd_sweep",),
+        "studies.cli.validate": ("cmd_validate",),
+    },
+)
+
+COMMANDS = {
+    "paper": "paper", "sweep": "sweep", "map": "face", "serve": "serve", "collide": "balls",
+    "drop": "balls", "ball": "balls", "modes": "rackets", "specs": "rackets", "app": "app",
+    "rerun": None, "feel": "rackets", "sweetspots": "face", "compare": "compare",
+    "validate": "validate", "strings": "strings", "stroke": "stroke", "court": "court",
+    "bat": "bat",
+}  # fmt: skip
+"""Each subcommand, in the order ``racket-impact --help`` lists them -> the module of
+:mod:`studies.cli` whose ``add_<subcommand>`` adds its parser (None: this one's)."""
 
 TABLE_COMMANDS = (
     "sweep", "map", "serve", "collide", "ball", "modes", "specs", "feel", "sweetspots", "compare",
@@ -117,7 +138,7 @@ def cmd_rerun(args) -> int:
         if "-h" in argv or "--help" in argv:
             raise ValueError(f"{args.sidecar!r}: command asks for help, not a table")
         argv = _serial(argv)
-        replay = build_parser(_Replay).parse_args(argv)
+        replay = build_parser(_Replay, _command(argv)).parse_args(argv)
         for dest in replay._writes:
             value = getattr(replay, dest)
             if value is None:
@@ -149,9 +170,11 @@ def _serial(argv: list[str]) -> list[str]:
     return out
 
 
-def build_parser(parser_class=_Parser) -> argparse.ArgumentParser:
+def build_parser(parser_class=_Parser, command: str | None = None) -> argparse.ArgumentParser:
     """The ``racket-impact`` argument parser, one subcommand per study (``parser_class``:
-    :class:`_Replay` for a command recorded in a sidecar).
+    :class:`_Replay` for a command recorded in a sidecar).  With ``command``, the command
+    line's own subcommand, only its parser is made in full (its module imported): the
+    others are named, for argparse to know them, and nothing more.
     """
     from racket import DEFAULT_RACKET
     from studies.sweeps import BALL_SPEED
@@ -168,14 +191,12 @@ def build_parser(parser_class=_Parser) -> argparse.ArgumentParser:
     )
     parser.add_argument("--version", action="version", version=f"racket-impact {__version__}")
     sub = parser.add_subparsers(dest="command", required=True, parser_class=parser_class)
-    for add in (
-        paper.add_paper, sweep.add_sweep, face.add_map, serve.add_serve, balls.add_collide,
-        balls.add_drop, balls.add_ball, rackets.add_modes, rackets.add_specs, app.add_app,
-        add_rerun, rackets.add_feel, face.add_sweetspots, compare.add_compare,
-        validate.add_validate, strings.add_strings, stroke.add_stroke, court.add_court,
-        bat.add_bat,
-    ):  # fmt: skip
-        add(sub)
+    for name, module in COMMANDS.items():
+        if command not in (None, name):
+            sub.add_parser(name)  # named only: the command line runs another
+            continue
+        home = importlib.import_module(f"{__name__}.{module}") if module else sys.modules[__name__]
+        getattr(home, f"add_{name}")(sub)
     return parser
 
 
@@ -190,7 +211,7 @@ def main(argv=None) -> int:
     words = [a for a in argv if a != "--debug"]
     with _reader_may_go():
         try:
-            parser = build_parser()
+            parser = build_parser(command=_command(words))
             args, extra = parser.parse_known_args(words)
             if extra:  # named with the command (argparse names the program alone)
                 parser.exit(
@@ -204,3 +225,11 @@ def main(argv=None) -> int:
             if "--debug" in argv:
                 raise
             return interrupted("racket-impact", err, written=False)
+
+
+def _command(words: list[str]) -> str | None:
+    """The subcommand a command line ``words`` (``--debug`` left out) runs, when its first
+    word names one; None otherwise (``--help``, ``--version``, a slip), for the whole parser
+    to answer.
+    """
+    return words[0] if words and words[0] in COMMANDS else None

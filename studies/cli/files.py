@@ -142,17 +142,26 @@ def _check_directory(flag: str, directory: Path, path) -> None:
 _RUN = {}  # the command line being run (main sets it), for the tables' sidecars
 
 
-def write_table(table: pd.DataFrame, path: str) -> None:
+def write_table(table: pd.DataFrame | dict, path: str) -> None:
     """Write ``table`` to ``path`` as CSV, JSON (records) or Parquet, by extension, and,
     when the command line writes it, its sidecar (:mod:`studies.provenance`); both are
-    put in place with the run's other files (:mod:`studies.outputs`).
+    put in place with the run's other files (:mod:`studies.outputs`).  A table given as its
+    columns (a dict, as :func:`studies.sweeps.sweep_columns` makes them) is written as the
+    DataFrame of them (:func:`studies.tables.frame`) would be, a CSV without pandas.
     """
     suffix = Path(path).suffix.lower()
     if suffix not in TABLE_FORMATS:
         raise ValueError(f"table file must end in {', '.join(TABLE_FORMATS)}, got {path!r}")
 
+    if isinstance(table, dict) and suffix != ".csv":  # JSON and Parquet: pandas writes them
+        from studies.tables import frame
+
+        table = frame(table)
+
     def writer(temp: str) -> None:
-        if suffix == ".csv":
+        if isinstance(table, dict):
+            _write_csv(table, temp)
+        elif suffix == ".csv":
             table.to_csv(temp, index=False)
         elif suffix == ".json":
             table.to_json(temp, orient="records", indent=2, double_precision=15)
@@ -166,6 +175,34 @@ def write_table(table: pd.DataFrame, path: str) -> None:
 
     outputs.write(path, writer)
     _sidecar(path)
+
+
+def _write_csv(columns: dict, path: str) -> None:
+    """Write ``columns`` (name -> 1-D array) to ``path`` as CSV, byte for byte as pandas'
+    ``DataFrame.to_csv(index=False)`` writes their table, without pandas: each value as
+    numpy prints it (pandas' own conversion: the shortest text that reads back the same
+    float), a missing float as nothing, through the standard csv writer with pandas'
+    settings (a newline ends each line, quotes where a value needs them).
+
+    Parameters
+    ----------
+    columns : dict
+        Column name -> 1-D array (numbers, booleans, or words of dtype object).
+    path : str
+        The file.
+    """
+    import csv
+
+    cells = []
+    for values in columns.values():
+        text = values.astype(str)
+        if values.dtype.kind == "f":
+            text[np.isnan(values)] = ""
+        cells.append(text)
+    with open(path, "w", newline="", encoding="utf-8") as out:
+        writer = csv.writer(out, lineterminator="\n")
+        writer.writerow(columns)
+        writer.writerows(zip(*cells, strict=True))
 
 
 def _sidecar(path) -> None:

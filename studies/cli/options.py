@@ -208,22 +208,36 @@ def speed_unit(args, *names: str) -> str:
     return "m/s"
 
 
+def with_columns(table, added: dict):
+    """``table`` with the ``added`` columns after its own (one of the same name replaced
+    where it is), as ``DataFrame.assign`` makes it.
+
+    Parameters
+    ----------
+    table : DataFrame or dict
+        The table, or its columns (name -> 1-D array: the sweep's, without pandas).
+    added : dict
+        Column name -> values.
+    """
+    return {**table, **added} if isinstance(table, dict) else table.assign(**added)
+
+
 def in_speed_unit(table, unit: str):
     """``table`` with each speed column [m/s] (``*_m_s``) also in ``unit``, the unit the user
     typed (``*_mph`` or ``*_kmh`` beside it, unless there already); as it is for m/s.
 
     Parameters
     ----------
-    table : DataFrame
-        A table whose speed columns are in m/s.
+    table : DataFrame or dict
+        A table whose speed columns are in m/s, or its columns (:func:`with_columns`).
     unit : str
         "m/s", "mph" or "km/h".
     """
     if unit == "m/s":
         return table
     suffix, size = SPEED_SUFFIXES[unit], SPEED_UNITS[unit]
-    return table.assign(**{
-        c.replace("_m_s", f"_{suffix}"): table[c] / size for c in table.columns
+    return with_columns(table, {
+        c.replace("_m_s", f"_{suffix}"): table[c] / size for c in list(table)
         if c.endswith("_m_s") and c.replace("_m_s", f"_{suffix}") not in table
     })  # fmt: skip
 
@@ -233,7 +247,7 @@ def _count(flag: str, value: int, low: int, high: int) -> int:
     return int(in_range(flag, value, low, high))
 
 
-def _print_table(table: pd.DataFrame, floatfmt: str = "{:.4g}") -> None:
+def _print_table(table: pd.DataFrame | dict, floatfmt: str = "{:.4g}") -> None:
     """Print ``table`` with human labels and units, at most 100 characters wide
     (:func:`studies.cli.show.print_table`).
     """

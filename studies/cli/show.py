@@ -191,6 +191,16 @@ are the widest cells of words of a table that would not fit in :data:`WIDTH` (do
 third of this)."""
 
 
+def _columns(table) -> dict:
+    """The columns of ``table`` as lists: a DataFrame's (its named index first, if any), or
+    a dict of 1-D arrays' (the sweep's, without pandas).
+    """
+    if isinstance(table, dict):
+        return {name: np.asarray(values).tolist() for name, values in table.items()}
+    frame = table.reset_index() if table.index.name is not None else table
+    return {name: frame[name].tolist() for name in frame.columns}
+
+
 def table_lines(table, floatfmt: str = "{:.4g}", width: int = WIDTH) -> list[str]:
     """The lines of a printed ``table``: its named index first (if any), each column under
     its label (:func:`label`, wrapped over up to three lines; a ``unit`` column, one unit
@@ -199,28 +209,27 @@ def table_lines(table, floatfmt: str = "{:.4g}", width: int = WIDTH) -> list[str
 
     Parameters
     ----------
-    table : DataFrame
-        The table (its own column names; SI units in them).
+    table : DataFrame or dict
+        The table (its own column names; SI units in them), or its columns (name -> 1-D
+        array).
     floatfmt : str
         Format of a float, e.g. "{:.4g}".
     width : int
         Widest line [characters].
     """
-    frame = table.reset_index() if table.index.name is not None else table
-    per_row = "unit" in frame.columns and frame.columns[0] != "unit"
+    data = _columns(table)
+    first = next(iter(data), None)
+    rows = len(data[first]) if data else 0
+    per_row = "unit" in data and first != "unit"
     if per_row:
-        units = frame["unit"].tolist()
-        frame = frame.drop(columns="unit")
-        first = frame.columns[0]
-        frame = frame.assign(
-            **{first: [_with_unit(n, u) for n, u in zip(frame[first], units, strict=True)]}
-        )
+        units = data.pop("unit")
+        data[first] = [_with_unit(n, u) for n, u in zip(data[first], units, strict=True)]
     per_row = per_row or any(  # a column of names with their units: "rebound e [-]"
-        frame[c].map(lambda v: isinstance(v, str) and v.endswith("]")).all() for c in frame
+        all(isinstance(v, str) and v.endswith("]") for v in values) for values in data.values()
     )
     raw = []  # (name, title, cells, numeric, the narrowest the column can be)
-    for name in frame.columns:
-        cells, numeric = _cells(frame[name].tolist(), floatfmt)
+    for name, values in data.items():
+        cells, numeric = _cells(values, floatfmt)
         title = LABELS.get(name, name) if per_row and numeric else label(str(name), numeric)
         narrowest = max(map(len, title.split())) if numeric else TEXT_WIDTH // 3
         raw.append((str(name), title, cells, numeric, narrowest))
@@ -266,7 +275,7 @@ def table_lines(table, floatfmt: str = "{:.4g}", width: int = WIDTH) -> list[str
     depth = max(len(c[1]) for c in shown)
     lines = lines_of([([""] * (depth - len(head)) + head, num, size)
                       for _, head, _, num, size in shown])  # fmt: skip
-    for i in range(len(frame)):
+    for i in range(rows):
         lines += lines_of([(cells[i], num, size) for _, _, cells, num, size in shown])
     if left:
         lines.append(
@@ -283,8 +292,8 @@ def print_table(table, floatfmt: str = "{:.4g}") -> None:
 
     Parameters
     ----------
-    table : DataFrame
-        The table.
+    table : DataFrame or dict
+        The table, or its columns (name -> 1-D array).
     floatfmt : str
         Format of a float, e.g. "{:.4g}".
     """

@@ -25,6 +25,7 @@ from studies.cli.options import (
     in_speed_unit,
     speed_unit,
     swing_and_speed,
+    with_columns,
 )
 from studies.cli.racket_options import (
     check_offset,
@@ -95,7 +96,7 @@ SHOWN_ROWS = 25
 def cmd_sweep(args) -> int:
     """``racket-impact sweep``."""
     from racket.solver import F1_MIN
-    from studies.sweeps import COLUMNS, F1_MAX, check_impacts, sweep
+    from studies.sweeps import COLUMNS, F1_MAX, check_impacts, sweep_columns
 
     check_outputs(
         tables=[("--out", args.out), ("--csv", args.csv), ("--json", args.json)],
@@ -126,7 +127,7 @@ def cmd_sweep(args) -> int:
         if note:
             print(note)
     with scale as executor:
-        table = sweep(
+        table = sweep_columns(  # its columns: no pandas, unless a plot or a JSON asks for it
             racket,
             ball,
             np.linspace(*ends, points),
@@ -139,7 +140,7 @@ def cmd_sweep(args) -> int:
             swing=swing,
             executor=executor,
         )
-    varying = list(table.columns[len(COLUMNS) :])  # the parameters that vary
+    varying = list(table)[len(COLUMNS) :]  # the parameters that vary
     tension_unit = "kg" if getattr(args, "tension_kg", None) is not None else (
         "lb" if args.tension_lb is not None else None)  # fmt: skip
     table = _in_units(table, unit, tension_unit)
@@ -151,20 +152,23 @@ def cmd_sweep(args) -> int:
     units = {"speed_m_s": f"speed_{suffix}",
              "tension_N": f"tension_{tension_unit}" if tension_unit else None}  # fmt: skip
     shown_grid = [units.get(c, c) or c for c in varying]
-    _print_table(_every_group_alike(table, varying)[list(dict.fromkeys(shown + shown_grid))])
+    rows = _every_group_alike(table, varying)
+    _print_table({c: rows[c] for c in dict.fromkeys(shown + shown_grid)})
     _say_recontacts(table)
-    best = table.loc[table["e"].idxmax()]
+    top = np.nanargmax(table["e"])  # the first of the largest, as pandas' idxmax
+    best = {c: values[top] for c, values in table.items()}
     at = ", ".join(f"{label(c)} {_value(best[c])}" for c in shown_grid)
     print(
         f"\nlargest e = {best['e']:.4f} at {best['position_from_tip_cm']:.1f} cm from the tip"
-        f"{f' ({at})' if at else ''} ({len(table)} impacts)"
+        f"{f' ({at})' if at else ''} ({table['e'].size} impacts)"
     )
     for path in filter(None, (args.out, args.csv, args.json)):
         write_table(table, path)
     if args.plot:
         from studies.plots import plot_cor_along_racket
+        from studies.tables import frame
 
-        save_plot(plot_cor_along_racket(table, racket, conditions=conditions), args.plot)
+        save_plot(plot_cor_along_racket(frame(table), racket, conditions=conditions), args.plot)
     return 0
 
 
@@ -173,24 +177,25 @@ def _value(value) -> str:
     return f"{value:.4g}" if isinstance(value, float | np.floating) else str(value)
 
 
-def _every_group_alike(table, varying: list[str]):
-    """The rows of a sweep to print: at most about :data:`SHOWN_ROWS`, the same impact
-    points for every combination of the ``varying`` parameters; a line says so when rows
-    are left out.
+def _every_group_alike(table: dict, varying: list[str]) -> dict:
+    """The rows of a sweep (its columns) to print: at most about :data:`SHOWN_ROWS`, the
+    same impact points for every combination of the ``varying`` parameters; a line says so
+    when rows are left out.
     """
-    positions = np.unique(table["position_from_tip_m"].to_numpy())
-    groups = max(1, len(table) // len(positions))
+    positions = np.unique(table["position_from_tip_m"])
+    count = table["position_from_tip_m"].size
+    groups = max(1, count // len(positions))
     keep = max(2, SHOWN_ROWS // groups)
     if len(positions) <= keep:
         return table
     chosen = positions[np.unique(np.linspace(0, len(positions) - 1, keep).round().astype(int))]
-    shown = table[np.isin(table["position_from_tip_m"].to_numpy(), chosen)]
+    kept = np.isin(table["position_from_tip_m"], chosen)
     each = " and ".join(label(c).split(" [")[0] for c in varying)
     print(
-        f"({len(shown)} of {len(table)} rows shown: the same {len(chosen)} of {len(positions)} "
-        f"impact points{f' for each {each}' if each else ''}; --out writes all)"
+        f"({np.count_nonzero(kept)} of {count} rows shown: the same {len(chosen)} of "
+        f"{len(positions)} impact points{f' for each {each}' if each else ''}; --out writes all)"
     )
-    return shown
+    return {name: values[kept] for name, values in table.items()}
 
 
 def _ends(args, racket) -> tuple[list[float], str]:
@@ -231,10 +236,10 @@ def _ends(args, racket) -> tuple[list[float], str]:
     return [end / 100 for end in ends], note
 
 
-def _in_units(table, unit: str, tension_unit: str | None):
-    """``table`` with its speeds also in ``unit`` (as the user typed them:
-    :func:`studies.cli.options.in_speed_unit`) and its tensions also in ``tension_unit``
-    ("lb" or "kg", as typed; None: N only).
+def _in_units(table: dict, unit: str, tension_unit: str | None) -> dict:
+    """A sweep's columns ``table`` with its speeds also in ``unit`` (as the user typed
+    them: :func:`studies.cli.options.in_speed_unit`) and its tensions also in
+    ``tension_unit`` ("lb" or "kg", as typed; None: N only).
     """
     from common.units import GRAVITY, LB
 
@@ -242,17 +247,20 @@ def _in_units(table, unit: str, tension_unit: str | None):
     if tension_unit is None or "tension_N" not in table:
         return table
     size = {"lb": LB, "kg": GRAVITY}[tension_unit]
-    return table.assign(**{f"tension_{tension_unit}": table["tension_N"] / size})
+    return with_columns(table, {f"tension_{tension_unit}": table["tension_N"] / size})
 
 
-def _say_recontacts(table) -> None:
-    """One line under a printed table when some impacts touched the strings again."""
-    count = int((table["recontacts"] > 0).sum())
+def _say_recontacts(table: dict) -> None:
+    """One line under a printed sweep (its columns ``table``) when some impacts touched the
+    strings again.
+    """
+    again = table["recontacts"] > 0
+    count = int(again.sum())
     if count:
-        where = 100 * table.loc[table["recontacts"] > 0, "position_from_tip_m"]
+        where = 100 * table["position_from_tip_m"][again]
         print(
             textwrap.fill(
-                f"re-contacts: at {count} of the {len(table)} impacts ({where.min():.1f}-"
+                f"re-contacts: at {count} of the {again.size} impacts ({where.min():.1f}-"
                 f"{where.max():.1f} cm from the tip) the ball left the strings and was caught "
                 "again by the vibrating frame: e there sums both contacts, and the contact "
                 "lasts longer",
