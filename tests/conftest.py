@@ -14,6 +14,12 @@
   controller starts that second process; it writes a marker file when it ends, whether it
   compiled or failed, and each worker waits for the marker before its first test that may
   run the kernel.
+* One BLAS thread in every process of the suite (``BLAS_THREADS``, set before numpy loads
+  its BLAS, and inherited by the processes the tests start): the suite already runs one
+  worker a core, beside the kernel's own threads, and OpenBLAS's idle threads spin while
+  they wait, so that on a busy machine a racket's modes (a dense eigenproblem, built for
+  every racket) took 30 times the CPU on two threads as on one.  One thread is also what
+  the studies run on (:func:`racket.solver.one_blas_thread`): the same bits in every test.
 """
 
 import os
@@ -24,6 +30,15 @@ import time
 
 import pytest
 from hypothesis import Phase, settings
+
+BLAS_THREADS = ("OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS")
+"""The variables that limit BLAS to one thread in this process and in those it starts."""
+for _variable in BLAS_THREADS:
+    os.environ[_variable] = "1"
+if "numpy" in sys.modules:  # loaded before this file (by a plugin): limit it now
+    from threadpoolctl import threadpool_limits
+
+    threadpool_limits(limits=1, user_api="blas")
 
 settings.register_profile(
     "racket-impact",

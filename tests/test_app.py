@@ -442,6 +442,11 @@ def test_the_page_in_a_real_browser(served):
         swung = min(again["serve_plot"], again["exit_plot"])
         assert swung > 0 and all(n <= 1 < swung or n == 0 for p, n in again.items()
                                  if p not in ("serve_plot", "exit_plot")), again  # fmt: skip
+        # the card's text may follow the plots (seen on a loaded machine): wait for it
+        page.wait_for_function(
+            "() => document.getElementById('card_serve')?.innerText.includes('80 mph head speed')",
+            timeout=60_000,
+        )
         assert "80 mph head speed" in page.inner_text("#card_serve")
         browser.close()
     assert outside == [], f"the page fetched from outside the machine: {outside}"

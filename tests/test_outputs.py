@@ -571,12 +571,25 @@ def test_every_command_is_replayable_or_refused_and_its_outputs_known():
         assert "out" in args._writes and set(args._writes) == dests, command
 
 
-def _edited(folder: Path, edit) -> Path:
-    """A table and its sidecar in ``folder``, the sidecar then edited by ``edit`` (given the
-    record; returns the new record, or bytes for the file)."""
+@pytest.fixture(scope="module")
+def ball_run(tmp_path_factory):
+    """``BALL --out FOLDER/t.csv`` run once for the module (its ball's bounces take a second
+    or two): the folder it ran in, its table's bytes and its sidecar's text."""
+    folder = tmp_path_factory.mktemp("ball-run")
     assert main([*BALL, "--out", str(folder / "t.csv")]) == 0
+    return folder, (folder / "t.csv").read_bytes(), (folder / "t.csv.meta.json").read_text()
+
+
+def _edited(folder: Path, edit, ball_run) -> Path:
+    """A table and its sidecar in ``folder``, as ``BALL --out folder/t.csv`` writes them
+    (``ball_run``'s, the folder it names made ``folder``), the sidecar then edited by ``edit``
+    (given the record; returns the new record, or bytes for the file)."""
+    made, table, sidecar = ball_run
+    (folder / "t.csv").write_bytes(table)
     path = folder / "t.csv.meta.json"
-    record = edit(json.loads(path.read_text()))
+    where = [json.dumps(str(f / "t.csv"))[1:-1] for f in (made, folder)]  # as the JSON has it
+    assert sidecar.count(where[0]) == 2  # the command's --out and the options' out
+    record = edit(json.loads(sidecar.replace(*where)))
     path.write_bytes(record if isinstance(record, bytes) else json.dumps(record).encode())
     return path
 
@@ -663,11 +676,13 @@ EDITS = {
 
 
 @pytest.mark.parametrize("name", EDITS)
-def test_an_edited_sidecar_gets_one_line_and_status_2(name, tmp_path, capsys, monkeypatch):
+def test_an_edited_sidecar_gets_one_line_and_status_2(
+    name, ball_run, tmp_path, capsys, monkeypatch
+):
     edit, message = EDITS[name]
     monkeypatch.chdir(tmp_path)
     monkeypatch.setattr(cli, "cmd_app", lambda args: pytest.fail("a server was started"))
-    _edited(tmp_path, edit)
+    _edited(tmp_path, edit, ball_run)
     capsys.readouterr()
     before = _listing(tmp_path)
     start = time.monotonic()
