@@ -9,6 +9,7 @@ import atexit
 import gc
 import sys
 
+from common.blas import one_blas_thread_unless_set
 from studies.outputs import interrupted
 
 
@@ -19,9 +20,11 @@ def main() -> int:
     The process ends with the command: at its exit, every object is frozen
     (:func:`gc.freeze`) first, so that the interpreter's last garbage collections pass
     over none of what numba, scipy and the rest loaded (a third of a second after a sweep;
-    its files are closed by then, each by the code that wrote it).
+    its files are closed by then, each by the code that wrote it).  BLAS runs on one
+    thread unless the environment says otherwise (:mod:`common.blas`).
     """
     atexit.register(gc.freeze)
+    one_blas_thread_unless_set()  # before numpy loads (common.blas)
     try:
         from studies.cli import main as run
 

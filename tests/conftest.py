@@ -31,9 +31,9 @@ import time
 import pytest
 from hypothesis import Phase, settings
 
-BLAS_THREADS = ("OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS")
-"""The variables that limit BLAS to one thread in this process and in those it starts."""
-for _variable in BLAS_THREADS:
+from common.blas import BLAS_THREADS
+
+for _variable in BLAS_THREADS:  # (as the command line, common.blas; set whatever was set)
     os.environ[_variable] = "1"
 if "numpy" in sys.modules:  # loaded before this file (by a plugin): limit it now
     from threadpoolctl import threadpool_limits

@@ -26,6 +26,12 @@ the unloading curve's set-back after the largest force F_max.  Loading (u above 
 w = u; unloading, the set-back curve; beyond its set-back (u < 0) the bed pulls back,
 losslessly, about the set it took (w = u + delta, F < 0), as a membrane does on either side.
 A contact that never loads past F_max retraces its unloading curve, so it loses nothing more.
+
+When the ball leaves within a step, the kernels step the frame's state back to that moment
+(as on a massless bed) and keep the bed mass's at the step's end: the bed's force on the two
+over the rest of the step cancels in their momentum as one body (the dc motion,
+:func:`racket.solver.budget.split`), and a hand's force over it stays out of e, which is then
+second order in the step whatever holds the frame.
 """
 
 from __future__ import annotations

@@ -275,16 +275,13 @@ def _one_impact(frame, points, ball, controls, out, p):
             sep_contact = (step - 1 + tau) * dt if left and not sine else (step - 1) * dt
             if asymptotic:
                 sep_contact = step * dt
-            if massed:  # the bed still pushes the frame: the step's end for all but the ball
-                sep_damping = damping_loss
-                sep_s[:] = s
+            step_back(frame.blocks, s, back, sep_s)
+            if massed:  # the bed mass at the step's end: see racket.solver.bed_mass_kernel
                 sep_bed_vel, sep_f2_peak = qd, f2_peak
                 sep_elastic = (
                     bed_elastic(bed, k_bed, memo, 0, f2, f2_peak)
                     + 0.5 * (points.series[p] - inv_ks) * f2 * f2
                 )  # and the modes left out (fmt: skip)
-            else:
-                step_back(frame.blocks, s, back, sep_s)
         if asymptotic:
             stop_at = step  # common speed approached asymptotically (no fold)
             break

@@ -190,16 +190,13 @@ def after_step(frame, points, ball, controls, out, w, v, flags, scratch, i, step
         summary[layout.SINE_WORK] = v[tl.WORK, i]
         contact = (step - 1 + tau) * dt if left and not sine else (step - 1) * dt
         summary[layout.T_CONTACT] = step * dt if asymptotic else contact
-        if massed:  # the bed still pushes the frame: the step's end for all but the ball
-            summary[layout.DAMPING_LOSS] = v[tl.DAMPING, i]
-            out.state[p] = scratch
+        step_back(frame.blocks, scratch, back, out.state[p])
+        if massed:  # the bed mass at the step's end: see racket.solver.bed_mass_kernel
             summary[layout.BED_VEL], summary[layout.BED_PEAK] = v[tl.QD, i], v[tl.F2_PEAK, i]
             f2 = v[tl.F2, i]
             summary[layout.BED_ELASTIC] = bed_elastic(bed, 1.0 / points.inv_ks[p], memo, i, f2,
                                                v[tl.F2_PEAK, i]) + 0.5 * (
                 points.series[p] - points.inv_ks[p]) * f2 * f2  # fmt: skip
-        else:
-            step_back(frame.blocks, scratch, back, out.state[p])
     if asymptotic:
         flags[tl.STOP_AT, i] = step  # common speed approached asymptotically (no fold)
         return
