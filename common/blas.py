@@ -19,6 +19,7 @@ BLAS_THREADS = ("OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS")
 
 def one_blas_thread_unless_set() -> None:
     """Each of :data:`BLAS_THREADS` set to 1 where the environment does not set it (before
-    numpy loads its BLAS; no effect after)."""
+    numpy loads its BLAS; no effect after).
+    """
     for variable in BLAS_THREADS:
         os.environ.setdefault(variable, "1")

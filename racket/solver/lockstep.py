@@ -4,12 +4,15 @@ The same scheme and the same numbers as :func:`racket.solver.kernel.run_impacts`
 :mod:`racket.solver.kernel`), laid out for the machine: the impacts of a tile (``TILE`` of them) sit
 side by side along arrays, so that each pass of a step (the free step of every block, the
 force of a linear ball, the force's response, the dissipated power, the bookkeeping) is a
-loop over the impacts that LLVM vectorises.  What happens rarely, or per impact only, is
-fixed up impact by impact with the scalar kernel's own functions: a non-linear law's Newton
-iteration and the unhappy ball's return mapping, the contact opening within its step, the
-moment the ball leaves, the test that it has left for good, the histories.  An impact that
-has ended leaves the tile (the last one takes its place), so the passes run over the impacts
-still in contact or watched.
+loop over the impacts that LLVM vectorises.  A power-law ball's Newton iteration, on the
+paper's bed (:mod:`racket.solver.lockstep_ball`) or on a bed with a mass
+(:mod:`racket.solver.lockstep_massed`), runs over the tile too, a pass an iteration, each
+impact stopping by its own rule.  What happens rarely, or per impact only, is fixed up
+impact by impact with the scalar kernel's own functions: the force on a massless bed that
+stiffens or loses energy, the unhappy ball's return mapping, the contact opening within its
+step, the moment the ball leaves, the test that it has left for good, the histories.  An
+impact that has ended leaves the tile (the last one takes its place), so the passes run
+over the impacts still in contact or watched.
 
 The results are bit-identical to the scalar kernel's: every impact goes through the same
 floating-point operations in the same order (numba compiles without fast-math, so LLVM
@@ -28,6 +31,8 @@ from racket.solver.bed_kernel import bed_active
 from racket.solver.bed_mass_kernel import BED_MEMO_ROWS
 from racket.solver.contact_kernel import MEMO_ROWS, contact_force
 from racket.solver.layout import H_FORCE, LINEAR, SINE
+from racket.solver.lockstep_ball import BALL_ROWS, ball_pass
+from racket.solver.lockstep_massed import LANE_ROWS, massed_pass
 
 
 @njit(cache=True, nogil=True)
@@ -44,13 +49,16 @@ def run_lockstep(frame, points, ball, controls, out, start, stop, step):
     ids = np.arange(start, stop, step)
     tiles = -(-ids.size // tl.TILE)
     size = -(-ids.size // max(tiles, 1))  # tiles of even size: no narrow last one
+    # the force iterations' scratch (racket.solver.lockstep_massed, lockstep_ball)
+    lanes = np.empty((max(LANE_ROWS, BALL_ROWS), tl.TILE))
+    picks = np.empty(tl.TILE, dtype=np.int64)
     for first in range(0, ids.size, size):
         _tile(frame, points, ball, controls, out, ids[first : first + size], w, v, flags, scratch,
-              memo)  # fmt: skip
+              memo, lanes, picks)  # fmt: skip
 
 
 @njit(cache=True)
-def _tile(frame, points, ball, controls, out, ids, w, v, flags, scratch, memo):
+def _tile(frame, points, ball, controls, out, ids, w, v, flags, scratch, memo, lanes, picks):
     """Impacts ``ids`` (at most TILE) from first touch until each has left for good."""
     n = ids.size
     nb = frame.trans.shape[0]
@@ -97,23 +105,24 @@ def _tile(frame, points, ball, controls, out, ids, w, v, flags, scratch, memo):
         _free_blocks(trans, s0, s1, gin0_0, gin0_1, out_d0, out_d1, f_frame, z, n)
         # The force at the step's end.
         if massed:
-            for i in range(n):
-                k_bed = 1.0 / points.inv_ks[flags[tl.IMPACT, i]]
-                slot.massed_force(law, params, bed, k_bed, v, i, dt, h, memo)
+            massed_pass(law, params, bed, v, memo, lanes, picks, dt, h, n)
         elif law == LINEAR and plain:
             _linear_force(u_p, z, c0, c1, c2, f_peak, f_new, n)
         else:
             for i in range(n):
                 z[i] = u_p[i] - z[i]  # z_pred
-            for i in range(n):
-                if sine:
-                    slot.sine_force(params[0], controls, out, v, flags, i, step)
-                else:
-                    coef = (c0[i], c1[i], c2[i])
-                    guess = 2.0 * force[i] - f_before[i]
-                    inv_ks = points.inv_ks[flags[tl.IMPACT, i]]
-                    f_new[i] = contact_force(law, params, coef, bed, inv_ks, v[tl.A, i], z[i],
-                                             f_peak[i], guess, memo, i)  # fmt: skip
+            if plain and not sine:  # a power law on the paper's bed
+                ball_pass(law, params, v, memo, lanes, picks, n)
+            else:
+                for i in range(n):
+                    if sine:
+                        slot.sine_force(params[0], controls, out, v, flags, i, step)
+                    else:
+                        coef = (c0[i], c1[i], c2[i])
+                        guess = 2.0 * force[i] - f_before[i]
+                        inv_ks = points.inv_ks[flags[tl.IMPACT, i]]
+                        f_new[i] = contact_force(law, params, coef, bed, inv_ks, v[tl.A, i],
+                                                 z[i], f_peak[i], guess, memo, i)  # fmt: skip
         # The response to the force at the step's end.
         _ball_force(g10, g11, u_p, ud_p, f_new, u, ud, tau, n)
         _force_blocks(s0, s1, gin1_0, gin1_1, f_frame_new, n)

@@ -1,6 +1,6 @@
 """The lockstep kernel's work on one impact (slot) of its tile (:mod:`racket.solver.lockstep`):
 setting a slot up, what happens rarely or per impact only (the unhappy ball's return mapping,
-the contact opening within its step, a bed with a mass's forces, the moment the ball leaves,
+the contact opening within its step, the ball leaving a bed with a mass, the moment it leaves,
 the test that it has left for good, the histories), and moving a slot, each as
 :func:`racket.solver.kernel._one_impact` does it, with the same numbers.
 """
@@ -17,7 +17,6 @@ from racket.solver.bed_mass_kernel import (
     bed_deflection,
     bed_elastic,
     bed_gap,
-    massed_forces,
     opening_fraction,
 )
 from racket.solver.contact_kernel import contact_compression
@@ -68,6 +67,7 @@ def start_slot(frame, points, ball, out, p, i, w, v, flags, record, h):
         a1 = -ball.g1[0] + h
         coef1 = force_coefficients(ball.law, ball.params, a1)
         v[tl.A1, i], v[tl.C1_0, i], v[tl.C1_1, i], v[tl.C1_2, i] = a1, coef1[0], coef1[1], coef1[2]
+        v[tl.K_BED, i] = 1.0 / points.inv_ks[p]
         v[tl.COMP, i] = (
             h
             + (points.series[p] - points.inv_ks[p])
@@ -252,28 +252,6 @@ def move_slot(w, v, flags, memo, src, dst, nb):
         v[r, dst] = v[r, src]
     for r in range(tl.N_FLAGS):
         flags[r, dst] = flags[r, src]
-
-
-@njit(cache=True)
-def massed_force(law, params, bed, k_bed, v, i, dt, h, memo):
-    """Slot ``i``'s forces on a bed with a mass, the ball's and the bed's (as
-    :func:`racket.solver.kernel._one_impact`), and the bed mass's step.
-    """
-    force, f2 = v[tl.FORCE, i], v[tl.F2, i]
-    q_p = v[tl.Q, i] + dt * v[tl.QD, i] + 2.0 * h * (force - f2)
-    qd_p = v[tl.QD, i] + 0.5 * dt * (force - f2) / bed[2]
-    f2_guess = 2.0 * f2 - v[tl.F2_BEFORE, i]  # the bed's force extrapolated
-    z_pred = v[tl.U_P, i] - q_p
-    coef = (v[tl.C1_0, i], v[tl.C1_1, i], v[tl.C1_2, i])
-    f_new, f2_new = massed_forces(law, params, coef, v[tl.A1, i], bed, k_bed,
-                                  v[tl.COMP, i], h, z_pred, q_p - v[tl.Z, i], v[tl.F_PEAK_, i],
-                                  v[tl.F2_PEAK, i], 2.0 * force - v[tl.F_BEFORE, i], f2_guess, memo,
-                                  i)  # fmt: skip
-    v[tl.Z, i] = z_pred + h * f2_guess
-    v[tl.Q, i] = q_p + h * (f_new - f2_new)
-    v[tl.QD, i] = qd_p + 0.5 * dt * (f_new - f2_new) / bed[2]
-    v[tl.F_NEW, i] = f_new
-    v[tl.F2_NEW, i] = f2_new
 
 
 @njit(cache=True)

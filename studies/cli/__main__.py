@@ -1,5 +1,6 @@
 """``python -m studies.cli``: the ``racket-impact`` command line (BLAS on one thread unless
-the environment says otherwise, as :mod:`studies.entry`)."""
+the environment says otherwise, as :mod:`studies.entry`).
+"""
 
 import sys
 
