@@ -95,6 +95,27 @@ def ball_compression(law, params, f, f_max):
     return _branch(law, params, f, f_max, unloading_exponent(law, params, f_max))[0]
 
 
+@njit(cache=True, inline="always")
+def bracketed_newton(f, resid, slope, lo, hi):
+    """One safeguarded Newton step from the force ``f`` [N] whose residual ``resid`` (not
+    zero) rises with the force at ``slope``: the bracket [lo, hi] narrowed to the side of
+    the root, the step (or the bracket's middle where the step leaves it), the bracket, and
+    whether the iteration has settled (a Newton step within :data:`NEWTON_SETTLED` of the
+    force, or any within 1e-15).  Inlined where it is called, so that the lockstep kernel's
+    loop over a tile vectorises with it (:mod:`racket.solver.lockstep_ball`).
+    """
+    if resid < 0.0:
+        lo = f
+    else:
+        hi = f
+    f_new = f - resid / slope
+    newton = lo < f_new < hi
+    if not newton:
+        f_new = 0.5 * (lo + hi)
+    step = abs(f_new - f)
+    return f_new, lo, hi, step <= 1e-15 * f_new or (newton and step <= NEWTON_SETTLED * f_new)
+
+
 @njit(cache=True)
 def _branch_force(target, c, f_lo, f_hi, f_max, law, params, b, guess):
     """Solve g(F) + c F = target for F in [f_lo, f_hi] (g the ball's branch, :func:`_branch`),
@@ -108,16 +129,8 @@ def _branch_force(target, c, f_lo, f_hi, f_max, law, params, b, guess):
         resid = g + c * f - target
         if resid == 0.0:  # (the bracket would close on f, and Newton's step leave it)
             return f
-        if resid < 0.0:
-            f_lo = f
-        else:
-            f_hi = f
-        f_new = f - resid / (dg + c)
-        newton = f_lo < f_new < f_hi
-        if not newton:
-            f_new = 0.5 * (f_lo + f_hi)
-        step = abs(f_new - f)
-        if step <= 1e-15 * f_new or (newton and step <= NEWTON_SETTLED * f_new):
+        f_new, f_lo, f_hi, settled = bracketed_newton(f, resid, dg + c, f_lo, f_hi)
+        if settled:
             return f_new
         f = f_new
     return f

@@ -126,6 +126,26 @@ def bed_force(k, s, loss, comp, z, f_max, guess, memo, i):
     return k * u * (1.0 + s * u * u), u
 
 
+@njit(cache=True, inline="always")
+def bed_residual(k, s, u, delta, u_max, rate, comp, r0, h, f1):
+    """The bed's equation at its loading-curve deflection ``u`` [m] (see the module
+    docstring): its force F2 [N] and dF2/du [N/m], and w_bed(u) + comp F2 - r0 - h F1 [m]
+    and its slope in u [-], on the loading curve, the set-back one (below ``u_max``, set back
+    by ``delta`` - ``rate`` F2) or beyond the set-back (u < 0).  Inlined where it is called,
+    so that the lockstep kernel's loop over a tile vectorises with it
+    (:mod:`racket.solver.lockstep_massed`).
+    """
+    uu = u * u
+    f2, df2 = k * u * (1.0 + s * uu), k * (1.0 + 3.0 * s * uu)
+    w, dw = u, 1.0  # the bed's deflection: loading, set-back curve, beyond the set-back
+    if u < 0.0:
+        w += delta
+    elif u < u_max:
+        w += delta - rate * f2
+        dw -= rate * df2
+    return f2, df2, w + comp * f2 - r0 - h * f1, dw + comp * df2
+
+
 @njit(cache=True)
 def massed_forces(law, params, coef, a1, bed, k, comp, h, x0, r0, f1_max, f2_max, guess, f2_guess,
                   memo, i):  # fmt: skip
@@ -173,15 +193,7 @@ def massed_forces(law, params, coef, a1, bed, k, comp, h, x0, r0, f1_max, f2_max
     for _ in range(_FUSED_STEPS):
         if not f1 > 0.0:
             break
-        uu = u * u
-        f2, df2 = k * u * (1.0 + s * uu), k * (1.0 + 3.0 * s * uu)
-        w, dw = u, 1.0  # the bed's deflection: loading, set-back curve, beyond the set-back
-        if u < 0.0:
-            w += delta
-        elif u < u_max:
-            w += delta - rate * f2
-            dw -= rate * df2
-        r2, d2 = w + comp * f2 - r0 - h * f1, dw + comp * df2
+        f2, df2, r2, d2 = bed_residual(k, s, u, delta, u_max, rate, comp, r0, h, f1)
         g, dg = _ball_at(law, params, f1, f1_max, memo, i)
         r1, d1 = g + a1 * f1 - x0 - h * f2, dg + a1
         step1 = -(r1 * d2 + h * df2 * r2) / (d1 * d2 - h * h * df2)

@@ -20,7 +20,7 @@ import math
 from numba import njit
 
 from racket.solver import tile_layout as tl
-from racket.solver.ball_kernel import NEWTON_SETTLED, _loading, unloading_exponent
+from racket.solver.ball_kernel import _loading, bracketed_newton, unloading_exponent
 from racket.solver.layout import STIFFENING
 
 # Rows of the tile's scratch (``lanes``).
@@ -146,15 +146,6 @@ def _newton_step(a, target, f, lo, hi, g, dg, run, n):
         if going:
             resid = g_i + a_i * f_i - target_i
             if resid != 0.0:  # (zero: the bracket would close on f, Newton's step leave it)
-                if resid < 0.0:
-                    lo_i = f_i
-                else:
-                    hi_i = f_i
-                f_new = f_i - resid / (dg_i + a_i)
-                newton = lo_i < f_new < hi_i
-                if not newton:
-                    f_new = 0.5 * (lo_i + hi_i)
-                step = abs(f_new - f_i)
-                settled = step <= 1e-15 * f_new or (newton and step <= NEWTON_SETTLED * f_new)
-                f_i, still = f_new, 0.0 if settled else 1.0
+                f_i, lo_i, hi_i, settled = bracketed_newton(f_i, resid, dg_i + a_i, lo_i, hi_i)
+                still = 0.0 if settled else 1.0
         f[i], lo[i], hi[i], run[i] = f_i, lo_i, hi_i, still

@@ -39,6 +39,7 @@ from racket.solver.bed_mass_kernel import (
     _ball_memo,
     _remember,
     bed_force,
+    bed_residual,
 )
 from racket.solver.layout import LINEAR, STIFFENING
 
@@ -234,15 +235,7 @@ def _newton_step(x_lim, f_c, s, h, comp, a1, u_max, delta, rate, k, x0, r0, hype
         if going:
             if hyperbola[i] != 0.0:
                 g, dg = x_lim * f / (f + f_c), x_lim * f_c / ((f + f_c) * (f + f_c))
-            xx = x * x
-            f2, df2 = k_i * x * (1.0 + s * xx), k_i * (1.0 + 3.0 * s * xx)
-            w, dw = x, 1.0  # the bed's deflection: loading, set-back curve, beyond the set-back
-            if x < 0.0:
-                w += delta_i
-            elif x < u_max_i:
-                w += delta_i - rate_i * f2
-                dw -= rate_i * df2
-            r2, d2 = w + c_i * f2 - r0_i - h * f, dw + c_i * df2
+            f2, df2, r2, d2 = bed_residual(k_i, s, x, delta_i, u_max_i, rate_i, c_i, r0_i, h, f)
             r1, d1 = g + a1_i * f - x0_i - h * f2, dg + a1_i
             step1 = -(r1 * d2 + h * df2 * r2) / (d1 * d2 - h * h * df2)
             step2 = (h * step1 - r2) / d2
