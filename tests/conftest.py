@@ -20,6 +20,11 @@
   they wait, so that on a busy machine a racket's modes (a dense eigenproblem, built for
   every racket) took 30 times the CPU on two threads as on one.  One thread is also what
   the studies run on (:func:`racket.solver.one_blas_thread`): the same bits in every test.
+* What several tests simulate alike is simulated once a process (a worker) and shared: the
+  validation table of every comparison (``validation_rows``, and ``validation_once`` for
+  ``racket-impact validate``) and a ball's rigid-wall bounce table (``bounce_once``, for
+  ``racket-impact ball``).  A test that asks for them runs the command as before; only the
+  simulation behind it is not repeated.
 """
 
 import os
@@ -127,3 +132,59 @@ def workdir(tmp_path, monkeypatch):
     """An empty folder made the working directory (where the relative paths typed land)."""
     monkeypatch.chdir(tmp_path)
     return tmp_path
+
+
+@pytest.fixture(scope="session")
+def validation_rows():
+    """``studies.validation.validation_table()``, run once in this process (10-15 s of CPU):
+    the modules that read it take a copy each (their ``table``), and :func:`validation_once`
+    hands it to ``racket-impact validate``."""
+    from studies.validation.table import validation_table  # not the name a test replaces
+
+    return validation_table()
+
+
+@pytest.fixture
+def validation_once(monkeypatch, request):
+    """``studies.validation.validation_table()`` (every comparison, what ``racket-impact
+    validate`` prints) served from :func:`validation_rows`, a copy each call, run at the first
+    such call; a call with its own comparisons still runs them."""
+    import studies.validation as validation
+    from studies.validation.table import validation_table
+
+    def once(items=None):
+        if items is None:
+            return request.getfixturevalue("validation_rows").copy()
+        return validation_table(items)
+
+    monkeypatch.setattr(validation, "validation_table", once)
+
+
+@pytest.fixture(scope="session")
+def _bounce_tables():
+    """The rigid-wall bounce tables this process has simulated, by ball and speeds."""
+    return {}
+
+
+@pytest.fixture
+def bounce_once(monkeypatch, _bounce_tables):
+    """``studies.bounce.rigid_bounce_table`` simulated once a process for each ball and
+    speeds (``racket-impact ball``'s table: the default one, 10 impacts, takes 10 s of
+    CPU), a copy each call; a ball that cannot be a key is simulated every time."""
+    import numpy as np
+
+    import studies.bounce as bounce
+
+    simulate = bounce.rigid_bounce_table
+
+    def once(ball, speeds=bounce.DEFAULT_SPEEDS):
+        try:
+            key = (ball, tuple(float(v) for v in np.atleast_1d(speeds)))
+            table = _bounce_tables.get(key)
+        except (TypeError, ValueError):  # no key: let the function say what is wrong
+            return simulate(ball, speeds)
+        if table is None:
+            table = _bounce_tables[key] = simulate(ball, speeds)
+        return table.copy()
+
+    monkeypatch.setattr(bounce, "rigid_bounce_table", once)

@@ -234,7 +234,7 @@ def test_ball_command_lists_the_presets_and_reports_the_static_test_apart(capsys
     assert "ITF forward" not in capsys.readouterr().out  # no ITF type admits it
 
 
-def test_ball_command_marks_the_rows_beyond_the_calibration(capsys, tmp_path):
+def test_ball_command_marks_the_rows_beyond_the_calibration(capsys, tmp_path, bounce_once):
     """Issue 45: the real balls are calibrated up to 30 m/s (the assumed COR there); the rows
     of ``racket-impact ball`` above it say they are the law's extrapolation, in the printed
     table, the table written and its conditions (the sidecar's); a run within it, or of a

@@ -49,14 +49,22 @@ BASEBALLS = ("baseball", "baseball-low-speed", "baseball-fig2", "mlb-low", "mlb-
 SOFTBALLS = tuple(f"softball-{round(100 * c)}-{lb:g}" for lb in (375, 525) for c in SOFTBALL_CORS)
 
 
+class _Bounces(dict):
+    """A preset's bounce on a rigid wall, ``[name, speed]``, simulated the first time it is
+    asked for (``collide``) and kept."""
+
+    def __missing__(self, key):
+        name, v = key
+        self[key] = collide(BASEBALL_PRESETS[name].ball(), WALL, v)
+        return self[key]
+
+
 @pytest.fixture(scope="module")
 def bounces():
-    """Every preset's bounce on a rigid wall at each of :data:`SPEEDS` (simulated)."""
-    return {
-        (name, v): collide(preset.ball(), WALL, v)
-        for name, preset in BASEBALL_PRESETS.items()
-        for v in SPEEDS
-    }
+    """Every preset's bounce on a rigid wall at each of :data:`SPEEDS`, each simulated when a
+    test first reads it (35 s of CPU for them all: a test reads only its own presets', and
+    under pytest-xdist each worker simulates only what its tests read)."""
+    return _Bounces()
 
 
 def test_the_presets_are_the_ones_named():

@@ -184,15 +184,16 @@ def _nathan_discrete(diameters, dz, split):
     n = d.size
     area, second = np.pi * d**2 / 4, np.pi * d**4 / 64
     k = np.zeros((2 * n, 2 * n))
+    shear = np.array([-1 / dz, 1 / dz, 0.5 / dz, 0.5 / dz])
+    bend = np.array([-1 / dz**2, 1 / dz**2])
     for i in range(n - 1):  # strain energy of link i + 1/2: shear, then bending
-        shear = np.zeros(2 * n)
-        shear[[i, i + 1, n + i, n + i + 1]] = [-1 / dz, 1 / dz, 0.5 / dz, 0.5 / dz]
-        bend = np.zeros(2 * n)
-        bend[[n + i, n + i + 1]] = [-1 / dz**2, 1 / dz**2]
+        # each a rank-one term on the link's own degrees of freedom (the rest of the
+        # outer product is zero): added as its 4x4 and 2x2 blocks
+        sheared, bent = [i, i + 1, n + i, n + i + 1], [n + i, n + i + 1]
         a = 0.5 * (area[i] + area[i + 1])
         j = 2.0 / (1.0 / second[i] + 1.0 / second[i + 1])
-        k += WOOD_SHEAR_MODULUS * a * dz * np.outer(shear, shear)
-        k += WOOD_YOUNGS_MODULUS * j * dz * np.outer(bend, bend)
+        k[np.ix_(sheared, sheared)] += WOOD_SHEAR_MODULUS * a * dz * np.outer(shear, shear)
+        k[np.ix_(bent, bent)] += WOOD_YOUNGS_MODULUS * j * dz * np.outer(bend, bend)
     mass = np.r_[WOOD_DENSITY * area * dz, WOOD_DENSITY * second / dz]
     w2, v = eigh(k, np.diag(mass), subset_by_index=[0, 5])
     return np.sqrt(w2[2:]) / (2 * np.pi), (np.arange(n) + 0.5) * dz, v[:n, 2:]

@@ -44,12 +44,14 @@ def test_the_docs_have_worked_examples():
 
 
 @pytest.mark.parametrize("page", PAGES)
-def test_documentation_page_runs(page):
+def test_documentation_page_runs(page, validation_once, bounce_once):
     """Every command and Python block of the page runs, in order, in one scratch directory,
     as the site's build runs them (docs/hooks/run.py): a command exits with the status its
     block expects, a block does not raise; the markers of its prose find what they quote, and
     its prose copies no number of its outputs (:func:`check` of docs/hooks/run.py).  A page
-    that the built site ran from this very text and code is not run twice."""
+    that the built site ran from this very text and code is not run twice.  The validation
+    table of every comparison (``racket-impact validate``'s) and a ball's rigid-wall bounce
+    table (``racket-impact ball``'s) are simulated once a process (tests/conftest.py)."""
     text = (ROOT / "docs" / page).read_text()
     site = RUN.built_site()
     manifest = site / RUN.MANIFEST if site else None

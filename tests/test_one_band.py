@@ -22,7 +22,7 @@ from ball import WALL, collide
 from ball.catalog import DROP_COMPRESSION, ITF_DROP, ITF_DROP_SPEED
 from racket import paper_ball
 from racket.specs.ra import RA_SCATTER
-from studies.validation import comparisons, validation_table
+from studies.validation import comparisons
 
 GUIDES = Path(__file__).resolve().parent.parent / "docs" / "guide"
 ITEMS = {c.name: c for c in comparisons()}
@@ -171,8 +171,8 @@ def test_the_compressions_band_holds_both_of_its_sources():
 
 
 @pytest.fixture(scope="module")
-def table():
-    return validation_table()
+def table(validation_rows):
+    return validation_rows.copy()
 
 
 def test_a_calibration_row_outside_its_band_says_why_and_only_such_a_row(table):

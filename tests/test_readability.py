@@ -28,7 +28,9 @@ DEFAULT_RUNS = [
 
 
 @pytest.mark.parametrize("argv", DEFAULT_RUNS, ids=" ".join)
-def test_every_default_run_prints_at_most_100_columns(argv, capsys, monkeypatch):
+def test_every_default_run_prints_at_most_100_columns(
+    argv, capsys, monkeypatch, validation_once, bounce_once
+):
     from studies.cli import show
 
     made = []  # every header a table printed: (column, numeric, label)
@@ -207,7 +209,7 @@ def _drawn(argv, tmp_path, monkeypatch):
 
 @pytest.mark.parametrize("argv", PLOT_RUNS, ids=" ".join)
 def test_every_plot_labels_its_axes_with_units_and_keeps_its_legends_off_the_data(
-    argv, tmp_path, monkeypatch, capsys
+    argv, tmp_path, monkeypatch, capsys, validation_once, bounce_once
 ):
     fig = _drawn(argv, tmp_path, monkeypatch)
     fig.canvas.draw()

@@ -12,7 +12,7 @@ from common.units import LB
 from racket import impact
 from racket.strings.sizes import GAUGES
 from racket.strings.stringing import STRINGS
-from studies.validation import comparisons, validation_table
+from studies.validation import comparisons
 from studies.validation.conditions import (
     STEEL_BALL,
     STEEL_SPEED,
@@ -23,8 +23,8 @@ from studies.validation.conditions import (
 
 
 @pytest.fixture(scope="module")
-def table():
-    return validation_table()
+def table(validation_rows):
+    return validation_rows.copy()
 
 
 @pytest.mark.parametrize("string", [*STRINGS, "natural-gut/polyester"])

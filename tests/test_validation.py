@@ -12,7 +12,7 @@ import re
 
 import pytest
 
-from studies.validation import COLUMNS, KINDS, comparisons, summary, validation_table
+from studies.validation import COLUMNS, KINDS, comparisons, summary
 
 ITEMS = {c.name: c for c in comparisons()}
 
@@ -82,8 +82,8 @@ KNOWN_GAPS = {
 
 
 @pytest.fixture(scope="module")
-def table():
-    return validation_table()
+def table(validation_rows):
+    return validation_rows.copy()
 
 
 def _params(kind):
