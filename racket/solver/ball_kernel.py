@@ -29,6 +29,11 @@ square, round-off (the laws' second derivatives are of the order of their first 
 force).  Waiting instead for a step of round-off size costs one more evaluation of the laws
 per solve, a third of the solve's time."""
 
+NEWTON_STEPS = 100
+"""Most iterations of a safeguarded Newton solve of a contact force (the ball's, the bed's,
+the two's in series): a bisection a step at worst halves the bracket, so 100 reach the last
+bit of any force."""
+
 
 @njit(cache=True)
 def _loading(law, params, f):
@@ -124,7 +129,7 @@ def _branch_force(target, c, f_lo, f_hi, f_max, law, params, b, guess):
     force ends it.
     """
     f = guess if f_lo < guess < f_hi else 0.5 * (f_lo + f_hi)
-    for _ in range(100):
+    for _ in range(NEWTON_STEPS):
         g, dg = _branch(law, params, f, f_max, b)
         resid = g + c * f - target
         if resid == 0.0:  # (the bracket would close on f, and Newton's step leave it)

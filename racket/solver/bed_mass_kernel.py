@@ -42,6 +42,7 @@ from numba import njit
 
 from racket.solver.ball_kernel import (
     NEWTON_SETTLED,
+    NEWTON_STEPS,
     _loading,
     ball_compression,
     branch_force,
@@ -60,7 +61,6 @@ and 11) and the ball's force at the last three steps [N] (rows 8-10, the last fi
 which :func:`massed_forces` extrapolates its guesses.  A new memo holds -1 in rows 0 and 4,
 0 in rows 3 and 7-11."""
 
-_NEWTON_STEPS = 100
 _FUSED_STEPS = 8  # the two-unknown Newton iteration settles in two or three from its guesses
 
 
@@ -105,7 +105,7 @@ def bed_force(k, s, loss, comp, z, f_max, guess, memo, i):
     else:  # beyond the set-back: pulling back about it
         lo, hi, set_back, shift = z - delta, 0.0, 0.0, delta
     u = guess if lo < guess < hi else 0.5 * (lo + hi)
-    for _ in range(_NEWTON_STEPS):
+    for _ in range(NEWTON_STEPS):
         f = k * u * (1.0 + s * u * u)
         resid = u + shift - set_back * f + comp * f - z
         if resid == 0.0:

@@ -18,6 +18,7 @@ from numba import njit
 
 from racket.solver.ball_kernel import (
     NEWTON_SETTLED,
+    NEWTON_STEPS,
     _branch,
     ball_compression,
     monotone_force,
@@ -25,8 +26,6 @@ from racket.solver.ball_kernel import (
 )
 from racket.solver.bed_kernel import bed_active, bed_extra, deflection, stored
 from racket.solver.layout import LINEAR
-
-_NEWTON_STEPS = 100
 
 
 @njit(cache=True)
@@ -125,7 +124,7 @@ def _root(law, params, k, s, rest_of, delta, target, u_lo, u_hi, f_max, b, guess
     """
     u = guess if u_lo < guess < u_hi else 0.5 * (u_lo + u_hi)
     set_back = delta / f_max if delta > 0.0 else 0.0
-    for _ in range(_NEWTON_STEPS):
+    for _ in range(NEWTON_STEPS):
         f = k * u * (1.0 + s * u * u)
         g, dg = _ball(law, params, f, f_max, b)
         resid = g + u + delta - set_back * f + rest_of * f - target

@@ -20,7 +20,7 @@ import math
 from numba import njit
 
 from racket.solver import tile_layout as tl
-from racket.solver.ball_kernel import _loading, bracketed_newton, unloading_exponent
+from racket.solver.ball_kernel import NEWTON_STEPS, _loading, bracketed_newton, unloading_exponent
 from racket.solver.layout import STIFFENING
 
 # Rows of the tile's scratch (``lanes``).
@@ -30,8 +30,6 @@ BALL_ROWS = 10
 loading curve), TOP the ball's compression at its largest force, RUN 1 while the impact
 iterates, POWERED 1 where the ball's law needs a power at the iterate (POWER), G and DG
 the ball's compression and its d/dF there."""
-
-_NEWTON_STEPS = 100  # as racket.solver.ball_kernel._branch_force
 
 
 @njit(cache=True)
@@ -52,7 +50,7 @@ def ball_pass(law, params, v, memo, lanes, picks, n):
         Scratch.
     """
     _brackets(law, params, v, memo, lanes, n)
-    for _ in range(_NEWTON_STEPS):
+    for _ in range(NEWTON_STEPS):
         _branches(law, params, v[tl.F_PEAK_], lanes[F], lanes[RUN], lanes[POWERED], lanes[G],
                   lanes[DG], n)  # fmt: skip
         if not _powers(params, v[tl.F_PEAK_], lanes, picks, n):
