@@ -297,14 +297,25 @@ def ends(low: float, high: float, digits: int = 4) -> str:
         Significant digits of each end.
     """
     for places in range(digits, 18):
-        said = [_rounded(low, places, ROUND_CEILING), _rounded(high, places, ROUND_FLOOR)]
+        said = [rounded(low, places, ROUND_CEILING), rounded(high, places, ROUND_FLOOR)]
         if float(said[0]) <= float(said[1]):
             return ", ".join(said)
     return f"{low!r}, {high!r}"
 
 
-def _rounded(x: float, digits: int, rounding: str) -> str:
-    """``x`` to ``digits`` significant digits, rounded up or down (``rounding``), as :g."""
+def rounded(x: float, digits: int, rounding: str) -> str:
+    """``x`` to ``digits`` significant digits, rounded up or down (``rounding``, a
+    :mod:`decimal` rounding: ROUND_CEILING or ROUND_FLOOR), as :g.
+
+    Parameters
+    ----------
+    x : float
+        The number [any unit].
+    digits : int
+        Significant digits.
+    rounding : str
+        :data:`decimal.ROUND_CEILING` or :data:`decimal.ROUND_FLOOR`.
+    """
     if not math.isfinite(x) or x == 0.0:
         return f"{x:g}"
     exact = Decimal(repr(float(x)))  # the shortest decimal that is x: 0.05, not 0.05000...03

@@ -5,20 +5,23 @@ A bed with a mass m_s (:attr:`racket.StringBed.moving_mass`) is a point mass at 
 point, at q (along the ball's path, as the ball's u), between two contacts: the ball pushes
 it with F1 = F_ball(u - q), and it pushes the frame with F2, the bed's law at its deflection
 w = q - y (y the frame's point, with the static correction of the modes left out).  The
-ball and the bed mass are free masses, stepped exactly for forces varying linearly over the
-step, as the frame's blocks are; at the step's end
+ball is a free mass stepped exactly for forces varying linearly over the step, as the frame's
+blocks are, and the bed mass, which oscillates 8-11 times as fast as the contact, a free mass
+stepped with Newmark's beta 1/12 (:data:`BED_MASS_BETA`); at the step's end
 
     g_ball(F1) + a1 F1 = X0 + h F2          (the ball's compression)
     w_bed(F2) + (h + c_f) F2 = R0 + h F1    (the bed's deflection)
 
 with X0 and R0 what the step would give without either force at its end, h = dt**2 /
-(6 m_s), a1 the ball's and the bed mass's step compliance, and c_f the frame's step
+(12 m_s), a1 the ball's and the bed mass's step compliance, and c_f the frame's step
 compliance plus the modes left out.  Each equation alone rises with its force (the ball's
 :func:`racket.solver.ball_kernel.monotone_force`, the bed's :func:`bed_force`); the two are
 coupled only through h, some 1e-4 of either compliance at the default step.  One Newton
 iteration in the two unknowns solves them together (:func:`massed_forces`), with one sweep of
 the two safeguarded scalar solves (the ball's from the bed's force extrapolated, then the
-bed's, third order in the step) where it does not settle.
+bed's, third order in the step) where it does not settle.  Where the ball's force peaked
+within the step, the step is solved again with the ball unloading from that peak
+(:func:`peak_top`).
 
 The bed's law is :mod:`racket.solver.bed_kernel`'s, written in u, its deflection on the
 loading curve: F(u) = k u (1 + s u**2), and w = u + delta clip(1 - F / F_max, 0, 1), delta
@@ -58,10 +61,32 @@ loading deflection u there [m], its set-back delta [m] and its last solution's u
 ball's largest force it was made for [N], its compression there [m] and its unloading
 exponent (NaN until needed); the bed's u a step and two steps before the last [m] (rows 7
 and 11) and the ball's force at the last three steps [N] (rows 8-10, the last first), from
-which :func:`massed_forces` extrapolates its guesses.  A new memo holds -1 in rows 0 and 4,
+which :func:`massed_forces` extrapolates its guesses (and :func:`peak_top` fits the ball's
+peak).  A new memo holds -1 in rows 0 and 4,
 0 in rows 3 and 7-11."""
 
+BED_MASS_BETA = 1.0 / 12.0
+"""Newmark's beta for the bed mass's position (Fox & Goodwin's 1/12): it moves by
+dt qd + dt**2 / m_s ((1/2 - beta) F0 + beta F1) over a step, F0 and F1 the net force on it at
+the step's start and end, and its velocity by dt (F0 + F1) / (2 m_s).  Any beta is second
+order in the step; 1/12 makes the period of an oscillation fourth order (1/6, the step
+exact for a force varying linearly, lengthens it by (omega dt)**2 / 24), and the bed mass
+oscillates 8-11 times as fast as the contact (module docstring).  Stable for omega dt < 6**0.5
+(N. M. Newmark, J. Eng. Mech. Div. ASCE 85, 1959, 67-94)."""
+
+EARLY_OVER_LATE = (0.5 - BED_MASS_BETA) / BED_MASS_BETA
+"""(1/2 - beta) / beta: the step-start force's weight in the bed mass's move, over the
+end's (h, :func:`bed_mass_coupling`)."""
+
 _FUSED_STEPS = 8  # the two-unknown Newton iteration settles in two or three from its guesses
+
+
+@njit(cache=True)
+def bed_mass_coupling(dt, mass):
+    """The bed mass's move per newton of net force at the step's end, h = beta dt**2 / m_s
+    [m/N] (:data:`BED_MASS_BETA`), for the step ``dt`` [s] and the moving mass ``mass`` [kg].
+    """
+    return BED_MASS_BETA * dt * dt / mass
 
 
 @njit(cache=True)
@@ -147,11 +172,57 @@ def bed_residual(k, s, u, delta, u_max, rate, comp, r0, h, f1):
 
 
 @njit(cache=True)
-def massed_forces(law, params, coef, a1, bed, k, comp, h, x0, r0, f1_max, f2_max, guess, f2_guess,
-                  memo, i):  # fmt: skip
-    """The ball's force F1 and the bed's F2 [N] at the step's end (see the module docstring):
-    one Newton iteration in two unknowns, F1 and the bed's loading-curve deflection u
-    (F2 = k u (1 + s u**2)).
+def massed_forces(law, params, coef, a1, bed, k, comp, h, x0, r0, f1_max, f2_max, f_before,
+                  force, f2_guess, memo, i):  # fmt: skip
+    """The ball's force F1 and the bed's F2 [N] at the step's end, and the ball's largest
+    force so far [N] (:func:`massed_solve` and :func:`peak_top`); the memo keeps the step's
+    unknowns for the next step's guesses.  ``f_before`` and ``force`` are the ball's forces
+    at the last two steps' ends [N]; the other parameters are :func:`massed_solve`'s.
+    """
+    f1, u = massed_solve(law, params, coef, a1, bed, k, comp, h, x0, r0, f1_max, f2_max,
+                         2.0 * force - f_before, f2_guess, memo, i)  # fmt: skip
+    top = peak_top(memo[10, i], f_before, force, f1, f1_max)
+    if top > f1_max:  # the ball unloads from its peak within the step, not from the last end
+        f1_max = top
+        f1, u = massed_solve(law, params, coef, a1, bed, k, comp, h, x0, r0, f1_max, f2_max,
+                             2.0 * force - f_before, f2_guess, memo, i)  # fmt: skip
+    s = bed[0]
+    memo[11, i], memo[7, i], memo[3, i] = memo[7, i], memo[3, i], u
+    memo[10, i], memo[9, i], memo[8, i] = memo[9, i], memo[8, i], f1
+    f2 = k * u * (1.0 + s * u * u)
+    if f2 > f2_max:  # loading: the memo made for the largest force this sets
+        memo[0, i], memo[1, i], memo[2, i] = f2, u, 2.0 * bed[1] * stored(k, s, u) / f2
+    return f1, f2, f1_max
+
+
+@njit(cache=True)
+def peak_top(older, before, at, after, peak):
+    """The ball's largest force [N] where it peaked within the step: if ``at``, its force
+    at the last step's end [N], was the largest so far (``peak``) and the force fell to
+    ``after`` at this step's end, the top within the step of the parabola through its
+    loading forces ``older``, ``before`` and ``at`` at the three steps' ends before; else
+    ``peak``.
+
+    The steps' ends sample a peak low by up to (omega dt)**2 / 8 of the force's swing at
+    omega, and a bed's moving mass ripples the ball's force 8-11 times as fast as the
+    contact: unloading from the last end's force, the ball's loss (set by its peak) was off
+    by up to 1e-4 of the peak, jittering e by 3e-5 from one impact point to the next at the
+    default step.  The parabola is the loading curve's (unloading, the ball is stiffer, so
+    a parabola through ``after`` overshoots); its top is third order in the step.
+    """
+    curve = older - 2.0 * before + at
+    if not (at >= peak and before <= at and 0.0 < after < at and curve < 0.0):
+        return peak
+    slope = at - before + 0.5 * curve  # dF/d(step) at ``at``
+    t = min(max(-slope / curve, -1.0), 1.0)  # within the last step or this one
+    return at + t * (slope + 0.5 * curve * t)
+
+
+@njit(cache=True)
+def massed_solve(law, params, coef, a1, bed, k, comp, h, x0, r0, f1_max, f2_max, guess, f2_guess,
+                 memo, i):  # fmt: skip
+    """The ball's force F1 [N] and the bed's loading-curve deflection u [m] at the step's end
+    (F2 = k u (1 + s u**2); see the module docstring): one Newton iteration in two unknowns.
 
     Each equation rises with its own unknown on every branch (the ball's compression with
     F1, the bed's deflection with u), and they are coupled through h alone, some 1e-4 of the
@@ -207,12 +278,7 @@ def massed_forces(law, params, coef, a1, bed, k, comp, h, x0, r0, f1_max, f2_max
     if not f1 > 0.0:
         f1 = _ball_force(law, params, coef, a1, x0 + h * f2_guess, f1_max, guess, memo, i)
         u = bed_force(k, s, bed[1], comp, r0 + h * f1, f2_max, u_guess, memo, i)[1]
-    memo[11, i], memo[7, i], memo[3, i] = memo[7, i], memo[3, i], u
-    memo[10, i], memo[9, i], memo[8, i] = memo[9, i], memo[8, i], f1
-    f2 = k * u * (1.0 + s * u * u)
-    if f2 > f2_max:  # loading: the memo made for the largest force this sets
-        memo[0, i], memo[1, i], memo[2, i] = f2, u, 2.0 * bed[1] * stored(k, s, u) / f2
-    return f1, f2
+    return f1, u
 
 
 @njit(cache=True)

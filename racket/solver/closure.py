@@ -14,8 +14,11 @@ Where it does not, the impact is refused, saying up to what speed it can be answ
 
 from __future__ import annotations
 
+from decimal import ROUND_FLOOR
+
 import numpy as np
 
+from common.checks import rounded
 from common.units import SPEED_UNITS
 
 BUDGET_TOL = 1e-4
@@ -74,7 +77,7 @@ class Unanswered(ValueError):
         return (
             f"at {self.closing / size:.4g} {unit} (the ball's speed plus the swing's) "
             f"{self.why}; racket-impact answers this racket and ball up to about "
-            f"{self.limit / size:.3g} {unit}"
+            f"{rounded(self.limit / size, 3, ROUND_FLOOR)} {unit}"
         )
 
 
@@ -130,7 +133,10 @@ def refined(solve, steps: int):
 
 def answered_up_to(answers, closing: float) -> float:
     """The largest closing speed [m/s] below ``closing`` at which ``answers(speed)`` holds,
-    by bisection from 1 m/s (assumed answered: the ball's law near rest).
+    by bisection from 1 m/s (assumed answered: the ball's law near rest), each speed tried
+    cut to three significant digits: the speed found is one tried and answered, as a refusal
+    quotes it (near a stiffening ball's limit, where whether an impact is answered can flip
+    from one speed to the next, a speed quoted rounded up may not be).
 
     Parameters
     ----------
@@ -141,7 +147,9 @@ def answered_up_to(answers, closing: float) -> float:
     """
     low, high = 1.0, closing
     for _ in range(LIMIT_BISECTIONS):
-        middle = np.sqrt(low * high)
+        middle = float(rounded(np.sqrt(low * high), 3, ROUND_FLOOR))
+        if middle <= low:
+            break
         if answers(middle):
             low = middle
         else:

@@ -56,9 +56,11 @@ from racket.solver.ball_kernel import ball_compression, force_coefficients, sine
 from racket.solver.bed_kernel import bed_active, bed_extra
 from racket.solver.bed_mass_kernel import (
     BED_MEMO_ROWS,
+    EARLY_OVER_LATE,
     bed_deflection,
     bed_elastic,
     bed_gap,
+    bed_mass_coupling,
     massed_forces,
     opening_fraction,
 )
@@ -153,7 +155,7 @@ def _one_impact(frame, points, ball, controls, out, p):
     q, qd, f2, f2_before, f2_peak = 0.0, 0.0, 0.0, 0.0, 0.0
     h, a1, comp, k_bed, coef1 = 0.0, a, 0.0, 0.0, coef
     if massed:
-        h = dt * dt / (6.0 * bed[2])
+        h = bed_mass_coupling(dt, bed[2])
         a1 = -ball.g1[0] + h
         coef1 = force_coefficients(law, params, a1)
         comp = h + (points.series[p] - inv_ks) + _dot(out_d, gin1)
@@ -182,12 +184,12 @@ def _one_impact(frame, points, ball, controls, out, p):
         f_new, f2_new = 0.0, 0.0
         if massed:
             y_p = _free_step(trans, gin0, out_d, s, f2)
-            q_p = q + dt * qd + 2.0 * h * (force - f2)
+            q_p = q + dt * qd + EARLY_OVER_LATE * h * (force - f2)
             qd_p = qd + 0.5 * dt * (force - f2) / bed[2]
             z_pred = u_p - q_p
-            f_new, f2_new = massed_forces(law, params, coef1, a1, bed, k_bed, comp, h, z_pred,
-                                          q_p - y_p, f_peak, f2_peak, 2.0 * force - f_before,
-                                          2.0 * f2 - f2_before, memo, 0)  # fmt: skip
+            f_new, f2_new, f_peak = massed_forces(law, params, coef1, a1, bed, k_bed, comp, h,
+                                                  z_pred, q_p - y_p, f_peak, f2_peak, f_before,
+                                                  force, 2.0 * f2 - f2_before, memo, 0)  # fmt: skip
             z_pred += h * (2.0 * f2 - f2_before)  # the ball's, with no force of its own
             q = q_p + h * (f_new - f2_new)
             qd = qd_p + 0.5 * dt * (f_new - f2_new) / bed[2]
@@ -225,7 +227,7 @@ def _one_impact(frame, points, ball, controls, out, p):
             ud += ball.g0[1] * d0 + ball.g1[1] * d1
             # the bed mass felt the ball's force alone (its force and deflection stay the
             # step's end's: the difference is of the order of h times the force, 4e-8 J)
-            q += 2.0 * h * d0 + h * d1
+            q += EARLY_OVER_LATE * h * d0 + h * d1
             qd += 0.5 * dt * (d0 + d1) / bed[2]
         elif f_new == 0.0 and force > 0.0 and not sine:
             tau = _opening_fraction(law, params, bed, inv_ks, points.series[p], force, f_peak,

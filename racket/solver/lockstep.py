@@ -28,7 +28,7 @@ from numba import njit
 from racket.solver import lockstep_slot as slot
 from racket.solver import tile_layout as tl
 from racket.solver.bed_kernel import bed_active
-from racket.solver.bed_mass_kernel import BED_MEMO_ROWS
+from racket.solver.bed_mass_kernel import BED_MEMO_ROWS, bed_mass_coupling
 from racket.solver.contact_kernel import MEMO_ROWS, contact_force
 from racket.solver.layout import H_FORCE, LINEAR, SINE
 from racket.solver.lockstep_ball import BALL_ROWS, ball_pass
@@ -68,7 +68,7 @@ def _tile(frame, points, ball, controls, out, ids, w, v, flags, scratch, memo, l
     record = controls.record and out.history.shape[2] > 1
     full = record and out.history.shape[0] > 1  # every history, or the force's alone
     dt = controls.dt
-    h = dt * dt / (6.0 * bed[2]) if massed else 0.0
+    h = bed_mass_coupling(dt, bed[2]) if massed else 0.0
     for i in range(n):
         slot.start_slot(frame, points, ball, out, ids[i], i, w, v, flags, record, h)
         memo[0, i] = -1.0

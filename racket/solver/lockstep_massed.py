@@ -35,11 +35,14 @@ from racket.solver.ball_kernel import NEWTON_SETTLED, unloading_exponent
 from racket.solver.bed_kernel import stored
 from racket.solver.bed_mass_kernel import (
     _FUSED_STEPS,
+    EARLY_OVER_LATE,
     _ball_force,
     _ball_memo,
     _remember,
     bed_force,
     bed_residual,
+    massed_solve,
+    peak_top,
 )
 from racket.solver.layout import LINEAR, STIFFENING
 
@@ -77,7 +80,7 @@ def massed_pass(law, params, bed, v, memo, lanes, picks, dt, h, n):
     lanes, picks : ndarray (LANE_ROWS, TILE), ndarray (TILE,) of int
         Scratch.
     dt, h : float
-        The step [s] and the bed mass's coupling dt**2 / (6 m_s) [m/N].
+        The step [s] and the bed mass's coupling h (bed_mass_coupling) [m/N].
     """
     _predict(v[tl.FORCE], v[tl.F2], v[tl.F2_BEFORE], v[tl.Q], v[tl.QD],
              v[tl.U_P], v[tl.Z], lanes[Q_P], lanes[QD_P], lanes[F2_GUESS], lanes[X0], lanes[R0],
@@ -112,6 +115,17 @@ def massed_pass(law, params, bed, v, memo, lanes, picks, dt, h, n):
             lanes[F1, i] = f1
             lanes[U, i] = bed_force(k[i], bed[0], bed[1], v[tl.COMP, i], lanes[R0, i] + h * f1,
                                     v[tl.F2_PEAK, i], lanes[U_GUESS, i], memo, i)[1]  # fmt: skip
+    for i in range(n):  # the ball's peak within the step, as massed_forces
+        guess = 2.0 * v[tl.FORCE, i] - v[tl.F_BEFORE, i]
+        top = peak_top(memo[10, i], v[tl.F_BEFORE, i], v[tl.FORCE, i], lanes[F1, i],
+                       v[tl.F_PEAK_, i])  # fmt: skip
+        if top > v[tl.F_PEAK_, i]:
+            v[tl.F_PEAK_, i] = top
+            coef = (v[tl.C1_0, i], v[tl.C1_1, i], v[tl.C1_2, i])
+            lanes[F1, i], lanes[U, i] = massed_solve(law, params, coef, v[tl.A1, i], bed, k[i],
+                                                     v[tl.COMP, i], h, lanes[X0, i],
+                                                     lanes[R0, i], top, v[tl.F2_PEAK, i], guess,
+                                                     lanes[F2_GUESS, i], memo, i)  # fmt: skip
     _store(bed[0], bed[1], bed[2], dt, h, k, lanes[F1], lanes[U], lanes[X0],
            lanes[F2_GUESS], lanes[Q_P], lanes[QD_P], v[tl.F2_PEAK], memo[0], memo[1], memo[2],
            memo[3], memo[7], memo[11], memo[8], memo[9], memo[10], v[tl.Z], v[tl.Q], v[tl.QD],
@@ -125,7 +139,7 @@ def _predict(force, f2, f2_before, q, qd, u_p, y_p, q_p, qd_p, f2_guess, x0, r0,
     frame's point's displacement ``y_p`` as the free blocks' pass left it).
     """
     for i in range(n):
-        q_p[i] = q[i] + dt * qd[i] + 2.0 * h * (force[i] - f2[i])
+        q_p[i] = q[i] + dt * qd[i] + EARLY_OVER_LATE * h * (force[i] - f2[i])
         qd_p[i] = qd[i] + 0.5 * dt * (force[i] - f2[i]) / mass
         f2_guess[i] = 2.0 * f2[i] - f2_before[i]  # the bed's force extrapolated
         x0[i] = u_p[i] - q_p[i]

@@ -14,6 +14,7 @@ from racket.solver import layout
 from racket.solver import tile_layout as tl
 from racket.solver.ball_kernel import ball_compression, force_coefficients, sine_step
 from racket.solver.bed_mass_kernel import (
+    EARLY_OVER_LATE,
     bed_deflection,
     bed_elastic,
     bed_gap,
@@ -265,6 +266,6 @@ def massed_opening(ball, law, params, v, i, dt, h):
     d1 = -force * tau * (1.0 - tau)
     v[tl.U, i] += ball.g0[0] * d0 + ball.g1[0] * d1
     v[tl.UD, i] += ball.g0[1] * d0 + ball.g1[1] * d1
-    v[tl.Q, i] += 2.0 * h * d0 + h * d1
+    v[tl.Q, i] += EARLY_OVER_LATE * h * d0 + h * d1
     v[tl.QD, i] += 0.5 * dt * (d0 + d1) / ball.bed[2]
     v[tl.TAU, i] = tau
