@@ -20,7 +20,7 @@ import numpy as np
 
 from ball.contact import RelativeContact
 from ball.laws import MonotoneLaw
-from ball.series import series_compression, series_force
+from ball.series import series_compression, series_force, series_solver
 
 _RTOL = 1e-12
 _STEEP = 1e-6
@@ -64,9 +64,10 @@ def monotone_contact(
     atol = [1e-14 * closing_speed * t_ref, 1e-14 * closing_speed]
 
     last = [0.0]  # the last force: the next evaluation's starting guess
+    loaded = series_solver(laws, 0.0)
 
     def loading(_t, s):
-        last[0] = series_force(laws, s[0], 0.0, guess=last[0])
+        last[0] = loaded(s[0], last[0])
         return [s[1], -last[0] / mu]
 
     def turning(_t, s):
@@ -91,14 +92,15 @@ def monotone_contact(
     f_max = float(series_force(laws, z_max, 0.0))
     z_open = float(series_compression(laws, 0.0, f_max))
 
-    phases = [(ph1, 0.0, t1)]
+    phases = [(ph1, 0.0, t1, loaded)]
     t_end, speed_end = t1, 0.0
     travel = z_max - z_open
     if travel > _STEEP * z_max:
         last[0] = f_max
+        unloaded = series_solver(laws, f_max)
 
         def unloading(_t, s):
-            last[0] = series_force(laws, s[0], f_max, guess=last[0])
+            last[0] = unloaded(s[0], last[0])
             return [s[1], -last[0] / mu]
 
         def opened(_t, s):
@@ -107,9 +109,15 @@ def monotone_contact(
         opened.terminal, opened.direction = True, -1
         ph2 = phase(unloading, t1, [z_max, 0.0], opened, "open")
         t_end, speed_end = ph2.t_events[0][0], ph2.y_events[0][0][1]
-        phases.append((ph2, t1, t_end))
-    t = np.concatenate([np.linspace(ta, tb, samples) for _, ta, tb in phases])
-    z, v = np.concatenate([sol.sol(np.linspace(ta, tb, samples)) for sol, ta, tb in phases], axis=1)
+        phases.append((ph2, t1, t_end, unloaded))
+    # Each phase's history; its forces by its own solver, each from the force before.
+    t, v, force = [], [], []
+    for sol, ta, tb, solve in phases:
+        t.append(np.linspace(ta, tb, samples))
+        z_p, v_p = sol.sol(t[-1])
+        v.append(v_p)
+        force.append(_in_turn(solve, z_p))
+    t, v, force = np.concatenate(t), np.concatenate(v), np.concatenate(force)
     if 64 * np.finfo(float).eps * z_max < travel <= _STEEP * z_max:
         # A nearly vertical unloading (tiny e): the contact opens within a sliver of z that
         # time-stepping cannot resolve in floating point.  The unloading branch is elastic,
@@ -124,10 +132,10 @@ def monotone_contact(
         )
         speed_end = -np.sqrt(2.0 * returned / mu)
         t_end = t1 + 0.5 * np.pi * np.sqrt(mu * travel / f_max)
-        t, z, v = np.append(t, t_end), np.append(z, z_open), np.append(v, speed_end)
+        t, v = np.append(t, t_end), np.append(v, speed_end)
+        force = np.append(force, 0.0)  # z = z_open: the contact is open
     v[-1] = speed_end
     history_fmax = np.where(np.arange(t.size) >= samples, f_max, 0.0)
-    force = series_force(laws, z, history_fmax)
     branch = np.maximum(force, history_fmax)
     comp_a = law_a.compression(force, branch)
     comp_b = np.zeros_like(force) if law_b is None else law_b.compression(force, branch)
@@ -140,3 +148,14 @@ def monotone_contact(
         dissipated_a=float(law_a.dissipated(f_max)),
         dissipated_b=0.0 if law_b is None else float(law_b.dissipated(f_max)),
     )
+
+
+def _in_turn(solve, z: np.ndarray) -> np.ndarray:
+    """The force [N] at each total compression of ``z`` [m] by ``solve`` (a
+    :func:`~ball.series.series_solver`), in turn, each solve starting from the force before.
+    """
+    force = np.empty(z.size)
+    last = 0.0
+    for i, z_i in enumerate(z.tolist()):
+        force[i] = last = solve(z_i, last)
+    return force

@@ -5,7 +5,9 @@ monotone laws): ``z = sum_i compression_i(F, max(F, f_max))``.  The right-hand s
 with F on every branch and is continuous where loading meets unloading (at F = f_max), so
 for any z there is exactly one F >= 0; it is found by Newton's method inside a shrinking
 bracket (bisection whenever a Newton step would leave it).  Works on arrays, so a sweep
-solves all its contacts at once.
+solves all its contacts at once; one contact's ODE asks for one force at a time, which
+:func:`series_solver` finds in Python floats (with arrays of one, the stiffening ball's
+solve took 70 times as long).
 """
 
 from __future__ import annotations
@@ -15,7 +17,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from ball.laws import MonotoneLaw
+from ball.laws import MonotoneLaw, _PowerBranches
 from common.checks import ArgumentTypeError, finite, finite_array, shown
 
 _DOUBLINGS = 2100
@@ -59,6 +61,17 @@ def series_compliance(laws: Sequence[MonotoneLaw], f, f_max):
     return sum(law.compliance(f, branch_max) for law in laws)
 
 
+def _checked(laws) -> Sequence[MonotoneLaw]:
+    """``laws`` if it is a non-empty list or tuple of MonotoneLaw; ArgumentTypeError if not."""
+    laws_ok = isinstance(laws, tuple | list) and all(isinstance(w, MonotoneLaw) for w in laws)
+    if not (laws_ok and laws):
+        raise ArgumentTypeError(
+            "laws must be a non-empty list of MonotoneLaw (LinearSpring, LinearHysteresis, "
+            f"...), got {shown(laws)}"
+        )
+    return laws
+
+
 def series_force(laws: Sequence[MonotoneLaw], z, f_max, rtol: float = 1e-14, guess=None):
     """Force [N] in ``laws`` in series compressed by a total ``z`` [m] after a largest ``f_max``.
 
@@ -80,20 +93,48 @@ def series_force(laws: Sequence[MonotoneLaw], z, f_max, rtol: float = 1e-14, gue
         last one): Newton's method starts there, a few steps instead of about twenty.  The
         answer is the same to ``rtol``.
     """
-    laws_ok = isinstance(laws, tuple | list) and all(isinstance(w, MonotoneLaw) for w in laws)
-    if not (laws_ok and laws):
-        raise ArgumentTypeError(
-            "laws must be a non-empty list of MonotoneLaw (LinearSpring, LinearHysteresis, "
-            f"...), got {shown(laws)}"
-        )
+    laws = _checked(laws)
     if np.ndim(z) == 0 and np.ndim(f_max) == 0:
-        z, f_max = finite("z", z, "m"), finite("f_max", f_max, "N")
-        with np.errstate(over="ignore"):  # doubling towards a huge force may overflow
-            return _scalar_force(laws, z, f_max, rtol, guess)
+        z = finite("z", z, "m")
+        return series_solver(laws, f_max, rtol)(z, guess)
     z = finite_array("z", z, "m")
     z, f_max = np.broadcast_arrays(z, finite_array("f_max", f_max, "N"))
     with np.errstate(over="ignore"):
         return _array_force(laws, z, f_max, rtol)
+
+
+def series_solver(laws: Sequence[MonotoneLaw], f_max: float, rtol: float = 1e-14):
+    """:func:`series_force` for many scalar compressions after one largest force, as an
+    ODE's right-hand side asks for it: what depends on ``f_max`` alone (each law's unloading
+    curve) is worked out once, and each solve runs in Python floats.
+
+    Parameters
+    ----------
+    laws : sequence of MonotoneLaw
+        The force laws in series.
+    f_max : float
+        Largest force reached so far [N].
+    rtol : float, optional
+        Relative tolerance [-] on the force, as in :func:`series_force`.
+
+    Returns
+    -------
+    callable
+        ``force(z, guess=None)``: the force [N] at the total compression ``z`` [m] (a float),
+        Newton's method starting from ``guess`` [N] as in :func:`series_force`.
+    """
+    laws = _checked(laws)
+    f_max = finite("f_max", f_max, "N")
+    with np.errstate(over="ignore"):  # a huge f_max's loading compression overflows to inf
+        branches = [_branch(law, f_max) for law in laws]
+        unit = float(series_compression(laws, 1.0, 1.0))
+
+    def force(z: float, guess=None) -> float:
+        z = finite("z", z, "m")
+        with np.errstate(over="ignore"):  # doubling towards a huge force may overflow
+            return _scalar_force(branches, unit, z, f_max, rtol, guess)
+
+    return force
 
 
 def _array_force(laws, z: np.ndarray, f_max: np.ndarray, rtol: float) -> np.ndarray:
@@ -141,29 +182,63 @@ def _array_force(laws, z: np.ndarray, f_max: np.ndarray, rtol: float) -> np.ndar
     return force[()] if force.ndim == 0 else force
 
 
-def _scalar_force(laws, z: float, f_max: float, rtol: float, guess=None) -> float:
-    """:func:`series_force` for one ``z`` and ``f_max`` in Python floats (an ODE's
-    right-hand side calls it once per evaluation, where array overhead would dominate):
-    Newton's method from ``guess`` (or the loading line's force), doubling the force until
-    the root is bracketed and bisecting whenever a step would leave the bracket.
+def _branch(law: MonotoneLaw, f_max: float):
+    """``law`` after a largest force ``f_max`` [N], one force at a time: a function of a
+    force f >= 0 [N] (a float) giving the compression [m] and the compliance [m/N] there, as
+    ``law.compression`` and ``law.compliance`` at f and max(f, f_max).  For a power-unloading
+    law (the stiffening ball, the power laws) its unloading curve is worked out once, and the
+    rest in floats (its loading curve by its array methods, for which an overflow is inf).
     """
+    if not isinstance(law, _PowerBranches):  # the linear laws: by their array methods
 
-    def resid(f):
-        return float(series_compression(laws, f, f_max)) - z
+        def at(f):
+            top = max(f, f_max)
+            return float(law.compression(f, top)), float(law.compliance(f, top))
 
-    if resid(0.0) >= 0.0:
+        return at
+    top, b = float(law._x_max(f_max)), float(law.unloading_exponent(f_max))
+
+    def at_power(f):
+        if f >= f_max:  # the loading curve
+            if f <= 0.0:
+                return 0.0, math.inf
+            return float(law._x_max(f)), float(law._loading_compliance(f))
+        x = top * (f / f_max) ** (1.0 / b)
+        return x, x / (b * f) if f > 0.0 else math.inf
+
+    return at_power
+
+
+def _series_at(branches, f: float) -> tuple[float, float]:
+    """Total compression [m] and compliance [m/N] of the laws' ``branches`` at force ``f``."""
+    x = slope = 0.0
+    for at in branches:
+        x_i, slope_i = at(f)
+        x += x_i
+        slope += slope_i
+    return x, slope
+
+
+def _scalar_force(branches, unit: float, z: float, f_max: float, rtol: float, guess) -> float:
+    """:func:`series_force` for one ``z`` and ``f_max`` in Python floats, on the laws'
+    ``branches`` (:func:`_branch`), whose loading compression at 1 N is ``unit`` [m]:
+    Newton's method from ``guess`` (or the force of the linear spring of that compliance),
+    doubling the force until the root is bracketed and bisecting whenever a step would leave
+    the bracket.
+    """
+    if _series_at(branches, 0.0)[0] - z >= 0.0:
         return 0.0
     lo, hi = 0.0, math.inf
     if guess is not None and guess > 0.0 and math.isfinite(guess):
         f = float(guess)
     else:
-        f = max(f_max, z / float(series_compression(laws, 1.0, 1.0)))
+        f = max(f_max, z / unit)
     for _ in range(_DOUBLINGS + _ITERATIONS):  # doublings (hi still infinite), then Newton
-        r = resid(f)
+        x, slope = _series_at(branches, f)
+        r = x - z
         if r == 0.0:
             return f
         lo, hi = (f, hi) if r < 0.0 else (lo, f)
-        slope = float(series_compliance(laws, f, f_max))
         f_new = math.nan  # no Newton step on a vertical or undefined branch
         if slope > 0.0 and math.isfinite(slope):
             f_new = f - r / slope

@@ -95,7 +95,8 @@ class StiffeningHysteresis(_PowerBranches):
         return self.k * self.x_lim
 
     def _x_max(self, f_max):
-        f_max = np.asarray(f_max, dtype=float)
+        # a float or an array: no np.asarray, which would cost the scalar solves of
+        # ball.series (an ODE's right-hand side) most of their time
         return self.x_lim * f_max / (f_max + self._f_c)
 
     def _force_at(self, x):
@@ -109,7 +110,8 @@ class StiffeningHysteresis(_PowerBranches):
             return float((self.peak_force(mass, speed) + self._f_c) / self.x_lim)
 
     def _loading_compliance(self, f):
-        return self.x_lim * self._f_c / (np.asarray(f, dtype=float) + self._f_c) ** 2
+        # a float or an array, as _x_max; squared by hand, so that a float's overflow is inf
+        return self.x_lim * self._f_c / ((f + self._f_c) * (f + self._f_c))
 
     def stored(self, f_max):
         """Energy [J] stored by loading to ``f_max`` [N]: X_lim F_c (ln(1 + r) - r/(1 + r))."""

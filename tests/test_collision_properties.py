@@ -11,7 +11,7 @@ from hypothesis import strategies as st
 from ball import WALL, Ball, collide
 from ball.baseball import BASEBALL_PRESETS, nathan_law
 from ball.laws import GrowingHysteresis, LinearHysteresis, LinearSpring, PowerLawHysteresis, SineLaw
-from ball.series import series_compression, series_force
+from ball.series import series_compression, series_force, series_solver
 from ball.stiffening import StiffeningHysteresis
 
 STIFFNESS, COR = (1e3, 1e6), (0.0, 1.0)  # [N/m], [-]
@@ -148,6 +148,21 @@ def test_series_force_solves_the_series_law_from_any_guess(laws, f_max, scale, g
     (array,) = series_force(laws, np.array([z]), np.array([f_max]))
     for force in (unguessed, guessed, array):
         assert bracketed(laws, force, f_max, z)
+
+
+@settings(max_examples=examples(50), deadline=None)
+@given(st.lists(monotone_laws, min_size=1, max_size=2), st.floats(0.0, 1e4))
+def test_series_solver_solves_one_z_after_another(laws, f_max):
+    # One solver for many z after one f_max, each solve from the last force, as an ODE's
+    # right-hand side calls it: each force compresses the laws by its z, on either branch.
+    solve = series_solver(laws, f_max)
+    top = float(series_compression(laws, max(f_max, 1.0), max(f_max, 1.0)))
+    limit = sum(getattr(law, "x_lim", math.inf) for law in laws)
+    force = 0.0
+    for z in top * np.array([0.2, 0.6, 0.9, 1.0, 1.5, 0.95, 0.3, 0.0]):
+        if z < limit:
+            force = solve(z, force)
+            assert bracketed(laws, force, f_max, z)
 
 
 def test_series_force_edge_cases_found_in_review():
