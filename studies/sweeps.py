@@ -8,6 +8,7 @@ impact, SI columns (:func:`sweep`), or into its columns, without pandas
 
 from __future__ import annotations
 
+import inspect
 import itertools
 import re
 import warnings
@@ -153,21 +154,7 @@ def _ball_label(item) -> tuple[str, Ball]:
     return repr(ball_argument(item).law), item
 
 
-def sweep(
-    racket: Racket,
-    ball: Ball | Sequence[Ball] | Mapping[str, Ball],
-    positions=None,
-    speed: float | Sequence[float] = BALL_SPEED,
-    *,
-    string_stiffness=None,
-    tension=None,
-    f1=None,
-    support=None,
-    offset=None,
-    swing: Swing | None = None,
-    progress: bool | None = None,
-    executor: Executor | None = None,
-) -> pd.DataFrame:
+def sweep(*args, **kwargs) -> pd.DataFrame:
     """Impacts at ``positions`` for every combination of the parameters given as lists.
 
     Parameters
@@ -215,22 +202,7 @@ def sweep(
         One row per impact: :data:`COLUMNS`, then one column per parameter that varies.
         At most :data:`MAX_IMPACTS` rows (positions times the combinations).
     """
-    return frame(
-        sweep_columns(
-            racket,
-            ball,
-            positions,
-            speed,
-            string_stiffness=string_stiffness,
-            tension=tension,
-            f1=f1,
-            support=support,
-            offset=offset,
-            swing=swing,
-            progress=progress,
-            executor=executor,
-        )
-    )
+    return frame(sweep_columns(*args, **kwargs))
 
 
 def sweep_columns(
@@ -340,6 +312,9 @@ def sweep_columns(
         kind = object if isinstance(values[0], str) else float  # words: an array of str
         table[PARAMETERS[name]] = np.repeat(np.asarray(values, dtype=kind), count)
     return table
+
+
+sweep.__signature__ = inspect.signature(sweep_columns).replace(return_annotation="pd.DataFrame")
 
 
 def _first_of_each_kind(caught) -> None:
