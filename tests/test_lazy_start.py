@@ -1,6 +1,7 @@
 """A light start (issue 47): ``import racket`` loads none of numpy, scipy, numba, pandas or
 matplotlib; ``racket-impact sweep`` loads neither pandas, matplotlib nor the page, nor the
-modules of the other commands; the packages whose names load on first use
+modules of the other commands, nor the oblique impact's and the stroke's; ``python -m
+studies.cli`` runs as the console command; the packages whose names load on first use
 (:mod:`common.lazy`) offer the same names as before, and their source lists them alike
 for its readers; the sweep's CSV, written without pandas, is pandas' own, byte for byte.
 """
@@ -19,7 +20,7 @@ from studies.cli.files import write_table
 from studies.tables import frame
 
 ROOT = Path(__file__).resolve().parent.parent
-LAZY = ("racket", "ball", "beam", "studies.cli")
+LAZY = ("racket", "ball", "beam", "racket.solver", "studies.cli")
 """The packages whose public names load on first use."""
 
 
@@ -50,9 +51,23 @@ def test_a_sweep_loads_no_pandas_matplotlib_page_or_other_command(tmp_path):
         "assert main() == 0\n"
     )
     unwanted = ("pandas", "matplotlib", "shiny", "studies.page", "studies.cli.bat",
-                "studies.cli.paper", "scipy.optimize")  # fmt: skip
+                "studies.cli.paper", "scipy.optimize", "racket.solver.oblique",
+                "racket.stroke")  # fmt: skip
     assert _loaded(code, *unwanted, "numba") == {"numba"}  # (and it ran the kernel)
     assert (tmp_path / "s.csv").exists()
+
+
+def test_python_m_runs_the_console_command():
+    code = (
+        "import atexit, gc, runpy, sys\n"
+        "atexit.register(lambda: print('frozen:', gc.get_freeze_count() > 0))\n"
+        "sys.argv = ['racket-impact', '--version']\n"
+        "runpy.run_module('studies.cli', run_name='__main__')\n"
+    )
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.startswith("racket-impact ")
+    assert done.stdout.splitlines()[-1] == "frozen: True"  # studies.entry.main's exit
 
 
 def _lists(package: str) -> tuple[set, set, set, set]:

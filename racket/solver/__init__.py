@@ -30,13 +30,16 @@ energy budget at separation), :mod:`~racket.solver.closure` (what a passive impa
 checked after every impact) and :mod:`~racket.solver.unhappy_search` (the unhappy ball's
 self-consistent Xo); :mod:`~racket.solver.oblique` and :mod:`~racket.solver.stroke_hit`
 (the tangential contact on the strings, :mod:`ball.grip`, driven by the head-on force
-history).  :mod:`~racket.solver.cache_stamp` drops numba's on-disk cache when
-any of these files has changed (numba alone would notice a change in a kernel's own file
-only).
+history), whose names load on first use (:mod:`common.lazy`: a head-on impact, as a sweep's,
+imports neither, nor the stroke's model).  :mod:`~racket.solver.cache_stamp` drops numba's
+on-disk cache when any of these files has changed (numba alone would notice a change in a
+kernel's own file only).
 """
 
 from pathlib import Path
+from typing import TYPE_CHECKING
 
+from common.lazy import lazy_names
 from racket.solver.cache_stamp import drop_stale_cache
 from racket.solver.closure import Unanswered
 from racket.solver.dispatch import COMPILE_SECONDS, announced, one_blas_thread
@@ -47,9 +50,11 @@ from racket.solver.driver import (
     impact,
     load_kernel,
 )
-from racket.solver.oblique import ObliqueImpact, oblique_impact
 from racket.solver.steps import system_steps
-from racket.solver.stroke_hit import StrokeImpact, hit
+
+if TYPE_CHECKING:  # loaded on first use (common.lazy): a head-on impact needs neither
+    from racket.solver.oblique import ObliqueImpact, oblique_impact
+    from racket.solver.stroke_hit import StrokeImpact, hit
 
 drop_stale_cache(Path(__file__).parent)  # before any kernel loads its cache (they load lazily)
 
@@ -69,3 +74,11 @@ __all__ = [
     "one_blas_thread",
     "system_steps",
 ]
+
+__getattr__, __dir__ = lazy_names(
+    __name__,
+    {
+        "racket.solver.oblique": ("ObliqueImpact", "oblique_impact"),
+        "racket.solver.stroke_hit": ("StrokeImpact", "hit"),
+    },
+)

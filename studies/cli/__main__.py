@@ -1,13 +1,10 @@
-"""``python -m studies.cli``: the ``racket-impact`` command line (BLAS on one thread unless
-the environment says otherwise, as :mod:`studies.entry`).
+"""``python -m studies.cli``: the ``racket-impact`` command line, run as the console command
+runs it (:func:`studies.entry.main`: BLAS on one thread unless the environment says otherwise,
+the garbage collector frozen at exit, a Ctrl-C at the start one line and status 130).
 """
 
 import sys
 
-from common.blas import one_blas_thread_unless_set
-
-one_blas_thread_unless_set()  # before numpy loads
-
-from studies.cli import main  # noqa: E402
+from studies.entry import main
 
 sys.exit(main())
