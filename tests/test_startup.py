@@ -55,6 +55,43 @@ def test_a_cold_solver_is_told_apart_from_a_cached_one(empty, tmp_path):
     assert (int(cold) > 0) is empty
 
 
+def test_a_refusal_on_a_cold_solver_says_one_line_and_no_notice(tmp_path):
+    """An input refused once the solver's modules are imported (the string options check
+    against the default racket) ends before anything compiles: one line, no "compiling"
+    notice, however soon the watch looks (a fresh checkout's tests saw it)."""
+    said = _python(
+        "import contextlib, io, numba\n"
+        "import studies.cli.notice as notice\n"
+        "notice.EVERY = 1e-4\n"
+        "from studies.cli import main\n"
+        "err = io.StringIO()\n"
+        "with contextlib.redirect_stderr(err):\n"
+        "    assert main(['sweep', '--gauge', '0.00125']) == 2\n"
+        "print(err.getvalue())",
+        NUMBA_CACHE_DIR=str(tmp_path),
+    )
+    assert len(said.splitlines()) == 1 and "--gauge must be in" in said, said
+
+
+def test_the_watch_waits_for_a_compilation_not_an_import(monkeypatch):
+    """:func:`studies.cli.notice._compiling`: a solver function that missed its cache."""
+    import types
+
+    from studies.cli import notice
+
+    def kernel():
+        pass
+
+    module = types.ModuleType("racket.solver.fake_kernel")
+    kernel.__module__ = module.__name__
+    kernel.stats = types.SimpleNamespace(cache_misses={})
+    module.kernel = kernel
+    monkeypatch.setitem(sys.modules, module.__name__, module)
+    assert not notice._compiling()
+    kernel.stats.cache_misses["(float64,)"] = 1
+    assert notice._compiling()
+
+
 def test_paper_draws_the_same_figures_on_processes_of_their_own(tmp_path, monkeypatch, capsys):
     import studies.cli.paper as paper
     from studies.cli import main

@@ -1,10 +1,11 @@
 """The first run's notice: numba compiles the solver once per install (then loads it from
 its on-disk cache), and the command line says so before that wait, not after it.
 
-:func:`compile_watch` watches a command from a thread: as soon as the solver's compiled
-modules are imported and any of their kernels has no fresh on-disk cache, it says that the
-solver is being compiled (once), and :func:`racket.solver.dispatch.compile_notice` stays silent.
-A run refused for its input ends before the solver is imported, and says one line.  (Numba
+:func:`compile_watch` watches a command from a thread: as soon as numba begins to compile
+any of the solver's functions (:func:`_compiling`) and any of its kernels has no fresh on-disk
+cache, it says that the solver is being compiled (once), and
+:func:`racket.solver.dispatch.compile_notice` stays silent.  A run refused for its input ends
+before anything is compiled, and says one line.  (Numba
 first compiles the block exponentials, :mod:`racket.solver.expm`, then the kernel, whose own notice
 came only then: 7-22 s of silence, issue 28.)
 """
@@ -48,9 +49,28 @@ def _cold_kernels() -> list:
     return cold
 
 
+def _compiling() -> bool:
+    """Whether numba has begun to compile any of the solver's cached functions in this
+    process: a first call that found no fresh on-disk cache counts a miss before it compiles
+    (the dispatcher's ``stats.cache_misses``).  Not the solver's modules being imported: a
+    run refused for its input may import them (the default racket's limits) and end before
+    anything is compiled, and on a cold cache its one line then came with the notice.
+    """
+    for name, module in list(sys.modules.items()):
+        if not name.startswith("racket.solver.") or module is None:
+            continue
+        for function in list(vars(module).values()):
+            stats = getattr(function, "stats", None)
+            if getattr(function, "__module__", None) == name and getattr(
+                stats, "cache_misses", None
+            ):
+                return True
+    return False
+
+
 def _watch(done: threading.Event) -> None:
     while not done.wait(EVERY):
-        if "numba" not in sys.modules or "racket.solver.dispatch" not in sys.modules:
+        if "numba" not in sys.modules or not _compiling():
             continue
         from racket.solver import COMPILE_SECONDS, announced
 
