@@ -33,8 +33,7 @@ import numpy as np
 from common.checks import finite, in_range, positive, shown
 
 LINEAR, POWER, SINE, GROWING, STIFFENING = 0, 1, 2, 3, 4
-"""Codes of the law families in the racket solver's compiled kernel
-(:mod:`racket.solver.kernel`),
+"""Codes of the law families in the racket solver's compiled kernel (:mod:`racket.solver.kernel`),
 each law's ``kernel_law`` giving its code and (up to four) numbers."""
 
 COR_FLOOR = 0.1
@@ -66,6 +65,10 @@ class MonotoneLaw(ABC):
     @abstractmethod
     def dissipated(self, f_max):
         """Energy [J] lost in one loading to ``f_max`` [N] and unloading to zero force."""
+
+    def at_peak(self, f_max):
+        """(:meth:`dissipated` [J], ``compression(f_max, f_max)`` [m]) at ``f_max`` [N]."""
+        return self.dissipated(f_max), self.compression(f_max, f_max)
 
     @property
     @abstractmethod
@@ -239,10 +242,12 @@ class _PowerBranches(MonotoneLaw):
         """
 
     def compression(self, f, f_max):
-        f = np.asarray(f, dtype=float)
         f_max = np.asarray(f_max, dtype=float)
+        return self._unloaded(np.asarray(f, dtype=float), f_max, self.unloading_exponent(f_max))
+
+    def _unloaded(self, f, f_max, b):
+        """Compression [m] at ``f`` [N] unloading from ``f_max`` [N] with exponent ``b`` [-]."""
         ratio = np.divide(f, f_max, out=np.zeros(np.broadcast(f, f_max).shape), where=f_max > 0)
-        b = self.unloading_exponent(f_max)
         return self._x_max(f_max) * np.clip(ratio, 0.0, 1.0) ** (1.0 / b)
 
     def compliance(self, f, f_max):
@@ -263,8 +268,16 @@ class _PowerBranches(MonotoneLaw):
 
     def dissipated(self, f_max):
         f_max = np.asarray(f_max, dtype=float)
-        b = self.unloading_exponent(f_max)
+        return self._dissipated(f_max, self.unloading_exponent(f_max))
+
+    def _dissipated(self, f_max, b):
+        """:meth:`dissipated` [J] at ``f_max`` [N] (an array) of unloading exponent ``b`` [-]."""
         return self.stored(f_max) - f_max * self._x_max(f_max) / (b + 1.0)
+
+    def at_peak(self, f_max):
+        f_max = np.asarray(f_max, dtype=float)
+        b = self.unloading_exponent(f_max)  # once for both
+        return self._dissipated(f_max, b), self._unloaded(f_max, f_max, b)
 
     def secant_stiffness(self, mass: float, speed: float) -> float:
         x = self.peak_compression(mass, speed)

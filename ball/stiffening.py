@@ -41,6 +41,9 @@ def _stored_over_r2(r):
     """(ln(1 + r) - r / (1 + r)) / r**2, by its series where r is small (-> 1/2 at 0)."""
     r = np.asarray(r, dtype=float)
     small = r < _SERIES_BELOW
+    if not small.any():  # (an impact's forces: the closed form alone, the same numbers)
+        with np.errstate(over="ignore", invalid="ignore"):
+            return np.asarray((np.log1p(r) - r / (1.0 + r)) / r**2)
     rs = np.where(small, r, 0.0)
     series = 0.5 - rs * (2.0 / 3.0 - rs * (0.75 - rs * (0.8 - rs * 5.0 / 6.0)))
     rl = np.where(small, 1.0, r)

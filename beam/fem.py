@@ -33,12 +33,14 @@ def hermite(s: np.ndarray, length: np.ndarray, shear=0.0) -> np.ndarray:
         The element's shear parameter Phi = 12 EI / (kappa G A l**2) [-] at each ``s``.
     """
     p = shear
+    s2, s3 = s**2, s**3
+    half = 0.5 * p * (s - s2)
     return np.array(
         [
-            1 - 3 * s**2 + 2 * s**3 + p * (1 - s),
-            length * (s - 2 * s**2 + s**3 + 0.5 * p * (s - s**2)),
-            3 * s**2 - 2 * s**3 + p * s,
-            length * (-(s**2) + s**3 - 0.5 * p * (s - s**2)),
+            1 - 3 * s2 + 2 * s3 + p * (1 - s),
+            length * (s - 2 * s2 + s3 + half),
+            3 * s2 - 2 * s3 + p * s,
+            length * (-s2 + s3 - half),
         ]
     ) / (1.0 + p)
 
@@ -57,10 +59,13 @@ def element_shapes(nodes: np.ndarray, x, shear=None):
         Each element's shear parameter [-] (:func:`hermite`); None for Euler-Bernoulli.
     """
     x = np.asarray(x, dtype=float)
-    lengths = np.diff(nodes)
-    e = np.clip(np.searchsorted(nodes, x, side="right") - 1, 0, lengths.size - 1)
+    # (the element's own length, not np.diff of the whole mesh: the same subtraction, and
+    # np.minimum/np.maximum rather than np.clip: a few points cost little)
+    e = np.minimum(np.maximum(np.searchsorted(nodes, x, side="right") - 1, 0), nodes.size - 2)
+    start = nodes[e]
+    length = nodes[e + 1] - start
     p = 0.0 if shear is None else shear[e]
-    return e, hermite((x - nodes[e]) / lengths[e], lengths[e], p)
+    return e, hermite((x - start) / length, length, p)
 
 
 def mesh(stations: np.ndarray, extra_points: np.ndarray, elements: int) -> np.ndarray:

@@ -59,13 +59,11 @@ class Modes:
             Positions [m from the tip].
         """
         x = np.atleast_1d(np.asarray(x, dtype=float))
-        rigid = np.vstack(
-            [
-                np.full(x.shape, 1.0 / np.sqrt(self.mass)),
-                (self.center_of_mass - x) / np.sqrt(self.inertia_cm),
-            ]
-        )
-        return np.vstack([rigid, self.bending_shapes(x)])
+        shapes = np.empty((self.count, x.size))  # (filled row by row: cheaper than stacking)
+        shapes[0] = 1.0 / np.sqrt(self.mass)
+        shapes[1] = (self.center_of_mass - x) / np.sqrt(self.inertia_cm)
+        shapes[2:] = self.bending_shapes(x)
+        return shapes
 
     def nodes(self, mode: int = 1) -> np.ndarray:
         """Zeros [m from the tip] of bending mode ``mode`` (1 = fundamental) on the beam.

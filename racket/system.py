@@ -127,10 +127,11 @@ class BlockSystem:
         dc = self._blocks_of(phi[:, rigid] @ self.rigid_rows)
         return disp, vel, dc
 
-    @property
+    @cached_property
     def rigid_rows(self) -> np.ndarray:
         """Rows (len(rigid), 2 nb) over the block states giving the velocities of the
-        rigid coordinates' dc motion (:attr:`dc_rows`, or the basis's rows).
+        rigid coordinates' dc motion (:attr:`dc_rows`, or the basis's rows); computed once
+        (the system is frozen).
         """
         if self.dc_rows is not None:
             return self.dc_rows

@@ -190,3 +190,22 @@ def test_series_force_edge_cases_found_in_review():
         series_force(laws, math.nan, 1.0)
     with pytest.raises(ValueError, match=r"z must be (a )?finite number"):
         series_force(laws, np.array([1e-3, math.inf]), 1.0)
+
+
+@settings(max_examples=examples(100), deadline=None)
+@given(monotone_laws, st.lists(st.floats(0.0, 1e5), min_size=1, max_size=5))
+def test_at_peak_is_the_loss_and_the_compression_bit_for_bit(law, forces):
+    # What an impact's outcome asks of its ball in one call (the unloading exponent once)
+    # gives the same numbers as asking for each apart.
+    cases = [np.array(forces)]
+    if isinstance(law, StiffeningHysteresis):  # no force below its series (r < 1e-3), and one
+        f_c = law.k * law.x_lim
+        cases = [cases[0] + 0.01 * f_c, np.append(cases[0], 1e-4 * f_c)]
+    for f_max in cases:
+        loss, squashed = law.at_peak(f_max)
+        np.testing.assert_array_equal(loss, law.dissipated(f_max))
+        np.testing.assert_array_equal(squashed, law.compression(f_max, f_max))
+    if len(cases) == 2:  # the closed form alone (no small force) as where some force is small
+        alone, beside = law.at_peak(cases[0]), law.at_peak(np.append(cases[0], cases[1][-1]))
+        for a, b in zip(alone, beside, strict=True):
+            np.testing.assert_array_equal(a, b[:-1])

@@ -283,7 +283,7 @@ def outcome(stepper: Stepper, racket, ball, x, y, speed, x_o, outputs, histories
         ball_loss = summary[:, layout.SINE_WORK]  # X never decreases: all work on it is lost
         self_consistent = np.abs(summary[:, layout.X_END] - x_o) <= SELF_CONSISTENT_TOL * x_o
     else:
-        ball_loss = ball.law.dissipated(summary[:, layout.F_PEAK])
+        ball_loss, squashed = ball.law.at_peak(summary[:, layout.F_PEAK])
         self_consistent = np.ones(x.size, dtype=bool)
     peak = summary[:, layout.F_PEAK]
     string_loss = np.zeros(x.size)
@@ -346,7 +346,7 @@ def outcome(stepper: Stepper, racket, ball, x, y, speed, x_o, outputs, histories
         x_o=x_o,
         self_consistent=self_consistent,
         recontacts=summary[:, layout.RECONTACTS].astype(int),
-        compression=x_o if code == layout.SINE else ball.law.compression(peak, peak),
+        compression=x_o if code == layout.SINE else squashed,
         **history,
     )
     return fields, np.arange(used) * dt if histories else None

@@ -5,6 +5,8 @@ and run for any Xo (:class:`Stepper`), and the time step they share
 
 from __future__ import annotations
 
+from functools import lru_cache
+
 import numpy as np
 
 from ball import Ball
@@ -35,9 +37,34 @@ def contact_time_scale(ball: Ball, string_stiffness: float, closing_speed: float
     closing_speed : float
         Ball speed relative to the impact point [m/s].
     """
-    k = ball.law.secant_stiffness(ball.mass, closing_speed)
+    k = _secant_stiffness(ball.law, ball.mass, closing_speed)
     k_series = 1.0 / (1.0 / k + 1.0 / string_stiffness)
     return np.pi * np.sqrt(ball.mass / k_series)
+
+
+def _secant_stiffness(law, mass: float, closing_speed: float) -> float:
+    """The ball law's secant stiffness [N/m] for ``mass`` [kg] at ``closing_speed`` [m/s]:
+    kept (:func:`_kept_secant_stiffness`) for a frozen law, every law of :mod:`ball`;
+    computed afresh for any other, which might change, or one that cannot be hashed.
+    """
+    params = getattr(law, "__dataclass_params__", None)
+    if params is None or not params.frozen:
+        return law.secant_stiffness(mass, closing_speed)
+    try:
+        return _kept_secant_stiffness(law, mass, closing_speed)
+    except TypeError:  # a frozen law of the caller's with a field that cannot be hashed
+        return law.secant_stiffness(mass, closing_speed)
+
+
+@lru_cache(maxsize=1024)
+def _kept_secant_stiffness(law, mass: float, closing_speed: float) -> float:
+    """:func:`_secant_stiffness` kept: an impact asks for it twice (its time step and its
+    check of the contact time), and one-position calls at one speed ask again and again (a
+    stiffening ball's takes a Newton iteration).  The key is the frozen law (hashed by its
+    numbers) and two numbers, so nothing invalidates an entry; beyond 1024 the least
+    recently used go.
+    """
+    return law.secant_stiffness(mass, closing_speed)
 
 
 def _swing_velocities(modes, position, swing_speed, pivot):
@@ -82,7 +109,9 @@ class Stepper:
     def __init__(self, racket, ball, x, y, speed, swing_speed, pivot, steps_per_contact):
         # The step follows from the bed's stiffest spot, whatever the points (the shortest
         # contact on it), and from the closing speed, the same for all (see impact).
-        swing_speed = np.broadcast_to(np.asarray(swing_speed, dtype=float), x.shape)
+        swing_speed = np.asarray(swing_speed, dtype=float)
+        if swing_speed.shape != x.shape:  # (impact's are one per point already)
+            swing_speed = np.broadcast_to(swing_speed, x.shape)
         self.closing = speed + swing_speed
         self.dt = contact_time_scale(ball, racket.contact.stiffest, self.closing[0])
         self.dt /= steps_per_contact

@@ -6,6 +6,7 @@ and lossless (the paper's) or stiffening, lossy and with a mass of its own
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
@@ -183,18 +184,19 @@ class StringBed:
         dx = (np.asarray(x, dtype=float) - self.center) / half_length
         return dx**2 + (np.asarray(y, dtype=float) / (0.5 * self.full_width)) ** 2
 
-    @property
+    @cached_property
     def stiffest(self) -> float:
         """The largest string-plane stiffness anywhere on the bed [N/m] (the solver's time
-        step follows from it): :attr:`stiffness` for a uniform bed.
+        step follows from it): :attr:`stiffness` for a uniform bed.  Computed once (the bed
+        is frozen).
         """
         if self.profile == "uniform":
             return self.stiffness
         return self.stiffness * float(stiffness_ratio(1.0, self._radius))
 
-    @property
+    @cached_property
     def _radius(self) -> float:
-        """Radius [m] of the circle of the bed's area (the membrane model's)."""
+        """Radius [m] of the circle of the bed's area (the membrane model's); computed once."""
         return bed_radius(self.area)
 
     def stiffness_at(self, x, y=0.0) -> np.ndarray:
@@ -202,7 +204,6 @@ class StringBed:
         axis]): :attr:`stiffness` for a uniform bed; the membrane's rise towards the frame
         (:func:`racket.strings.membrane.stiffness_ratio`) for a ``"membrane"`` one.
         """
-        x, y = np.broadcast_arrays(np.asarray(x, dtype=float), np.asarray(y, dtype=float))
         if self.profile == "uniform":
-            return np.full(x.shape, self.stiffness)
-        return self.stiffness * stiffness_ratio(self.rho2(x, y), self._radius)
+            return np.full(np.broadcast_shapes(np.shape(x), np.shape(y)), self.stiffness)
+        return self.stiffness * stiffness_ratio(self.rho2(x, y), self._radius)  # (broadcast)

@@ -66,7 +66,7 @@ def stiffness_ratio(rho2, radius: float) -> np.ndarray:
     radius : float
         Radius of the circle of the bed's area [m].
     """
-    rho2 = np.clip(np.asarray(rho2, dtype=float), 0.0, 1.0)
+    rho2 = np.minimum(np.maximum(rho2, 0.0), 1.0)  # (np.clip costs a few points more)
     centre = np.log(radius / CONTACT_RADIUS)
     near = np.log(np.maximum(radius * (1.0 - rho2), 2.0 * CONTACT_RADIUS) / CONTACT_RADIUS)
     return centre / near
