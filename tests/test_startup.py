@@ -73,8 +73,9 @@ def test_a_refusal_on_a_cold_solver_says_one_line_and_no_notice(tmp_path):
     assert len(said.splitlines()) == 1 and "--gauge must be in" in said, said
 
 
-def test_the_watch_waits_for_a_compilation_not_an_import(monkeypatch):
-    """:func:`studies.cli.notice._compiling`: a solver function that missed its cache."""
+def test_the_watch_waits_for_a_compilation_not_an_import():
+    """:func:`studies.cli.notice._compiling`: a solver function that missed its cache (in
+    a module of its own: this process's real kernels may have been compiled here)."""
     import types
 
     from studies.cli import notice
@@ -86,10 +87,11 @@ def test_the_watch_waits_for_a_compilation_not_an_import(monkeypatch):
     kernel.__module__ = module.__name__
     kernel.stats = types.SimpleNamespace(cache_misses={})
     module.kernel = kernel
-    monkeypatch.setitem(sys.modules, module.__name__, module)
-    assert not notice._compiling()
+    modules = {module.__name__: module, "studies.fake": module}
+    assert not notice._compiling(modules)
     kernel.stats.cache_misses["(float64,)"] = 1
-    assert notice._compiling()
+    assert notice._compiling(modules)
+    assert not notice._compiling({"studies.fake": module})  # the solver's modules alone
 
 
 def test_paper_draws_the_same_figures_on_processes_of_their_own(tmp_path, monkeypatch, capsys):

@@ -49,14 +49,19 @@ def _cold_kernels() -> list:
     return cold
 
 
-def _compiling() -> bool:
+def _compiling(modules=None) -> bool:
     """Whether numba has begun to compile any of the solver's cached functions in this
     process: a first call that found no fresh on-disk cache counts a miss before it compiles
     (the dispatcher's ``stats.cache_misses``).  Not the solver's modules being imported: a
     run refused for its input may import them (the default racket's limits) and end before
     anything is compiled, and on a cold cache its one line then came with the notice.
+
+    Parameters
+    ----------
+    modules : dict, optional
+        Module name -> module to look in; default :data:`sys.modules`.
     """
-    for name, module in list(sys.modules.items()):
+    for name, module in list((sys.modules if modules is None else modules).items()):
         if not name.startswith("racket.solver.") or module is None:
             continue
         for function in list(vars(module).values()):
