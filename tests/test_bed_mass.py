@@ -7,6 +7,7 @@ hand-held rackets, for the two kernels' agreement bit for bit, and for the outco
 depending on when the stepping stops.
 """
 
+import warnings
 from dataclasses import replace
 
 import numpy as np
@@ -15,6 +16,7 @@ import pytest
 from ball import Ball, GrowingHysteresis, LinearHysteresis, LinearSpring, PowerLawHysteresis
 from racket import CATALOG, StringBed, impact
 from racket.solver import DEFAULT_STEPS_PER_CONTACT
+from racket.solver.closure import SETTLED_E
 from racket.solver.dispatch import lockstep_from
 from studies.validation.conditions import _ball, clamped_racket
 
@@ -256,3 +258,23 @@ def test_no_peak_within_the_step_keeps_the_largest_so_far(older, before, at, aft
     from racket.solver.bed_mass_kernel import peak_top
 
     assert peak_top(older, before, at, after, peak) == peak
+
+
+def test_a_bed_mass_stepped_beyond_its_stability_is_stepped_again_finer():
+    """A light bed mass at few steps per contact oscillates beyond the step's stability
+    (omega dt > 6**0.5 for the Fox-Goodwin step; the kernel divided by zero): the impacts are
+    stepped again as ones whose budget does not close, and answered at 16 times the steps."""
+    light = replace(STRUNG, strings=replace(STRUNG.strings, moving_mass=5e-4))
+    x = np.linspace(*light.strings.extent, 7)[1:-1]
+    got = impact(light, BALL, x, 60.0, steps_per_contact=50)
+    assert np.array_equal(got.e, impact(light, BALL, x, 60.0, steps_per_contact=800).e)
+
+
+def test_a_step_that_breaks_down_on_the_default_bed_is_answered_finer():
+    # 140 m/s at the fewest steps: the bed mass's step broke down (the contact never ended,
+    # a RuntimeError); stepped again finer, it is answered as any impact that settles there
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # the ball squashed beyond its usual range
+        got = impact(STRUNG, BALL, [0.0631], 140.0, steps_per_contact=50)
+        finer = impact(STRUNG, BALL, [0.0631], 140.0, steps_per_contact=800)  # refined too
+    assert np.abs(got.e - finer.e).max() <= SETTLED_E

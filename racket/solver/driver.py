@@ -310,18 +310,18 @@ def _solve(
     settle them either.
     """
     run = (racket, ball, speed, pivot, watch_after, histories)
-    fields, t = _solve_at(x, y, swing_speed, steps_per_contact, *run)
-    bad = closure.unclosed(fields, ball)
+    fields, t = _unless_broken(_solve_at, x, y, swing_speed, steps_per_contact, *run)
+    bad = np.ones(x.size, dtype=bool) if fields is None else closure.unclosed(fields, ball)
     if not bad.any():
         return fields, t
-    if histories:  # one time axis for all: every impact again
+    if histories or fields is None:  # one time axis for all, or none: every impact again
         bad[:] = True
 
     def solve(steps):
         return _solve_at(x[bad], None if y is None else y[bad], swing_speed[bad], steps, *run)
 
     again, t_again, settled = closure.refined(solve, steps_per_contact)
-    if histories:  # every impact again, on the finer time axis
+    if histories or fields is None:  # every impact again, on the finer time axis
         fields, t = again, t_again
     else:
         for k, v in fields.items():
@@ -349,11 +349,28 @@ def _solve_at(
                           force_only=force_only)  # fmt: skip
     ended = outputs.summary[:, layout.ENDED]
     if not np.all(ended):
-        raise RuntimeError(
+        raise NotEnded(
             f"the impact at {x[ended == 0][0]:g} m from the tip had not ended after "
             f"{stepper.max_steps * stepper.dt:.3g} s"
         )
     return outcome(stepper, racket, ball, x, y, speed, x_o, outputs, histories, extra_steps)
+
+
+class NotEnded(RuntimeError):
+    """An impact still in contact when the kernel's last step was taken."""
+
+
+def _unless_broken(solve_at, *args):
+    """``solve_at(*args)``, or (None, None) where the step broke down: a bed mass stepped
+    beyond its stability (omega dt > 6**0.5, :data:`racket.solver.bed_mass_kernel.
+    BED_MASS_BETA`: a light bed mass, few steps per contact and a stiffening ball near its
+    limit) divides by zero in the kernel or never ends the contact.  The caller then steps
+    every impact again, finer, as one whose budget does not close.
+    """
+    try:
+        return solve_at(*args)
+    except (ZeroDivisionError, NotEnded):
+        return None, None
 
 
 def _refuse_unclosed(fields, i, x, y, swing_speed, steps, racket, ball, speed, pivot, *_):
@@ -366,8 +383,8 @@ def _refuse_unclosed(fields, i, x, y, swing_speed, steps, racket, ball, speed, p
 
     def answers(v):
         run = (racket, ball, v, pivot, 0.0, False)
-        fields, _ = _solve_at(*point, steps, *run)
-        if not closure.unclosed(fields, ball)[0]:
+        fields, _ = _unless_broken(_solve_at, *point, steps, *run)
+        if fields is not None and not closure.unclosed(fields, ball)[0]:
             return True
         return bool(closure.refined(lambda n: _solve_at(*point, n, *run), steps)[2][0])
 
