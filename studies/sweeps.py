@@ -202,6 +202,10 @@ def sweep(*args, **kwargs) -> pd.DataFrame:
         One row per impact: :data:`COLUMNS`, then one column per parameter that varies.
         At most :data:`MAX_IMPACTS` rows (positions times the combinations).
     """
+    try:
+        sweep.__signature__.bind(*args, **kwargs)  # its own name in a misuse's message
+    except TypeError as err:
+        raise TypeError(f"sweep(): {err}") from None
     return frame(sweep_columns(*args, **kwargs))
 
 

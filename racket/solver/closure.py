@@ -41,7 +41,8 @@ above its limit; at 16 times the steps e is within 2e-3 of 64 times' (the change
 them, 1.8e-3, within this bound)."""
 
 LIMIT_BISECTIONS = 7
-"""Bisections of the closing speed up to which an impact is answered (to about 1 %)."""
+"""Bisections of the closing speed up to which an impact is answered, on a log scale from
+1 m/s: to (closing speed)**(1/128), about 4 % at 100 m/s."""
 
 
 STIFF_FRACTION = 0.88
