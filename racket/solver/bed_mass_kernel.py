@@ -184,8 +184,11 @@ def massed_forces(law, params, coef, a1, bed, k, comp, h, x0, r0, f1_max, f2_max
     """
     f1, u = massed_solve(law, params, coef, a1, bed, k, comp, h, x0, r0, f1_max, f2_max,
                          2.0 * force - f_before, f2_guess, memo, i)  # fmt: skip
-    f1, u, f1_max = from_peak(law, params, coef, a1, bed, k, comp, h, x0, r0, f1_max, f2_max,
-                              f_before, force, f2_guess, memo, i, f1, u)  # fmt: skip
+    top = peak_top(memo[10, i], f_before, force, f1, f1_max)
+    if top > f1_max:  # the ball unloads from its peak within the step, not from the last end
+        f1_max = top
+        f1, u = massed_solve(law, params, coef, a1, bed, k, comp, h, x0, r0, f1_max, f2_max,
+                             2.0 * force - f_before, f2_guess, memo, i)  # fmt: skip
     s = bed[0]
     memo[11, i], memo[7, i], memo[3, i] = memo[7, i], memo[3, i], u
     memo[10, i], memo[9, i], memo[8, i] = memo[9, i], memo[8, i], f1
@@ -193,22 +196,6 @@ def massed_forces(law, params, coef, a1, bed, k, comp, h, x0, r0, f1_max, f2_max
     if f2 > f2_max:  # loading: the memo made for the largest force this sets
         memo[0, i], memo[1, i], memo[2, i] = f2, u, 2.0 * bed[1] * stored(k, s, u) / f2
     return f1, f2, f1_max
-
-
-@njit(cache=True)
-def from_peak(law, params, coef, a1, bed, k, comp, h, x0, r0, f1_max, f2_max, f_before, force,
-              f2_guess, memo, i, f1, u):  # fmt: skip
-    """The step's solution ``f1`` [N], ``u`` [m] and the ball's largest force ``f1_max`` [N],
-    solved again (:func:`massed_solve`) with the ball unloading from its peak within the step
-    where it peaked there (:func:`peak_top`), not from the last step's end; for both kernels
-    (the parameters are :func:`massed_forces`').
-    """
-    top = peak_top(memo[10, i], f_before, force, f1, f1_max)
-    if not top > f1_max:
-        return f1, u, f1_max
-    f1, u = massed_solve(law, params, coef, a1, bed, k, comp, h, x0, r0, top, f2_max,
-                         2.0 * force - f_before, f2_guess, memo, i)  # fmt: skip
-    return f1, u, top
 
 
 @njit(cache=True)

@@ -41,7 +41,8 @@ from racket.solver.bed_mass_kernel import (
     _remember,
     bed_force,
     bed_residual,
-    from_peak,
+    massed_solve,
+    peak_top,
 )
 from racket.solver.layout import LINEAR, STIFFENING
 
@@ -115,11 +116,16 @@ def massed_pass(law, params, bed, v, memo, lanes, picks, dt, h, n):
             lanes[U, i] = bed_force(k[i], bed[0], bed[1], v[tl.COMP, i], lanes[R0, i] + h * f1,
                                     v[tl.F2_PEAK, i], lanes[U_GUESS, i], memo, i)[1]  # fmt: skip
     for i in range(n):  # the ball's peak within the step, as massed_forces
-        coef = (v[tl.C1_0, i], v[tl.C1_1, i], v[tl.C1_2, i])
-        lanes[F1, i], lanes[U, i], v[tl.F_PEAK_, i] = from_peak(
-            law, params, coef, v[tl.A1, i], bed, k[i], v[tl.COMP, i], h, lanes[X0, i],
-            lanes[R0, i], v[tl.F_PEAK_, i], v[tl.F2_PEAK, i], v[tl.F_BEFORE, i], v[tl.FORCE, i],
-            lanes[F2_GUESS, i], memo, i, lanes[F1, i], lanes[U, i])  # fmt: skip
+        guess = 2.0 * v[tl.FORCE, i] - v[tl.F_BEFORE, i]
+        top = peak_top(memo[10, i], v[tl.F_BEFORE, i], v[tl.FORCE, i], lanes[F1, i],
+                       v[tl.F_PEAK_, i])  # fmt: skip
+        if top > v[tl.F_PEAK_, i]:
+            v[tl.F_PEAK_, i] = top
+            coef = (v[tl.C1_0, i], v[tl.C1_1, i], v[tl.C1_2, i])
+            lanes[F1, i], lanes[U, i] = massed_solve(law, params, coef, v[tl.A1, i], bed, k[i],
+                                                     v[tl.COMP, i], h, lanes[X0, i],
+                                                     lanes[R0, i], top, v[tl.F2_PEAK, i], guess,
+                                                     lanes[F2_GUESS, i], memo, i)  # fmt: skip
     _store(bed[0], bed[1], bed[2], dt, h, k, lanes[F1], lanes[U], lanes[X0],
            lanes[F2_GUESS], lanes[Q_P], lanes[QD_P], v[tl.F2_PEAK], memo[0], memo[1], memo[2],
            memo[3], memo[7], memo[11], memo[8], memo[9], memo[10], v[tl.Z], v[tl.Q], v[tl.QD],
