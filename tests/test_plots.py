@@ -243,10 +243,11 @@ def _heading(fig):
 
 @pytest.mark.parametrize("name", PLOTS)
 def test_every_plot_names_its_conditions_and_everything_fits_in_the_figure(name, results):
-    from studies.cli.files import _laid_out
+    from studies.cli.files import DPI, _laid_out
 
     axes = PLOTS[name](results, conditions=CONDITIONS)
-    with _laid_out(axes) as fig:  # as the command line saves it
+    with _laid_out(axes, ".png") as fig:  # as the command line saves a PNG, at its DPI
+        fig.set_dpi(DPI)
         fig.canvas.draw()
         page = fig.bbox
         heading = _heading(fig).get_window_extent()
@@ -278,12 +279,13 @@ def test_a_long_title_is_wrapped_to_fit(results):
 
 
 def test_compare_keeps_most_of_the_width_for_its_axes(results):
-    from studies.cli.files import _laid_out
+    from studies.cli.files import DPI, _laid_out
 
     long = {f"{name} strung at 62 lb with lead tape at 12 o'clock": group
             for name, group in results["compare"].items()}  # fmt: skip
     ax = plots.plot_cor_comparison(long)
-    with _laid_out(ax) as fig:
+    with _laid_out(ax, ".png") as fig:  # as the command line saves a PNG, at its DPI
+        fig.set_dpi(DPI)
         fig.canvas.draw()
         area, legend = ax.get_window_extent(), ax.get_legend().get_window_extent()
         assert area.width >= 0.55 * fig.bbox.width  # tight_layout left it a third

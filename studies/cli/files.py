@@ -249,7 +249,7 @@ def save_plot(axes, path: str) -> None:
     suffix = Path(path).suffix.lower()
     if suffix not in PLOT_FORMATS:
         raise ValueError(f"plot file must end in {', '.join(PLOT_FORMATS)}, got {path!r}")
-    with _laid_out(axes) as fig:
+    with _laid_out(axes, suffix) as fig:
         outputs.write(path, lambda temp: fig.savefig(temp, dpi=DPI, format=suffix[1:]))
 
 
@@ -260,7 +260,7 @@ def plot_bytes(axes, suffix: str) -> bytes:
     import io
 
     data = io.BytesIO()
-    with _laid_out(axes) as fig:
+    with _laid_out(axes, suffix) as fig:
         fig.savefig(data, dpi=DPI, format=suffix[1:])
     return data.getvalue()
 
@@ -270,16 +270,37 @@ DPI = 120
 
 
 @contextlib.contextmanager
-def _laid_out(axes):
+def _laid_out(axes, suffix: str):
     """The figure holding ``axes``, laid out (by its own layout engine, as the plots of
-    :mod:`studies.plots` make theirs, else tight); closed when the block ends.
+    :mod:`studies.plots` make theirs, else tight) for a ``suffix`` file; closed when the
+    block ends.
+
+    For a PNG the engine is run here once, at the saved resolution, and then set aside: the
+    file is drawn once, where matplotlib would draw a figure with an engine twice to save it
+    (once without rendering, to lay it out, then again, laying it out anew); the same layout,
+    as both measure the text with the same (Agg) renderer.  An SVG or PDF is laid out by
+    matplotlib as usual, its text measured by its own renderer.
     """
     import matplotlib.pyplot as plt
 
     fig = np.atleast_1d(axes)[0].figure
     try:
-        if fig.get_layout_engine() is None:
+        engine = fig.get_layout_engine()
+        if engine is None:
             fig.tight_layout()
+        elif suffix == ".png":
+            _lay_out_once(fig, engine)
         yield fig
     finally:
         plt.close(fig)
+
+
+def _lay_out_once(fig, engine) -> None:
+    """Run ``fig``'s layout ``engine`` at the saved :data:`DPI`, then fix the Axes there."""
+    shown = fig.dpi
+    fig.set_dpi(DPI)
+    try:
+        engine.execute(fig)
+    finally:
+        fig.set_dpi(shown)
+    fig.set_layout_engine(None)  # (not "none": matplotlib would still draw twice)
