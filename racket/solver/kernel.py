@@ -298,7 +298,7 @@ def _one_impact(frame, points, ball, controls, out, p):
             else:
                 z_open = contact_compression(law, params, bed, inv_ks, 0.0, f_peak)
             gap = z_open - (u - _dot(out_d, s))
-            if gap >= _reach(points.reach_w[p], frame.metric, s):
+            if gap >= _reach(points.reach_w, p, frame.metric, s):
                 stop_at = step + controls.extra_steps
     out.ball[p, 0] = sep_u
     out.ball[p, 1] = sep_ud
@@ -352,12 +352,14 @@ def _free_step(trans, gin0, out_d, s, force):
 
 
 @njit(cache=True)
-def _reach(reach_w, metric, s):
-    """The largest displacement the blocks' remaining vibration can bring to the point."""
+def _reach(reach_w, p, metric, s):
+    """The largest displacement the blocks' remaining vibration can bring to point ``p``
+    (its row of ``reach_w`` read in place: no view, see :func:`_dot_at`).
+    """
     reach = 0.0
-    for j in range(reach_w.size):
-        if reach_w[j] > 0.0:
-            reach += reach_w[j] * math.sqrt(
+    for j in range(reach_w.shape[1]):
+        if reach_w[p, j] > 0.0:
+            reach += reach_w[p, j] * math.sqrt(
                 metric[j, 0] * s[j, 0] ** 2 + metric[j, 1] * s[j, 1] ** 2
             )
     return reach
@@ -397,6 +399,18 @@ def _dot(rows, s):
     total = 0.0
     for j in range(s.shape[0]):
         total += rows[j, 0] * s[j, 0] + rows[j, 1] * s[j, 1]
+    return total
+
+
+@njit(cache=True, inline="always")
+def _dot_at(rows, p, s):
+    """``_dot(rows[p], s)``, the same sum, read in place: the view ``rows[p]`` would cost two
+    atomic reference counts on memory that all the threads share (the lockstep kernel's
+    test for a contact's end runs every step of every open contact).
+    """
+    total = 0.0
+    for j in range(s.shape[0]):
+        total += rows[p, j, 0] * s[j, 0] + rows[p, j, 1] * s[j, 1]
     return total
 
 

@@ -99,6 +99,9 @@ def _tile(frame, points, ball, controls, out, ids, w, v, flags, scratch, memo, l
         flags[tl.RECONTACT],
     )
     f_frame, f_frame_new = (v[tl.F2], v[tl.F2_NEW]) if massed else (force, f_new)  # on the frame
+    # (and the points' arrays taken out of their tuple once: see slot.watch)
+    out_dc, out_d, out_v, reach_w = points.out_dc, points.out_d, points.out_v, points.reach_w
+    series, inv_ks_rows, metric = points.series, points.inv_ks, frame.metric
     while n > 0 and step < controls.max_steps:
         # The free step (the force going from `force` to 0): ball, blocks, the point.
         _ball_free(t00, t01, t10, t11, g00, g01, u, ud, force, u_p, ud_p, z, n)
@@ -147,8 +150,14 @@ def _tile(frame, points, ball, controls, out, ids, w, v, flags, scratch, memo, l
         for i in range(n):
             if (full or need[i] != 0.0) and not flags[tl.DONE, i]:
                 left = force[i] == 0.0 and f_before[i] > 0.0
-                slot.after_step(frame, points, ball, controls, out, w, v, flags, scratch, i, step,
-                                left, memo)  # fmt: skip
+                if full or left or sine:  # the histories, the ball leaving, a sine law's end
+                    slot.after_step(frame, points, ball, controls, out, w, v, flags, scratch, i,
+                                    step, left, memo)  # fmt: skip
+                elif stop_at[i] < 0 and force[i] == 0.0:  # open: the rest of after_step's
+                    slot.gather(w, i, scratch)  # (the force's history is written above)
+                    slot.watch(law, params, bed, out_dc, out_d, out_v, reach_w, series,
+                               inv_ks_rows, metric, v, flags, scratch, memo, i, step,
+                               controls.extra_steps)  # fmt: skip
         # Impacts that have ended leave the tile; the last takes each one's place.
         i = 0
         while i < n:

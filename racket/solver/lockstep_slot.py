@@ -24,6 +24,7 @@ from racket.solver.contact_kernel import contact_compression
 from racket.solver.expm import step_back
 from racket.solver.kernel import (
     _dot,
+    _dot_at,
     _opening_fraction,
     _power,
     _reach,
@@ -204,21 +205,36 @@ def after_step(frame, points, ball, controls, out, w, v, flags, scratch, i, step
     if flags[tl.STOP_AT, i] < 0 and force == 0.0:
         if not gathered:
             gather(w, i, scratch)
-        if _dot(points.out_dc[p], scratch) > ud:
-            # Open and separating in the dc motion: over for good once the gap exceeds the
-            # largest deflection the remaining vibration can bring to the point.
-            if massed:
-                residual = points.series[p] - points.inv_ks[p]
-                z_open = bed_gap(law, params, bed, 1.0 / points.inv_ks[p], residual, memo, i,
-                                 f_peak, v[tl.F2, i], v[tl.F2_PEAK, i],
-                                 v[tl.QD, i] - _dot(points.out_v[p], scratch))  # fmt: skip
-            elif sine:
-                z_open = v[tl.X_BALL, i]
-            else:
-                z_open = contact_compression(law, params, bed, points.inv_ks[p], 0.0, f_peak)
-            gap = z_open - (v[tl.U, i] - _dot(points.out_d[p], scratch))
-            if gap >= _reach(points.reach_w[p], frame.metric, scratch):
-                flags[tl.STOP_AT, i] = step + controls.extra_steps
+        watch(law, params, bed, points.out_dc, points.out_d, points.out_v, points.reach_w,
+              points.series, points.inv_ks, frame.metric, v, flags, scratch, memo, i, step,
+              controls.extra_steps)  # fmt: skip
+
+
+@njit(cache=True, inline="always")
+def watch(law, params, bed, out_dc, out_d, out_v, reach_w, series, inv_ks, metric, v, flags,
+          scratch, memo, i, step, extra_steps):  # fmt: skip
+    """Slot ``i``, its contact open after ``step``, its block states gathered in ``scratch``:
+    over for good (its STOP_AT ``extra_steps`` on) once it separates in the dc motion and the
+    gap exceeds the largest deflection the remaining vibration can bring to the point (as
+    :func:`racket.solver.kernel._one_impact`).  The points' arrays come one by one and are
+    read at the impact's row, never viewed: a view costs two atomic reference counts on
+    memory every thread's tiles share, and this runs every step of every open contact.
+    """
+    p = flags[tl.IMPACT, i]
+    if _dot_at(out_dc, p, scratch) > v[tl.UD, i]:
+        f_peak = v[tl.F_PEAK_, i]
+        if bed[2] > 0.0 and law != layout.SINE:  # a bed with a mass
+            residual = series[p] - inv_ks[p]
+            z_open = bed_gap(law, params, bed, 1.0 / inv_ks[p], residual, memo, i, f_peak,
+                             v[tl.F2, i], v[tl.F2_PEAK, i],
+                             v[tl.QD, i] - _dot_at(out_v, p, scratch))  # fmt: skip
+        elif law == layout.SINE:
+            z_open = v[tl.X_BALL, i]
+        else:
+            z_open = contact_compression(law, params, bed, inv_ks[p], 0.0, f_peak)
+        gap = z_open - (v[tl.U, i] - _dot_at(out_d, p, scratch))
+        if gap >= _reach(reach_w, p, metric, scratch):
+            flags[tl.STOP_AT, i] = step + extra_steps
 
 
 @njit(cache=True)
