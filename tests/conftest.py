@@ -94,9 +94,29 @@ def pytest_configure(config):
     )
 
 
+LONGEST = {
+    "test_page_picture",
+    "test_app",
+    "test_scale",
+    "test_startup",
+    "test_scale_script",
+}
+"""Test modules holding the longest single tests or module fixtures (the page photographed and
+driven in Chromium, a dask cluster, processes of their own: 15-65 s each on two busy cores),
+begun right after :data:`SOLVER_FREE`: xdist's worksteal hands each worker a half of the list
+and lets an idle one take the end of the other's, so one of these left near the end ran
+alone while the other worker idled."""
+
+
+def _order(item) -> int:
+    name = item.module.__name__.rpartition(".")[2]
+    return 0 if name in SOLVER_FREE else 1 if name in LONGEST else 2
+
+
 def pytest_collection_modifyitems(items):
-    """The modules that never run the kernel first (the sort keeps the order within)."""
-    items.sort(key=lambda item: item.module.__name__.rpartition(".")[2] not in SOLVER_FREE)
+    """The modules that never run the kernel first, then the longest (the sort keeps the
+    order within)."""
+    items.sort(key=_order)
 
 
 def pytest_runtest_setup(item):

@@ -9,6 +9,7 @@ from concurrent.futures import Executor, Future
 
 import numpy as np
 import pytest
+from clihelpers import refusal
 
 from ball import Ball, SineLaw
 from racket import CATALOG, Swing, impact, paper_ball, paper_racket
@@ -213,13 +214,11 @@ def test_the_command_line_on_workers_prints_what_it_prints_alone(tmp_path):
     ],
 )
 def test_the_command_line_refuses_bad_scale_options_in_one_line(words, message, tmp_path):
+    # run in this process (as tests/test_bad_inputs.py runs its refusals): status 2, one
+    # line, nothing on stdout, nothing written in tmp_path (no table, no sidecar)
     for command in ("sweep", "map", "compare"):
         out = tmp_path / f"{command}.csv"
-        done = _cli(command, *words, "--out", str(out))
-        assert done.returncode == 2
-        assert message in done.stderr
-        assert len(done.stderr.strip().splitlines()) == 1
-        assert done.stdout == ""
+        assert message in refusal([command, *words, "--out", str(out)], folder=tmp_path)
         assert not out.exists()
 
 
