@@ -405,12 +405,15 @@ def _refuse_unclosed(fields, i, x, y, swing_speed, steps, racket, ball, speed, p
 
 def load_kernel() -> None:
     """Load the compiled kernels now (numba compiles them on a machine's first run, 12-15 s,
-    and caches them on disk), by running impacts of the paper's racket one at a time and
-    in lockstep; a program that shows progress (the interactive page, the test suite) calls
-    it before its first impact.
+    and caches them on disk), by running impacts one at a time and in lockstep of the
+    paper's racket and ball and of the default ones (a bed with a mass, a stiffening ball:
+    functions of their own); a program that shows progress (the interactive page, the test
+    suite) calls it before its first impact.
     """
-    from racket.presets import paper_ball, paper_racket
+    from racket.presets import default_ball, default_racket, paper_ball, paper_racket
 
-    impact(paper_racket(), paper_ball(), 0.1, 10.0)
     many = LOCKSTEP_MIN * pool_size()  # enough for the lockstep kernel on every thread
-    impact(paper_racket(), paper_ball(), np.linspace(0.0, 0.3, many), 10.0)
+    for racket, ball in ((paper_racket(), paper_ball()), (default_racket(), default_ball())):
+        start, end = racket.strings.extent
+        impact(racket, ball, 0.5 * (start + end), 10.0)
+        impact(racket, ball, np.linspace(start, end, many), 10.0)

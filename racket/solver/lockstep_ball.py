@@ -50,13 +50,16 @@ def ball_pass(law, params, v, memo, lanes, picks, n):
         Scratch.
     """
     _brackets(law, params, v, memo, lanes, n)
+    # The rows the iteration works on, viewed once a step, not once an iteration (each view
+    # costs an atomic increment and decrement of its array's reference count).
+    f_max, a, target = v[tl.F_PEAK_], v[tl.A], v[tl.Z]
+    f, lo, hi, run, powered, g, dg = (lanes[F], lanes[LO], lanes[HI], lanes[RUN],
+                                      lanes[POWERED], lanes[G], lanes[DG])  # fmt: skip
     for _ in range(NEWTON_STEPS):
-        _branches(law, params, v[tl.F_PEAK_], lanes[F], lanes[RUN], lanes[POWERED], lanes[G],
-                  lanes[DG], n)  # fmt: skip
-        if not _powers(params, v[tl.F_PEAK_], lanes, picks, n):
+        _branches(law, params, f_max, f, run, powered, g, dg, n)
+        if not _powers(params, f_max, lanes, picks, n):
             break
-        _newton_step(v[tl.A], v[tl.Z], lanes[F], lanes[LO], lanes[HI], lanes[G], lanes[DG],
-                     lanes[RUN], n)  # fmt: skip
+        _newton_step(a, target, f, lo, hi, g, dg, run, n)
     for i in range(n):
         v[tl.F_NEW, i] = lanes[F, i]
 

@@ -3,11 +3,12 @@ two-unknown Newton iteration of :func:`racket.solver.bed_mass_kernel.massed_forc
 the whole tile at once, with the same numbers.
 
 Each iteration is four passes over the tile's impacts: which still iterate and where the
-ball's law is at their iterates (:func:`_branches`), the powers the law needs there (an
-unloading curve, a power law's loading curve: :func:`_powers`, one impact at a time, as
-there is no vectorised ``pow`` that gives the C library's bits), the ball's compression from
-them (:func:`_powered`), and the Newton step with the bed's law and the stiffening law's
-loading hyperbola (:func:`_newton_step`).  All but the powers are loops that LLVM
+ball's law is at their iterates (:func:`_branches`, or :func:`_lines` for a linear law),
+the powers the law needs there (an unloading curve, a power law's loading curve:
+:func:`_powers`, one impact at a time, as there is no vectorised ``pow`` that gives the C
+library's bits; the memo's unloading exponents made first, where missing), the ball's
+compression from them (:func:`_powered`), and the Newton step with the bed's law and the
+stiffening law's loading hyperbola (:func:`_newton_step`).  All but the powers are loops that LLVM
 vectorises (AVX2 here).  Every impact keeps its own stopping rule: one that settles, or
 whose ball's force is not positive, stops iterating, one that has not settled after
 ``_FUSED_STEPS`` goes to the scalar solves (:func:`racket.solver.bed_mass_kernel.
@@ -22,6 +23,12 @@ their own (LLVM checks at run time that the arrays a loop writes overlap no othe
 gives up beyond a few checks), and every impact's loads and stores made whether or not it
 iterates (the arithmetic of those that do not is discarded: a store on a condition is a
 masked store, slow on AMD's processors).
+
+What keeps numba's reference counts out of the iteration: the rows are viewed once a step,
+before it (each view costs an atomic increment and decrement), and the passes call nothing
+(a pass that calls, or that branches into loops of its own, keeps the counts of its array
+arguments, two atomic operations each a call; one that does not has them cancelled at
+compile time).
 """
 
 from __future__ import annotations
@@ -92,18 +99,32 @@ def massed_pass(law, params, bed, v, memo, lanes, picks, dt, h, n):
     _extrapolate(memo[2], memo[3], memo[7], memo[11], memo[8], memo[9], memo[10],
                  v[tl.F2_PEAK], lanes[RATE], lanes[U_GUESS], lanes[F1], lanes[U], lanes[RUN],
                  n)  # fmt: skip
-    f1_max = v[tl.F_PEAK_]
+    # The rows the iteration works on, viewed once a step, not once an iteration (see the
+    # module docstring).
+    f1_max, comp, a1, top, u_max, delta = (v[tl.F_PEAK_], v[tl.COMP], v[tl.A1], memo[5],
+                                           memo[1], memo[2])  # fmt: skip
+    f1, u, run, hyperbola, powered, unloading = (lanes[F1], lanes[U], lanes[RUN],
+                                                 lanes[HYPERBOLA], lanes[POWERED],
+                                                 lanes[UNLOADING])  # fmt: skip
+    den, power, g, dg, rate, x0, r0 = (lanes[DEN], lanes[POWER], lanes[G], lanes[DG],
+                                       lanes[RATE], lanes[X0], lanes[R0])  # fmt: skip
+    exponent, x_lim, f_c = memo[6], params[1], params[0] * params[1]
     for _ in range(_FUSED_STEPS):
-        _branches(law, params, f1_max, lanes[F1], lanes[RUN], lanes[HYPERBOLA], lanes[POWERED],
-                  lanes[UNLOADING], lanes[G], lanes[DG], n)  # fmt: skip
-        if not _powers(law, params, f1_max, memo, lanes[F1], lanes[RUN], lanes[POWERED],
-                       lanes[UNLOADING], lanes[DEN], lanes[POWER], picks, n):  # fmt: skip
+        if law == LINEAR:
+            _lines(params, f1_max, f1, run, hyperbola, powered, g, dg, n)
+        else:
+            _branches(law, f1_max, f1, run, hyperbola, powered, unloading, n)
+        m, live = _picks(run, powered, picks, n)
+        if not live:
             break
-        _powered(lanes[F1], lanes[POWERED], lanes[UNLOADING], memo[5], lanes[POWER], lanes[DEN],
-                 lanes[G], lanes[DG], n)  # fmt: skip
-        _newton_step(params[1], params[0] * params[1], bed[0], h, v[tl.COMP], v[tl.A1], memo[1],
-                     memo[2], lanes[RATE], k, lanes[X0], lanes[R0], lanes[HYPERBOLA], lanes[G],
-                     lanes[DG], lanes[F1], lanes[U], lanes[RUN], n)  # fmt: skip
+        for t in range(m):  # (here: a pass that calls keeps its arrays' reference counts)
+            i = picks[t]
+            if unloading[i] != 0.0 and (memo[4, i] != f1_max[i] or math.isnan(memo[6, i])):
+                _unloading_memo(law, params, f1_max[i], memo, i)  # made for another force
+        _powers(params, f1_max, exponent, f1, unloading, den, power, picks, m)
+        _powered(f1, powered, unloading, top, power, den, g, dg, n)
+        _newton_step(x_lim, f_c, bed[0], h, comp, a1, u_max, delta, rate, k, x0, r0, hyperbola,
+                     g, dg, f1, u, run, n)  # fmt: skip
     for i in range(n):  # the scalar solves where the iteration gave no positive force
         if lanes[RUN, i] != 0.0:
             lanes[F1, i] = 0.0  # (not settled)
@@ -162,61 +183,84 @@ def _extrapolate(delta, u_last, u_1, u_2, f_last, f_1, f_2, f2_max, rate, u_gues
 
 
 @njit(cache=True, error_model="numpy")
-def _branches(law, params, f1_max, f1, run, hyperbola, powered, unloading, g, dg, n):
+def _lines(params, f1_max, f1, run, hyperbola, powered, g, dg, n):
     """Which impacts still iterate (``run``; an impact whose ball's force is not positive
-    stops), and where the ball's law is at their iterates (as
-    :func:`racket.solver.bed_mass_kernel._ball_at`): on a linear law's lines (its
-    compression and d/dF into ``g`` and ``dg`` here), on the stiffening law's loading
+    stops), and a linear law's compression and d/dF at their iterates, on its loading line or
+    its unloading one (into ``g`` and ``dg``; as :func:`racket.solver.bed_mass_kernel.
+    _ball_at`).
+    """
+    k, e2 = params[0], params[1] * params[1]
+    for i in range(n):
+        f, f_max, g_i, dg_i = f1[i], f1_max[i], g[i], dg[i]
+        going = run[i] != 0.0 and f > 0.0
+        if going and f >= f_max:
+            g_i, dg_i = f / k, 1.0 / k
+        elif going:
+            g_i, dg_i = (f_max * (1.0 - e2) + e2 * f) / k, e2 / k
+        run[i], g[i], dg[i] = (1.0 if going else 0.0), g_i, dg_i
+        hyperbola[i] = powered[i] = 0.0
+
+
+@njit(cache=True, error_model="numpy")
+def _branches(law, f1_max, f1, run, hyperbola, powered, unloading, n):
+    """Which impacts still iterate (``run``; an impact whose ball's force is not positive
+    stops), and where a law other than the linear one (:func:`_lines`) is at their iterates
+    (as :func:`racket.solver.bed_mass_kernel._ball_at`): on the stiffening law's loading
     hyperbola (``hyperbola``, for :func:`_newton_step`), or on a power (``powered``: a power
     law's loading curve, or an ``unloading`` curve, for :func:`_powers`).
+
+    (A pass of its own for the linear law: one pass with a loop for each kept its arrays'
+    reference counts, see the module docstring.)
     """
-    if law == LINEAR:
-        k, e2 = params[0], params[1] * params[1]
-        for i in range(n):
-            f, f_max, g_i, dg_i = f1[i], f1_max[i], g[i], dg[i]
-            going = run[i] != 0.0 and f > 0.0
-            if going and f >= f_max:
-                g_i, dg_i = f / k, 1.0 / k
-            elif going:
-                g_i, dg_i = (f_max * (1.0 - e2) + e2 * f) / k, e2 / k
-            run[i], g[i], dg[i] = (1.0 if going else 0.0), g_i, dg_i
-            hyperbola[i] = powered[i] = 0.0
-    else:
-        for i in range(n):
-            f, f_max = f1[i], f1_max[i]
-            going = run[i] != 0.0 and f > 0.0
-            loading = law == STIFFENING and f >= f_max
-            run[i] = 1.0 if going else 0.0
-            hyperbola[i] = 1.0 if going and loading else 0.0
-            powered[i] = 1.0 if going and not loading else 0.0
-            unloading[i] = 1.0 if f < f_max else 0.0
+    for i in range(n):
+        f, f_max = f1[i], f1_max[i]
+        going = run[i] != 0.0 and f > 0.0
+        loading = law == STIFFENING and f >= f_max
+        run[i] = 1.0 if going else 0.0
+        hyperbola[i] = 1.0 if going and loading else 0.0
+        powered[i] = 1.0 if going and not loading else 0.0
+        unloading[i] = 1.0 if f < f_max else 0.0
 
 
 @njit(cache=True)
-def _powers(law, params, f1_max, memo, f1, run, powered, unloading, den, power, picks, n):
-    """The powers of the impacts marked ``powered``, one impact at a time, as
-    :func:`racket.solver.bed_mass_kernel._ball_at` takes them: (F / F_max) ** (1 / b) on an
-    unloading curve (its exponent b, which the memo keeps, into ``den``), (F / k) ** (1 / a)
-    on a power law's loading curve.  Returns whether any impact is still iterating.
+def _picks(run, powered, picks, n):
+    """The impacts marked ``powered`` into ``picks``, in order (no branch to mispredict);
+    returns how many, and whether any impact is still iterating.
     """
     live, m = False, 0
-    for i in range(n):  # the impacts to power, in order (no branch to mispredict)
+    for i in range(n):
         picks[m] = i
         m += 1 if powered[i] != 0.0 else 0
         live = live or run[i] != 0.0
+    return m, live
+
+
+@njit(cache=True)
+def _unloading_memo(law, params, f_max, memo, i):
+    """Rows 4-6 of column ``i`` of ``memo`` made for the ball's largest force ``f_max`` [N],
+    its unloading exponent (row 6) with them (:data:`racket.solver.bed_mass_kernel.
+    BED_MEMO_ROWS`).
+    """
+    _ball_memo(law, params, f_max, memo, i)
+    if math.isnan(memo[6, i]):
+        memo[6, i] = unloading_exponent(law, params, f_max)
+
+
+@njit(cache=True)
+def _powers(params, f1_max, exponent, f1, unloading, den, power, picks, m):
+    """The powers of the ``m`` impacts in ``picks``, one impact at a time, as
+    :func:`racket.solver.bed_mass_kernel._ball_at` takes them: (F / F_max) ** (1 / b) on an
+    unloading curve (its exponent b, the memo's ``exponent``, into ``den``), (F / k) ** (1 / a)
+    on a power law's loading curve.
+    """
     for t in range(m):
         i = picks[t]
         if unloading[i] != 0.0:
-            if memo[4, i] != f1_max[i] or math.isnan(memo[6, i]):  # (made for another force)
-                _ball_memo(law, params, f1_max[i], memo, i)
-                if math.isnan(memo[6, i]):
-                    memo[6, i] = unloading_exponent(law, params, f1_max[i])
-            den[i] = memo[6, i]
+            den[i] = exponent[i]
             power[i] = (f1[i] / f1_max[i]) ** (1.0 / den[i])
         else:
             den[i] = params[1]
             power[i] = (f1[i] / params[0]) ** (1.0 / params[1])
-    return live
 
 
 @njit(cache=True, error_model="numpy")

@@ -29,7 +29,8 @@ results (all are compiled on a machine's first run of the solver)."""
 def _cold_kernels() -> list:
     """The numba functions of the kernels' modules (:data:`KERNELS`) whose on-disk cache is
     missing or stale: numba compiles them, and all they call, on their first run (an
-    unreadable cache counts as fresh: numba will say so itself).
+    unreadable cache counts as fresh: numba will say so itself).  A function inlined
+    wherever it is called (``inline="always"``) is never compiled, or cached, on its own.
     """
     cold = []
     for name in KERNELS:
@@ -37,6 +38,8 @@ def _cold_kernels() -> list:
         for function in list(vars(module).values()):
             cache_file = getattr(getattr(function, "_cache", None), "_cache_file", None)
             if getattr(function, "__module__", None) != name or cache_file is None:
+                continue
+            if function.targetoptions.get("inline") == "always":
                 continue
             if function.signatures:  # compiled already in this process
                 continue
