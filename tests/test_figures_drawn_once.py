@@ -72,3 +72,14 @@ def test_a_plot_lays_out_its_figure_without_drawing_it(drawn):
     fig.canvas.draw()
     assert drawn[fig]["inside"]
     assert drawn[fig]["widths"][0] == pytest.approx(AXES_WIDTH, abs=0.05)
+
+
+def test_a_png_is_laid_out_alike_whatever_layout_the_user_asks_for_by_default(drawn):
+    # with rcParams asking every new figure for a layout engine, fixing the layout before the
+    # save must not install one (it would lay the figure out again, otherwise)
+    name = "modes.png"
+    plain, _ = paper_figure(name)
+    with matplotlib.rc_context({"figure.autolayout": True}):
+        asked, _ = paper_figure(name)
+    assert asked == plain
+    assert all(seen["draws"] == DRAWS for seen in drawn.values())

@@ -297,10 +297,16 @@ def _laid_out(axes, suffix: str):
 
 def _lay_out_once(fig, engine) -> None:
     """Run ``fig``'s layout ``engine`` at the saved :data:`DPI`, then fix the Axes there."""
+    import matplotlib
+
     shown = fig.dpi
     fig.set_dpi(DPI)
     try:
         engine.execute(fig)
     finally:
         fig.set_dpi(shown)
-    fig.set_layout_engine(None)  # (not "none": matplotlib would still draw twice)
+    # None, not "none" (a placeholder engine: matplotlib would still draw twice); and with
+    # the user's rcParams asking for no engine, or None would install a new one
+    unset = {"figure.autolayout": False, "figure.constrained_layout.use": False}
+    with matplotlib.rc_context(unset):
+        fig.set_layout_engine(None)
