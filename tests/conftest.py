@@ -4,7 +4,7 @@
   turns a quick failure report into many minutes.
 * On CI (``CI`` set) the examples are derandomized, so every CI run checks the same cases
   and a failure is reproducible; local runs draw new examples each time.
-* The solver's kernel takes numba 12-15 s to compile on a fresh checkout (then it is cached
+* The solver's kernel takes numba about a minute to compile on a fresh checkout (then it is cached
   on disk).  A second process compiles it while the modules that never run it
   (``SOLVER_FREE``) run first, on the other core; before the first test that may run it,
   this process waits for that one and loads the cached kernel, so that no test's captured

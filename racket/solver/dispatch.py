@@ -16,8 +16,10 @@ import threading
 from concurrent.futures import ThreadPoolExecutor, wait
 from contextlib import contextmanager
 
-COMPILE_SECONDS = 15
-"""About how long numba takes to compile the kernel on a 2-core machine (measured 12-15 s)."""
+COMPILE_SECONDS = 60
+"""About how long numba takes to compile the solver on a 2-core machine: measured 54 s for the
+default racket's sweep on an empty cache (2026-11-30, load 0.8; 12-15 s before the real string
+bed and the lockstep kernel)."""
 
 IMPACTS_PER_THREAD = 8
 """Smallest share of a batch's impacts worth a thread of its own (one impact takes about

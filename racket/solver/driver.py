@@ -404,8 +404,8 @@ def _refuse_unclosed(fields, i, x, y, swing_speed, steps, racket, ball, speed, p
 
 
 def load_kernel() -> None:
-    """Load the compiled kernels now (numba compiles them on a machine's first run, 12-15 s,
-    and caches them on disk), by running impacts one at a time and in lockstep of the
+    """Load the compiled kernels now (numba compiles them on a machine's first run, about a
+    minute, and caches them on disk), by running impacts one at a time and in lockstep of the
     paper's racket and ball and of the default ones (a bed with a mass, a stiffening ball:
     functions of their own); a program that shows progress (the interactive page, the test
     suite) calls it before its first impact.

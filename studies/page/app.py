@@ -25,6 +25,7 @@ from shiny import App, reactive, render, ui
 
 from common.typechecks import asked_by_caller
 from racket import CATALOG
+from racket.solver import COMPILE_SECONDS
 from racket.swing import ARM_REACH
 from studies.config import BALLS
 from studies.page.cards import built_sides, error_cards, headline_cards, spots_table
@@ -183,7 +184,8 @@ def server(input, output, session):
         if not _WARM.is_set():
             reactive.invalidate_later(1.0)
             return ui.div(
-                "Warming up: compiling the solver (once per machine, about 15 s)...",
+                "Warming up: compiling the solver (once per machine, about "
+                f"{COMPILE_SECONDS:g} s)...",
                 id="warming-up",
                 class_="alert alert-warning",
             )
