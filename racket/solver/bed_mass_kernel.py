@@ -297,12 +297,20 @@ def _ball_at(law, params, f, f_max, memo, i):
         return (f_max * (1.0 - e2) + e2 * f) / k, e2 / k
     if f >= f_max:
         return _loading(law, params, f)
-    _ball_memo(law, params, f_max, memo, i)
-    if math.isnan(memo[6, i]):
-        memo[6, i] = unloading_exponent(law, params, f_max)
+    unloading_memo(law, params, f_max, memo, i)
     b = memo[6, i]
     x = memo[5, i] * (f / f_max) ** (1.0 / b)
     return x, x / (b * f)
+
+
+@njit(cache=True)
+def unloading_memo(law, params, f_max, memo, i):
+    """Rows 4-6 of column ``i`` of ``memo`` made for the ball's largest force ``f_max`` [N],
+    its unloading exponent (row 6) with them (:data:`BED_MEMO_ROWS`); for both kernels.
+    """
+    _ball_memo(law, params, f_max, memo, i)
+    if math.isnan(memo[6, i]):
+        memo[6, i] = unloading_exponent(law, params, f_max)
 
 
 @njit(cache=True)

@@ -38,18 +38,18 @@ import math
 from numba import njit
 
 from racket.solver import tile_layout as tl
-from racket.solver.ball_kernel import NEWTON_SETTLED, unloading_exponent
+from racket.solver.ball_kernel import NEWTON_SETTLED
 from racket.solver.bed_kernel import stored
 from racket.solver.bed_mass_kernel import (
     _FUSED_STEPS,
     EARLY_OVER_LATE,
     _ball_force,
-    _ball_memo,
     _remember,
     bed_force,
     bed_residual,
     massed_solve,
     peak_top,
+    unloading_memo,
 )
 from racket.solver.layout import LINEAR, STIFFENING
 
@@ -120,7 +120,7 @@ def massed_pass(law, params, bed, v, memo, lanes, picks, dt, h, n):
         for t in range(m):  # (here: a pass that calls keeps its arrays' reference counts)
             i = picks[t]
             if unloading[i] != 0.0 and (memo[4, i] != f1_max[i] or math.isnan(memo[6, i])):
-                _unloading_memo(law, params, f1_max[i], memo, i)  # made for another force
+                unloading_memo(law, params, f1_max[i], memo, i)  # made for another force
         _powers(params, f1_max, exponent, f1, unloading, den, power, picks, m)
         _powered(f1, powered, unloading, top, power, den, g, dg, n)
         _newton_step(x_lim, f_c, bed[0], h, comp, a1, u_max, delta, rate, k, x0, r0, hyperbola,
@@ -233,17 +233,6 @@ def _picks(run, powered, picks, n):
         m += 1 if powered[i] != 0.0 else 0
         live = live or run[i] != 0.0
     return m, live
-
-
-@njit(cache=True)
-def _unloading_memo(law, params, f_max, memo, i):
-    """Rows 4-6 of column ``i`` of ``memo`` made for the ball's largest force ``f_max`` [N],
-    its unloading exponent (row 6) with them (:data:`racket.solver.bed_mass_kernel.
-    BED_MEMO_ROWS`).
-    """
-    _ball_memo(law, params, f_max, memo, i)
-    if math.isnan(memo[6, i]):
-        memo[6, i] = unloading_exponent(law, params, f_max)
 
 
 @njit(cache=True)
