@@ -208,6 +208,9 @@ def test_with_f1_scales_modes_and_flexibility_without_recomputing():
         scaled.stations, scaled.mass_per_length, scaled.bending_stiffness, scaled.point_masses
     )
     assert scaled.modes.frequencies[0] == pytest.approx(160.0, rel=1e-12)
-    assert scaled.modes.omega == pytest.approx(fresh.modes.omega, rel=1e-9)
+    # The fresh solve's frequencies carry the eigensolver's error, eps times the finite
+    # elements' spread of stiffness to mass: 1.4e-9 of the fundamental on one of this
+    # project's machines (its LAPACK), under 1e-9 on another; the scaled ones are exact.
+    assert scaled.modes.omega == pytest.approx(fresh.modes.omega, rel=1e-8)
     assert scaled.modes.shape(x) == pytest.approx(fresh.modes.shape(x), rel=1e-7, abs=1e-9)
     assert scaled.static_flexibility(x) == pytest.approx(fresh.static_flexibility(x), rel=1e-7)

@@ -3,15 +3,18 @@
 so that a process building a catalogue racket reads them instead of importing
 :mod:`scipy.optimize` to fit them again.
 
-Each fit is keyed by a digest of every input of the fit (:func:`racket.specs.mass_fit.fit_key`):
-a sheet that is not here, or whose inputs have changed in any bit (a part's range, the
-layout), is fitted afresh.  Made by :func:`racket.specs.catalog.catalogue_fits`, which fits
-every sheet of the catalogue afresh (printed, then ``ruff format``); ``tests/test_fitted.py``
-checks that this record is what it returns, bit for bit.
+Each fit is keyed by a digest of every input of the fit to ten significant digits
+(:func:`racket.specs.mass_fit.fit_key`, :data:`racket.specs.mass_fit.KEY_DIGITS`): a sheet
+that is not here, or whose inputs have changed (a part's range, the layout), is fitted
+afresh.  Made by :func:`racket.specs.catalog.catalogue_fits`, which fits every sheet of the
+catalogue afresh (printed, then ``ruff format``); ``tests/test_fitted.py`` checks that this
+record is what it returns: the same keys, and masses within 1e-12 of the fit's (their last
+bits are those of the machine that recorded them, as the fit's own last bits follow the
+machine's BLAS and maths library).
 """
 
 FITTED = {
-    "7c49a409db3070645af32f09e1abb2aef0d45d65380bb49306ce85322fb17d1b": (
+    "0738d633d2b020931536c6a4747cd8dda8fbf103165f5c2324a5dc0ab941141a": (
         "pure-drive-2021",
         (
             0.00944990501751504,
@@ -23,7 +26,7 @@ FITTED = {
         ),
         None,
     ),
-    "520c6fe53d9ff47f0b96f42a86bc87d28a0ecae0b16bcf1cc69e26579d5c2cd7": (
+    "14a458834dffde2aa7b973f591a5308c34adcc23311f7d2d5ce80f46752ed103": (
         "pure-drive-2025",
         (
             0.00858945619767454,
@@ -35,7 +38,7 @@ FITTED = {
         ),
         None,
     ),
-    "e1193b2427e3408888811a1b50e52c1af86e9a273ae482b52d9789e99e3268ac": (
+    "5ce7f7d04d877f3c3e970c128ef37e2dcbe5a885f31348c399cf75c478b95012": (
         "pro-staff-97l-cv",
         (
             0.01193563670047507,

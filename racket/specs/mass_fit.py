@@ -15,9 +15,9 @@ range such rackets reach (found by linear programming).  A twistweight is met ex
 it can be, else as closely as the parts allow, and the residual is reported.
 
 The fits of the catalogue's sheets are recorded (:mod:`racket.specs.fitted`): a process that
-builds a catalogue racket, every command's default, reads them there, bit for bit what the
-fit gives, and does not import :mod:`scipy.optimize` (a few tenths of a second) to fit
-them again.
+builds a catalogue racket, every command's default, reads them there, what the fit gives
+(to its last bits on the machine that recorded them, alike on every machine), and does not
+import :mod:`scipy.optimize` (a few tenths of a second) to fit them again.
 """
 
 from __future__ import annotations
@@ -193,16 +193,24 @@ def _problem(layout: Layout, mass: float, balance: float, swingweight: float):
     return length, layout.moments(), np.array([mass, mass * (length - balance), swingweight])
 
 
+KEY_DIGITS = 10
+"""Significant digits of each input that key a fit in the record of fits: the moments come
+out of a matrix product and trigonometry, whose last bits follow the machine's BLAS and
+maths library (every sheet of the catalogue differed in them between two of this
+project's machines), so the key reads the inputs to 1e-10 and a fit is read alike on
+every machine; a sheet changed by more than that is fitted afresh."""
+
+
 def _key(moments, target, typical, twistweight) -> str:
-    """SHA-256 [hex] of every input of a fit: the moments, the targets, the typical split,
-    the parts' ranges and the twistweight (None: none given).
+    """SHA-256 [hex] of every input of a fit, each to :data:`KEY_DIGITS` significant digits:
+    the moments, the targets, the typical split, the parts' ranges and the twistweight
+    (None: none given).
     """
     low, high = _bounds()
-    digest = hashlib.sha256()
     twist = np.nan if twistweight is None else twistweight
-    for part in (moments, target, typical, low, high, [twist]):
-        digest.update(np.ascontiguousarray(part, dtype=float).tobytes())
-    return digest.hexdigest()
+    values = np.concatenate([np.ravel(p) for p in (moments, target, typical, low, high, [twist])])
+    text = " ".join(f"{v:.{KEY_DIGITS - 1}e}" for v in values.astype(float))
+    return hashlib.sha256(text.encode()).hexdigest()
 
 
 def fit_key(
