@@ -50,8 +50,7 @@ def test_the_key_does_not_follow_the_machines_last_bits(name):
     key = _key(moments, target, typical, None)
     assert key in FITTED
     for ulps in (-3, 3):
-        def nudged(a, ulps=ulps):
-            a = np.array(a, dtype=float)
-            return a + ulps * np.spacing(a)
-
-        assert _key(nudged(moments), nudged(target), nudged(typical), None) == key
+        nudged = [
+            np.asarray(a, dtype=float) + ulps * np.spacing(a) for a in (moments, target, typical)
+        ]
+        assert _key(*nudged, None) == key
