@@ -18,7 +18,7 @@ from collections.abc import Sequence
 import numpy as np
 
 from ball.laws import MonotoneLaw, _PowerBranches
-from common.checks import ArgumentTypeError, finite, finite_array, shown
+from common.checks import ArgumentTypeError, finite, finite_array, non_negative, shown
 
 _DOUBLINGS = 2100
 """Doublings of the force at most while bracketing the root (2**2100 spans every float)."""
@@ -98,7 +98,10 @@ def series_force(laws: Sequence[MonotoneLaw], z, f_max, rtol: float = 1e-14, gue
         z = finite("z", z, "m")
         return series_solver(laws, f_max, rtol)(z, guess)
     z = finite_array("z", z, "m")
-    z, f_max = np.broadcast_arrays(z, finite_array("f_max", f_max, "N"))
+    f_max = finite_array("f_max", f_max, "N")
+    if (f_max < 0.0).any():  # a force, never negative (a power law's branch would be NaN)
+        raise ValueError(f"f_max must be >= 0 N, got {shown(f_max[f_max < 0.0].flat[0])}")
+    z, f_max = np.broadcast_arrays(z, f_max)
     with np.errstate(over="ignore"):
         return _array_force(laws, z, f_max, rtol)
 
@@ -124,7 +127,7 @@ def series_solver(laws: Sequence[MonotoneLaw], f_max: float, rtol: float = 1e-14
         Newton's method starting from ``guess`` [N] as in :func:`series_force`.
     """
     laws = _checked(laws)
-    f_max = finite("f_max", f_max, "N")
+    f_max = non_negative("f_max", f_max, "N")
     with np.errstate(over="ignore"):  # a huge f_max's loading compression overflows to inf
         branches = [_branch(law, f_max) for law in laws]
         unit = float(series_compression(laws, 1.0, 1.0))

@@ -6,6 +6,7 @@ import pytest
 
 from ball import WALL, Ball, collide, series_cor
 from ball.laws import LinearHysteresis, LinearSpring, PowerLawHysteresis, SineLaw
+from ball.series import series_force, series_solver
 
 
 @pytest.mark.parametrize(
@@ -61,3 +62,14 @@ def test_message_names_value_and_range():
     with pytest.raises(ValueError) as err:
         LinearHysteresis(4e4, 1.2)
     assert "1.2" in str(err.value) and "[0, 1]" in str(err.value)
+
+
+@pytest.mark.parametrize("f_max", [-1.0, [5.0, -1.0], -1e30])
+def test_a_negative_largest_force_is_refused_not_warned(f_max):
+    """A force is never negative: one line naming f_max and the value, no power of a
+    negative number (a RuntimeWarning before)."""
+    laws = [PowerLawHysteresis(1e6, 1.5, 2.5), LinearSpring(4e4)]
+    with pytest.raises(ValueError, match=r"^f_max must be >= 0 N, got -1"):
+        series_force(laws, 0.001, f_max)
+    with pytest.raises(ValueError, match=r"^f_max must be >= 0 N"):
+        series_solver(laws, -1.0)
