@@ -8,6 +8,7 @@ for its readers; the sweep's CSV, written without pandas, is pandas' own, byte f
 
 import ast
 import importlib
+import os
 import subprocess
 import sys
 from pathlib import Path
@@ -16,6 +17,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
+from common.blas import BLAS_THREADS
 from studies.cli.files import write_table
 from studies.tables import frame
 
@@ -68,6 +70,27 @@ def test_python_m_runs_the_console_command():
     assert done.returncode == 0, done.stderr
     assert done.stdout.startswith("racket-impact ")
     assert done.stdout.splitlines()[-1] == "frozen: True"  # studies.entry.main's exit
+
+
+def test_python_m_runs_blas_on_one_thread_as_the_console_command():
+    """``python -m studies.cli`` imports the package, and numpy with it, before the
+    ``__main__`` that would set BLAS's threads: the package sets them itself while Python
+    locates the module (``sys.argv[0]`` is "-m" then), unless the environment set them."""
+    probe = (
+        "import sys\n"
+        "sys.argv[0] = '-m'  # as while python -m locates the module\n"
+        "import studies.cli, threadpoolctl\n"
+        "print(max(p['num_threads'] for p in threadpoolctl.threadpool_info()"
+        " if p['user_api'] == 'blas'))\n"
+    )
+    env = {k: v for k, v in os.environ.items() if k not in BLAS_THREADS}
+    for given, threads in ((None, "1"), ("2", "2")):
+        if given:
+            env["OPENBLAS_NUM_THREADS"] = given
+        done = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True,
+                              env=env)  # fmt: skip
+        assert done.returncode == 0, done.stderr
+        assert done.stdout.split() == [threads]
 
 
 def _lists(package: str) -> tuple[set, set, set, set]:

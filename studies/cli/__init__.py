@@ -22,6 +22,12 @@ import sys
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from common.blas import one_blas_thread_unless_set
+
+if sys.argv[:1] == ["-m"]:  # python -m studies.cli: this package loads numpy before the
+    one_blas_thread_unless_set()  # __main__ that studies.entry runs (argv[0] is "-m" then);
+    # the imports below come after it
+
 from ball import DEFAULT_BALL
 from common.lazy import lazy_names
 from common.version import __version__
