@@ -6,8 +6,6 @@ import math
 import warnings
 from dataclasses import dataclass
 
-import numpy as np
-
 from ball.laws import MonotoneLaw, SineLaw
 from common.checks import (
     CM_AS_M,
@@ -151,7 +149,7 @@ def warn_if_squashed(ball: Ball, compression, stacklevel: int = 3) -> None:
     compression = finite_array("compression", compression, "m")
     if compression.size == 0:
         raise ValueError("compression must be one or more numbers [m], got none")
-    largest = float(np.max(compression))
+    largest = float(compression.max())
     if ball.radius is not None and largest > ball.radius:
         warnings.warn(
             f"the ball is compressed by {1e3 * largest:.3g} mm, more than its radius "

@@ -14,6 +14,7 @@ exponential written relative to the far end.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
@@ -40,7 +41,7 @@ def free_free_roots(n: int) -> np.ndarray:
     return x
 
 
-def shapes(beta_l: np.ndarray, xi) -> np.ndarray:
+def shapes(beta_l: np.ndarray, xi, terms=None) -> np.ndarray:
     """Normalised shapes Phi_n at fractional positions ``xi`` = x / L (from either end).
 
     Returns an array of shape (len(beta_l), len(xi)) with (1/L) int Phi**2 dx = 1.
@@ -51,20 +52,31 @@ def shapes(beta_l: np.ndarray, xi) -> np.ndarray:
         Roots bL [-] of the modes wanted (see :func:`free_free_roots`).
     xi : float or array_like
         Fractional positions x / L along the beam [-], in [0, 1].
+    terms : tuple, optional
+        :func:`shape_terms` of ``beta_l``, computed once for many calls; None: computed
+        here.
     """
-    bl = np.asarray(beta_l, dtype=float)[:, None]
+    bl, grow, grow_scale, fall, s = shape_terms(beta_l) if terms is None else terms
     u = bl * np.atleast_1d(np.asarray(xi, dtype=float))[None, :]
     # s = (cosh bL - cos bL) / (sinh bL - sin bL); 1 - s is tiny for large bL, so the
     # growing part (1 - s) e^u / 2 of cosh u - s sinh u is written with e^(u - bL) <= 1.
+    return grow * np.exp(u - bl) / grow_scale + fall * np.exp(-u) + np.cos(u) - s * np.sin(u)
+
+
+def shape_terms(beta_l: np.ndarray) -> tuple:
+    """The parts of :func:`shapes` that do not depend on the position, (len(beta_l), 1)
+    each [-]: bL, the growing part's factor and its scale, the falling part's factor and s.
+
+    Parameters
+    ----------
+    beta_l : ndarray
+        Roots bL [-] of the modes wanted (see :func:`free_free_roots`).
+    """
+    bl = np.asarray(beta_l, dtype=float)[:, None]
     e_l = np.exp(-bl)
     s = (np.cosh(bl) - np.cos(bl)) / (np.sinh(bl) - np.sin(bl))
-    grow = (
-        0.5
-        * (np.cos(bl) - np.sin(bl) - e_l)
-        * np.exp(u - bl)
-        / (0.5 * (1.0 - e_l**2) - np.sin(bl) * e_l)
-    )
-    return grow + 0.5 * (1.0 + s) * np.exp(-u) + np.cos(u) - s * np.sin(u)
+    grow = 0.5 * (np.cos(bl) - np.sin(bl) - e_l)
+    return bl, grow, 0.5 * (1.0 - e_l**2) - np.sin(bl) * e_l, 0.5 * (1.0 + s), s
 
 
 @dataclass(frozen=True, eq=False)
@@ -87,6 +99,11 @@ class UniformShapes:
     length: float
     scale: float
 
+    @cached_property
+    def _terms(self) -> tuple:
+        """:func:`shape_terms` of the modes, computed once (the shapes are frozen)."""
+        return shape_terms(self.beta_l)
+
     def __call__(self, x) -> np.ndarray:
         """The shapes at ``x`` [m from the tip] (see the class docstring)."""
-        return self.scale * shapes(self.beta_l, np.asarray(x) / self.length)
+        return self.scale * shapes(self.beta_l, np.asarray(x) / self.length, self._terms)

@@ -262,7 +262,7 @@ class Racket(Implement):
         x = impact_positions(position)
         start, end = self.strings.extent
         off = (x < start) | (x > end)
-        if np.any(off):
+        if off.any():
             raise ValueError(
                 f"position must be on the strings, in [{start:g}, {end:g}] m from "
                 f"the tip, got {shown(x[off][0])}"

@@ -110,7 +110,9 @@ class BlockSystem:
         phi : ndarray (P, N)
             Mode shapes at the points [1/sqrt(kg)].
         """
-        return self.state(np.hstack([np.zeros_like(phi), phi]))
+        z = np.zeros((phi.shape[0], 2 * phi.shape[1]))  # (cheaper than stacking)
+        z[:, phi.shape[1] :] = phi
+        return self.state(z)
 
     def outputs(self, phi: np.ndarray):
         """Rows (P, nb, 2) giving the displacement, the velocity and the dc (rigid-body)

@@ -101,13 +101,14 @@ def unclosed(fields: dict, ball) -> np.ndarray:
 
 
 def _closes(fields: dict) -> np.ndarray:
-    """Which impacts (P,) give e <= 1 and close their budget, both to :data:`BUDGET_TOL`."""
+    """Which impacts (P,) give e <= 1 and close their budget, both to :data:`BUDGET_TOL`
+    (NaN does not: called within ``np.errstate(invalid="ignore")``).
+    """
     e = np.atleast_1d(fields["e"])
     residual = np.abs(np.atleast_1d(fields["energy_residual"]))
-    with np.errstate(invalid="ignore"):
-        return (e <= 1.0 + BUDGET_TOL) & (
-            residual <= BUDGET_TOL * np.atleast_1d(fields["energy_initial"])
-        )
+    return (e <= 1.0 + BUDGET_TOL) & (
+        residual <= BUDGET_TOL * np.atleast_1d(fields["energy_initial"])
+    )
 
 
 def refined(solve, steps: int):
@@ -129,7 +130,8 @@ def refined(solve, steps: int):
         if before is not None:
             moved = np.abs(np.atleast_1d(fields["e"]) - np.atleast_1d(before))
         before = fields["e"]
-    return fields, t, _closes(fields) & (moved <= SETTLED_E)
+    with np.errstate(invalid="ignore"):
+        return fields, t, _closes(fields) & (moved <= SETTLED_E)
 
 
 def answered_up_to(answers, closing: float) -> float:

@@ -171,13 +171,13 @@ def impact(
     instance("ball", ball, Ball, "a ball.Ball")
     if histories != "force":
         histories = flag("histories", histories)
-    scalar = np.ndim(position) == 0 and np.ndim(offset) == 0
+    scalar = np.ndim(position) == 0 and (offset is None or np.ndim(offset) == 0)
     x, y = racket.check_points(position, offset)
     speed = check_speed("speed", speed, allow_zero=True)
     scalar = scalar and np.ndim(swing_speed) == 0
     swing = _swing_speeds(swing_speed, x.size)
     closing = speed + swing
-    if np.any(closing == 0.0):
+    if (closing == 0.0).any():
         raise ValueError("speed must be > 0 m/s (or the racket swung, swing_speed > 0), got 0")
     if pivot is not None:
         pivot = finite("pivot", pivot, "m from the tip")
@@ -197,7 +197,7 @@ def impact(
         steps_per_contact = SINE_STEPS_PER_CONTACT if sine else DEFAULT_STEPS_PER_CONTACT
     steps_per_contact = int(in_range("steps_per_contact", steps_per_contact, 50, 100_000))
     watch_after = in_range("watch_after", watch_after, 0.0, 1.0, "s")
-    if np.any(swing):
+    if swing.any():
         racket.check_swing(pivot)
     f1 = racket.beam.modes.frequencies[0] if racket.beam.modes.count > 2 else np.inf
     if f1 < F1_MIN:
@@ -231,7 +231,7 @@ def impact(
         }
     squashed = fields.pop("compression")
     self_consistent = fields["self_consistent"]
-    if not np.all(self_consistent):
+    if not self_consistent.all():
         warnings.warn(
             f"{np.count_nonzero(~self_consistent)} of {x.size} unhappy-ball impacts "
             f"(first at {x[~self_consistent][0]:g} m from the tip) have no self-consistent "
@@ -248,7 +248,7 @@ def impact(
         )
     if scalar:
         fields = {
-            k: (v if v is None else v[0] if v.ndim > 1 else v[0].item()) for k, v in fields.items()
+            k: (v if v is None else v[0] if v.ndim > 1 else v.item()) for k, v in fields.items()
         }
     return Impact(speed=speed, t=parts[0][1], **fields)
 
@@ -279,24 +279,26 @@ def _time_step_batches(racket: Implement, ball: Ball, closing: np.ndarray) -> li
     each impact's result depends on its own inputs only; a linear ball has one.  ValueError
     if the contact would last longer than ``CONTACT_TIME_MAX``.
     """
-    if closing[0] == closing.min() == closing.max():  # one speed (a sweep's usual case)
-        speeds, group = closing[:1], np.zeros(closing.size, dtype=int)
+    # (one speed, a sweep's usual case, and a single impact's: without np.unique's sort)
+    if closing.size == 1 or closing[0] == closing.min() == closing.max():
+        speeds, group = closing[:1], None
     else:
         speeds, group = np.unique(closing, return_inverse=True)
-    scales = np.array([contact_time_scale(ball, racket.contact.stiffness, c) for c in speeds])
-    if scales.max() > CONTACT_TIME_MAX:
-        slow = speeds[np.argmax(scales)]
+    scales = [contact_time_scale(ball, racket.contact.stiffness, c) for c in speeds]
+    longest = max(scales)
+    if longest > CONTACT_TIME_MAX:
+        slow = speeds[scales.index(longest)]
         strings = np.isfinite(racket.contact.stiffness)  # (a bat's ball meets the wood)
         raise ValueError(
             f"the ball{' and strings are' if strings else ' is'} too soft at this speed "
-            f"({slow:.3g} m/s): the contact would last about {1e3 * scales.max():.3g} ms, "
+            f"({slow:.3g} m/s): the contact would last about {1e3 * longest:.3g} ms, "
             f"and racket-impact resolves contacts up to {1e3 * CONTACT_TIME_MAX:g} ms (ball "
             f"stiffness {ball.law.secant_stiffness(ball.mass, slow):.3g} N/m"
             + (f", strings {racket.contact.stiffness:.3g} N/m)" if strings else ")")
         )
     if speeds.size == 1:
         return [np.arange(closing.size)]
-    _, step_group = np.unique(scales[group], return_inverse=True)
+    _, step_group = np.unique(np.array(scales)[group], return_inverse=True)
     return [np.flatnonzero(step_group == g) for g in range(step_group.max() + 1)]
 
 
@@ -348,7 +350,7 @@ def _solve_at(
     outputs = stepper.run(x_o, extra_steps=extra_steps, history_steps=record,
                           force_only=force_only)  # fmt: skip
     ended = outputs.summary[:, layout.ENDED]
-    if not np.all(ended):
+    if not ended.all():
         raise NotEnded(
             f"the impact at {x[ended == 0][0]:g} m from the tip had not ended after "
             f"{stepper.max_steps * stepper.dt:.3g} s"

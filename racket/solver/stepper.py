@@ -71,7 +71,7 @@ def _swing_velocities(modes, position, swing_speed, pivot):
     """Rigid-mode velocities (P, 2) of a racket whose impact point moves at -swing_speed
     (P,).
     """
-    if not np.any(swing_speed):
+    if not swing_speed.any():
         return np.zeros((position.size, 2))
     if pivot is None:  # pure translation
         v_cm = np.full(position.size, -swing_speed)
@@ -113,8 +113,8 @@ class Stepper:
         if swing_speed.shape != x.shape:  # (impact's are one per point already)
             swing_speed = np.broadcast_to(swing_speed, x.shape)
         self.closing = speed + swing_speed
-        self.dt = contact_time_scale(ball, racket.contact.stiffest, self.closing[0])
-        self.dt /= steps_per_contact
+        scale = contact_time_scale(ball, racket.contact.stiffest, self.closing[0])
+        self.dt = float(scale) / steps_per_contact  # (a float: numpy's scalars cost more)
         self.steps_per_contact = steps_per_contact
         self.max_steps = 12 * steps_per_contact
         law = getattr(ball.law, "kernel_law", None)
@@ -129,7 +129,7 @@ class Stepper:
         out_d, out_v, out_dc = system.outputs(phi)
         self.swing_qd = _swing_velocities(modes, x, swing_speed, pivot)
         state0 = np.zeros((x.size, system.blocks.shape[0], 2))  # at rest
-        if np.any(swing_speed):
+        if swing_speed.any():
             z0 = np.zeros((x.size, 2 * n))
             z0[:, n : n + 2] = self.swing_qd
             state0 = system.state(z0)

@@ -205,6 +205,6 @@ class StringBed:
         (:func:`racket.strings.membrane.stiffness_ratio`) for a ``"membrane"`` one.
         """
         if self.profile == "uniform":
-            shape = np.broadcast_shapes(np.asarray(x, float).shape, np.asarray(y, float).shape)
+            shape = np.broadcast(np.asarray(x, float), np.asarray(y, float)).shape
             return np.full(shape, self.stiffness)
         return self.stiffness * stiffness_ratio(self.rho2(x, y), self._radius)  # (broadcast)
