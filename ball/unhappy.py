@@ -49,7 +49,9 @@ vanishes, and dt/dtheta stays finite there (both |H'| and sqrt(s) vanish linearl
 
 from __future__ import annotations
 
+import functools
 import itertools
+from typing import NamedTuple
 
 import numpy as np
 from scipy.integrate import cumulative_simpson
@@ -69,6 +71,45 @@ def _clustered(a: float, b: float, n: int = _NODES) -> np.ndarray:
     return np.unique(a + (b - a) * 0.5 * (1.0 - np.cos(np.linspace(0.0, np.pi, n))))
 
 
+class _Phases(NamedTuple):
+    """A grid of phases theta [rad] with their sines and cosines [-], read-only: one that
+    every Xo Brent's method tries is evaluated on, its trigonometry computed once.
+    """
+
+    theta: np.ndarray
+    sin: np.ndarray
+    cos: np.ndarray
+
+
+def _phases(theta: np.ndarray) -> _Phases:
+    """The :class:`_Phases` of the grid ``theta`` [rad]."""
+    kept = _Phases(theta, np.sin(theta), np.cos(theta))
+    for values in kept:
+        values.flags.writeable = False
+    return kept
+
+
+@functools.cache
+def _fold_phases() -> _Phases:
+    """The grid :meth:`_Path.fold` looks for the fold on: pi/2 to pi, 4097 points."""
+    return _phases(np.linspace(0.5 * np.pi, np.pi, 4097))
+
+
+@functools.lru_cache(maxsize=16)
+def _work_phases(a: float, b: float) -> _Phases:
+    """The grid :meth:`_Path.work` integrates on from ``a`` to ``b`` [rad]: :func:`_clustered`
+    on each side of pi/2, where the partner turns from loading to unloading.
+
+    Kept: every Xo that Brent's method tries integrates from 0 to the same fold (pi
+    without one; a linear partner puts it at the same phase for any Xo), and each grid costs
+    a sort and a sine and cosine of its points.  The key is two numbers, so nothing
+    invalidates an entry; beyond 16 (0.4 MB each) the least recently used go.
+    """
+    cuts = [a, *([0.5 * np.pi] if a < 0.5 * np.pi < b else []), b]
+    pieces = [_clustered(p, q) for p, q in itertools.pairwise(cuts)]
+    return _phases(np.concatenate([pieces[0], *(piece[1:] for piece in pieces[1:])]))
+
+
 class _Path:
     """Force, compressions and H'(theta) of the unhappy ball and its partner for one Xo."""
 
@@ -77,8 +118,12 @@ class _Path:
         self.f_o = sine.k0 * x_o
 
     def state(self, theta):
-        """Force [N], sine-ball compression [m], partner compression [m], dH/dtheta [m]."""
-        force = self.f_o * np.sin(theta)
+        """Force [N], sine-ball compression [m], partner compression [m], dH/dtheta [m] at
+        the phases ``theta`` [rad] (or a kept grid of them, :class:`_Phases`).
+        """
+        kept = theta if isinstance(theta, _Phases) else None
+        theta = theta if kept is None else kept.theta
+        force = self.f_o * (np.sin(theta) if kept is None else kept.sin)
         x = self.x_o * theta / np.pi
         h_prime = np.full(np.shape(theta), self.x_o / np.pi)
         if self.partner is None:
@@ -87,7 +132,8 @@ class _Path:
         f_max = np.where(theta <= 0.5 * np.pi, force, self.f_o)
         y = self.partner.compression(force, f_max)
         with np.errstate(invalid="ignore"):
-            h_prime = h_prime + self.partner.compliance(force, f_max) * self.f_o * np.cos(theta)
+            cos = np.cos(theta) if kept is None else kept.cos
+            h_prime = h_prime + self.partner.compliance(force, f_max) * self.f_o * cos
         return force, x, y, h_prime
 
     def power(self, theta):
@@ -100,8 +146,8 @@ class _Path:
 
     def fold(self) -> float:
         """theta* = argmax H: the first zero of H' past pi/2, or pi if H rises throughout."""
-        grid = np.linspace(0.5 * np.pi, np.pi, 4097)
-        h_prime = self.state(grid)[3]
+        phases = _fold_phases()
+        grid, h_prime = phases.theta, self.state(phases)[3]
         down = np.nonzero(~(h_prime > 0))[0]
         if down.size == 0:
             return np.pi
@@ -118,10 +164,8 @@ class _Path:
 
     def work(self, a: float, b: float) -> float:
         """int_a^b F H' dtheta [J]: work done on the contact as theta goes from a to b."""
-        cuts = [a, *([0.5 * np.pi] if a < 0.5 * np.pi < b else []), b]
-        pieces = [_clustered(p, q) for p, q in itertools.pairwise(cuts)]
-        theta = np.concatenate([pieces[0], *(piece[1:] for piece in pieces[1:])])
-        return float(cumulative_simpson(self.power(theta), x=theta)[-1])
+        phases = _work_phases(a, b)
+        return float(cumulative_simpson(self.power(phases), x=phases.theta)[-1])
 
 
 def _solve_x_o(sine: SineLaw, partner: MonotoneLaw | None, energy: float) -> float:

@@ -11,7 +11,6 @@ from pathlib import Path
 
 import numpy as np
 
-from ball import WALL, collide
 from studies import outputs
 from studies.cli.files import _sidecar, check_outputs, plot_bytes
 from studies.cli.options import _print_table
@@ -81,17 +80,17 @@ def _figure_pool():
     Forked once the solver is loaded here (numba, matplotlib and the plots then imported
     once for all, the solver's threads not yet started); where there is no fork, spawned.
     """
-    import multiprocessing
-    from concurrent.futures import ProcessPoolExecutor
-
-    from racket.solver import load_kernel
-    from studies.scale import quiet_worker
-
     cores = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count()
     busy = os.getloadavg()[0] if hasattr(os, "getloadavg") else 0.0
     if (cores or 1) - busy < IDLE_CORES:
         yield None
         return
+    import multiprocessing  # imported for a pool alone (0.035 s)
+    from concurrent.futures import ProcessPoolExecutor
+
+    from racket.solver import load_kernel
+    from studies.scale import quiet_worker
+
     load_kernel()
     methods = multiprocessing.get_all_start_methods()
     context = multiprocessing.get_context("fork" if "fork" in methods else "spawn")
@@ -134,24 +133,23 @@ def paper_figures() -> dict:
     import matplotlib
 
     matplotlib.use("Agg")
-    from ball import Ball, LinearSpring, SineLaw
     from racket import impact, paper_ball, paper_racket
     from studies import plots
     from studies.conditions import conditions_line, racket_details
+    from studies.paper import figure_collision
     from studies.serve import serve_what_if
 
-    unhappy = Ball(0.0103, SineLaw(2e4))
     racket, ball = paper_racket(), paper_ball()
     said = conditions_line("paper", "paper", **racket_details(racket))
     return {
         "fig2_unhappy_on_wall.png": lambda: plots.plot_collision(
-            collide(unhappy, WALL, 4.0), title="Fig. 2: unhappy ball on a rigid wall"
+            figure_collision(None), title="Fig. 2: unhappy ball on a rigid wall"
         ),
         "fig3_soft_happy_ball.png": lambda: plots.plot_collision(
-            collide(unhappy, Ball(0.0103, LinearSpring(2e4)), 4.0), title="Fig. 3: k2 = 2e4 N/m"
+            figure_collision(2e4), title="Fig. 3: k2 = 2e4 N/m"
         ),
         "fig4_stiff_happy_ball.png": lambda: plots.plot_collision(
-            collide(unhappy, Ball(0.0103, LinearSpring(1e5)), 4.0), title="Fig. 4: k2 = 1e5 N/m"
+            figure_collision(1e5), title="Fig. 4: k2 = 1e5 N/m"
         ),
         "cor_vs_stiffness.png": plots.plot_cor_vs_stiffness,
         "cor_along_racket.png": lambda: plots.plot_cor_along_racket(
