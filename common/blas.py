@@ -11,7 +11,9 @@ count the user set in the environment is kept.
 
 from __future__ import annotations
 
+import itertools
 import os
+import sys
 
 BLAS_THREADS = ("OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS")
 """The variables that set BLAS's threads in this process and in those it starts."""
@@ -23,3 +25,18 @@ def one_blas_thread_unless_set() -> None:
     """
     for variable in BLAS_THREADS:
         os.environ.setdefault(variable, "1")
+
+
+def located_by_python_m(module: str) -> bool:
+    """Whether ``python -m module`` is locating ``module`` (and importing its packages) now:
+    ``sys.argv[0]`` is "-m" until the module runs (Python's documentation, "Command line and
+    environment"), and ``sys.orig_argv`` names the module.
+
+    Parameters
+    ----------
+    module : str
+        The module's dotted name.
+    """
+    args = getattr(sys, "orig_argv", ())
+    named = ("-m", module) in itertools.pairwise(args) or f"-m{module}" in args
+    return sys.argv[:1] == ["-m"] and named

@@ -25,7 +25,7 @@ def happy(k2: float) -> Ball:
     return Ball(0.0103, LinearSpring(k2))
 
 
-@functools.cache
+@functools.lru_cache(maxsize=3)
 def figure_collision(k2: float | None) -> Collision:
     """The collision of the paper's Figs. 2-4: the unhappy ball at 4 m/s on a happy ball at
     rest of stiffness ``k2`` [N/m], or on the rigid wall (None).  Kept: the claims and the

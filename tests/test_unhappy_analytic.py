@@ -2,8 +2,10 @@
 
 import numpy as np
 import pytest
+from scipy.integrate import cumulative_simpson
 
-from ball import Ball, LinearSpring, SineLaw, collide, unhappy_solution
+from ball import Ball, LinearHysteresis, LinearSpring, SineLaw, collide, unhappy_solution
+from ball.unhappy import _fold_phases, _Path, _work_phases
 
 M1, M2, K0, V1 = 0.0103, 0.0207, 2e4, 4.0
 
@@ -38,3 +40,19 @@ def test_integration_reproduces_analytic_histories(k2):
     assert np.allclose(r.history.force, s.force, atol=1e-5 * s.f_o)
     assert np.allclose(r.history.position_a, s.x, atol=1e-5 * s.x_o)
     assert np.allclose(r.history.position_b, s.y, atol=1e-5 * s.x_o)
+
+
+@pytest.mark.parametrize("partner", [None, LinearSpring(2e4), LinearHysteresis(4e4, 0.75)])
+def test_the_kept_phase_grids_give_the_fresh_grids_bits(partner):
+    """The unhappy ball's phase grids are kept with their sines and cosines (the same grid
+    for every Xo Brent's method tries): the path on a kept grid is the path on the bare
+    phases, bit for bit, and a kept work grid is the one made afresh."""
+    path = _Path(SineLaw(2e4), partner, 0.004)
+    kept = _fold_phases()
+    for on_kept, on_bare in zip(path.state(kept), path.state(kept.theta), strict=True):
+        assert np.array_equal(on_kept, on_bare)
+    fresh = _work_phases.__wrapped__(0.0, 0.9 * np.pi)
+    assert np.array_equal(_work_phases(0.0, 0.9 * np.pi).theta, fresh.theta)
+    assert path.work(0.0, 0.9 * np.pi) == float(
+        cumulative_simpson(path.power(fresh.theta), x=fresh.theta)[-1]
+    )

@@ -161,7 +161,8 @@ CATALOG = {
 def catalogue_fits() -> dict:
     """The part-mass fit of every sheet of :data:`CATALOG`, fitted afresh
     (:func:`racket.specs.mass_fit.fit_masses`, with scipy), keyed as the record of fits
-    keeps them: what :data:`racket.specs.fitted.FITTED` must hold, and how it is made.
+    keeps them: what :data:`racket.specs.fitted.FITTED` must hold (the same keys, the masses
+    to 1e-12: their last bits follow the machine), and how it is made.
     """
     fits = {}
     for name, entry in CATALOG.items():

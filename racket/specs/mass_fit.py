@@ -9,10 +9,12 @@ with every part inside its range:
     minimise sum_i ((m_i - typical_i) / (high_i - low_i))**2
     subject to A m = t and low_i <= m_i <= high_i.
 
-Mass, balance and swingweight are met exactly (to rounding) whenever a racket with parts in
-their ranges can meet them; otherwise the sheet is refused, naming the quantity and the
-range such rackets reach (found by linear programming).  A twistweight is met exactly when
-it can be, else as closely as the parts allow, and the residual is reported.
+Mass, balance and swingweight are met exactly (to rounding; a sheet within
+:data:`KEY_DIGITS` of a recorded one reads its record, to a relative 1e-9) whenever a
+racket with parts in their ranges can meet them; otherwise the sheet is refused, naming the
+quantity and the range such rackets reach (found by linear programming).  A twistweight is
+met exactly when it can be, else as closely as the parts allow, and the residual is
+reported.
 
 The fits of the catalogue's sheets are recorded (:mod:`racket.specs.fitted`): a process that
 builds a catalogue racket, every command's default, reads them there, what the fit gives
@@ -197,8 +199,12 @@ KEY_DIGITS = 10
 """Significant digits of each input that key a fit in the record of fits: the moments come
 out of a matrix product and trigonometry, whose last bits follow the machine's BLAS and
 maths library (every sheet of the catalogue differed in them between two of this
-project's machines), so the key reads the inputs to 1e-10 and a fit is read alike on
-every machine; a sheet changed by more than that is fitted afresh."""
+project's machines), so the key reads each input to ten significant digits (a relative
+1e-10 to 1e-9) and a fit is read alike on every machine; a sheet changed by more than that
+is fitted afresh, and one changed by less reads the record (its masses then meet the sheet
+to that relative 1e-9, not to rounding).  An input within a few units in the last place of
+a rounding boundary would still be keyed apart on two machines (the catalogue's sit some
+1e4 units from one; ``tests/test_fitted.py`` nudges them by 3)."""
 
 
 def _key(moments, target, typical, twistweight) -> str:
@@ -209,7 +215,8 @@ def _key(moments, target, typical, twistweight) -> str:
     low, high = _bounds()
     twist = np.nan if twistweight is None else twistweight
     values = np.concatenate([np.ravel(p) for p in (moments, target, typical, low, high, [twist])])
-    text = " ".join(f"{v:.{KEY_DIGITS - 1}e}" for v in values.astype(float))
+    values = values.astype(float) + 0.0  # (-0.0 read as 0.0)
+    text = " ".join(f"{v:.{KEY_DIGITS - 1}e}" for v in values)
     return hashlib.sha256(text.encode()).hexdigest()
 
 

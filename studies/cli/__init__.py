@@ -22,11 +22,13 @@ import sys
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from common.blas import one_blas_thread_unless_set
+from common.blas import located_by_python_m, one_blas_thread_unless_set
 
-if sys.argv[:1] == ["-m"]:  # python -m studies.cli: this package loads numpy before the
-    one_blas_thread_unless_set()  # __main__ that studies.entry runs (argv[0] is "-m" then);
-    # the imports below come after it
+# python -m studies.cli: BLAS on one thread, as the console command has it (studies.entry),
+# set here since this package loads numpy before its __main__ runs; the imports below come
+# after it.  (runpy.run_module does not come here: studies.entry's setting is then too late.)
+if located_by_python_m("studies.cli"):
+    one_blas_thread_unless_set()
 
 from ball import DEFAULT_BALL
 from common.lazy import lazy_names
