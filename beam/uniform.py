@@ -41,7 +41,7 @@ def free_free_roots(n: int) -> np.ndarray:
     return x
 
 
-def shapes(beta_l: np.ndarray, xi, terms=None) -> np.ndarray:
+def shapes(beta_l: np.ndarray, xi) -> np.ndarray:
     """Normalised shapes Phi_n at fractional positions ``xi`` = x / L (from either end).
 
     Returns an array of shape (len(beta_l), len(xi)) with (1/L) int Phi**2 dx = 1.
@@ -52,11 +52,15 @@ def shapes(beta_l: np.ndarray, xi, terms=None) -> np.ndarray:
         Roots bL [-] of the modes wanted (see :func:`free_free_roots`).
     xi : float or array_like
         Fractional positions x / L along the beam [-], in [0, 1].
-    terms : tuple, optional
-        :func:`shape_terms` of ``beta_l``, computed once for many calls; None: computed
-        here.
     """
-    bl, grow, grow_scale, fall, s = shape_terms(beta_l) if terms is None else terms
+    return _shapes_from(shape_terms(beta_l), xi)
+
+
+def _shapes_from(terms: tuple, xi) -> np.ndarray:
+    """:func:`shapes` from the modes' :func:`shape_terms` ``terms`` (made once for many
+    calls), at fractional positions ``xi`` [-].
+    """
+    bl, grow, grow_scale, fall, s = terms
     u = bl * np.atleast_1d(np.asarray(xi, dtype=float))[None, :]
     # s = (cosh bL - cos bL) / (sinh bL - sin bL); 1 - s is tiny for large bL, so the
     # growing part (1 - s) e^u / 2 of cosh u - s sinh u is written with e^(u - bL) <= 1.
@@ -106,4 +110,4 @@ class UniformShapes:
 
     def __call__(self, x) -> np.ndarray:
         """The shapes at ``x`` [m from the tip] (see the class docstring)."""
-        return self.scale * shapes(self.beta_l, np.asarray(x) / self.length, self._terms)
+        return self.scale * _shapes_from(self._terms, np.asarray(x) / self.length)

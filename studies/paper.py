@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 
 import numpy as np
@@ -29,15 +30,18 @@ def happy(k2: float) -> Ball:
 def figure_collision(k2: float | None) -> Collision:
     """The collision of the paper's Figs. 2-4: the unhappy ball at 4 m/s on a happy ball at
     rest of stiffness ``k2`` [N/m], or on the rigid wall (None).  Kept: the claims and the
-    figures of ``racket-impact paper`` ask for the same three (a Collision is not changed by
-    its readers).
+    figures of ``racket-impact paper`` ask for the same three; its histories are read-only,
+    so that no reader can change what the next one is given.
 
     Parameters
     ----------
     k2 : float or None
         Stiffness of the happy ball [N/m], > 0; None: the rigid wall.
     """
-    return collide(UNHAPPY, WALL if k2 is None else happy(k2), 4.0)
+    collision = collide(UNHAPPY, WALL if k2 is None else happy(k2), 4.0)
+    for field in dataclasses.fields(collision.history):
+        getattr(collision.history, field.name).flags.writeable = False
+    return collision
 
 
 def _stored_fraction(mass_ratio: float, ball_speed: float, racket_speed: float) -> float:

@@ -71,3 +71,17 @@ def test_cor_independent_of_masses_and_speed(ratio):
         assert r.e == pytest.approx(ref, abs=0.005)
     for speed in [0.5, 1.0, 10.0, 40.0]:
         assert collide(UNHAPPY, happy(ratio * 2e4), speed).e == pytest.approx(ref, abs=0.005)
+
+
+@pytest.mark.parametrize("k2", [None, 2e4, 1e5])
+def test_the_kept_figure_collisions_are_fresh_ones_and_read_only(k2):
+    """``racket-impact paper`` computes Figs. 2-4's collisions once for its claims and its
+    figures: each is the collision made afresh, and no reader can change its histories."""
+    from studies.paper import figure_collision
+
+    kept = figure_collision(k2)
+    fresh = collide(UNHAPPY, WALL if k2 is None else happy(k2), 4.0)
+    assert kept.e == fresh.e and kept.v_b_after == fresh.v_b_after
+    assert np.array_equal(kept.history.force, fresh.history.force)
+    with pytest.raises(ValueError, match="read-only"):
+        kept.history.force[0] = 0.0
