@@ -30,9 +30,9 @@ from __future__ import annotations
 
 import warnings
 from dataclasses import replace
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
 
 from ball import Ball, LinearHysteresis, SineLaw, StiffeningHysteresis, serve_speed
 from common.checks import SPEED_RANGE, finite, finite_array, in_range, positive, shown
@@ -44,6 +44,9 @@ from racket.solver import Unanswered
 from racket.strings.stringing import restrung
 from racket.swing import ask_head_speed
 from studies.arguments import ball_argument, racket_argument
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 
 def zero_cor_ball(ball: Ball, force: float) -> Ball:
@@ -70,7 +73,7 @@ def zero_cor_ball(ball: Ball, force: float) -> Ball:
     return replace(ball, law=SineLaw(k0=force / float(ball.law.compression(force, force))))
 
 
-def serve(racket: Racket, ball: Ball, position: float, swing: Swing) -> dict:
+def serve(racket: Racket, ball: Ball, position: float, swing: Swing, eq22: bool = True) -> dict:
     """Serve speed of ``ball`` from ``racket`` hit at ``position`` by ``swing``, both ways
     (see the module docstring).
 
@@ -83,6 +86,9 @@ def serve(racket: Racket, ball: Ball, position: float, swing: Swing) -> dict:
     swing : Swing
         The swing: its head speed is the string centre's; the impact point moves at
         v2 = :meth:`Swing.point_speeds` (faster towards the tip).
+    eq22 : bool
+        Both ways; False: the simulated serve alone (one impact, not two), the values of
+        Eq. 22 (``e``, ``effective_mass_kg``, ``serve_eq22_*``, ``ratio_eq22``) NaN.
 
     Returns
     -------
@@ -93,23 +99,26 @@ def serve(racket: Racket, ball: Ball, position: float, swing: Swing) -> dict:
         the speeds in mph (``*_mph``), and the peak force ``peak_force_N``.
     """
     v2 = float(swing.point_speeds(racket, position))
-    at_rest = impact(racket, ball, position, v2)  # the same collision as the swung one
+    e = mass = by_eq22 = float("nan")
+    if eq22:
+        at_rest = impact(racket, ball, position, v2)  # the same collision as the swung one
+        e, mass = at_rest.e, at_rest.effective_mass
+        by_eq22 = serve_speed(min(max(e, 0.0), 1.0), ball.mass, mass, v2)
     swung = impact(racket, ball, position, 0.0, **swing.impact_kwargs(racket, position))
-    eq22 = serve_speed(min(max(at_rest.e, 0.0), 1.0), ball.mass, at_rest.effective_mass, v2)
     return {
         "position_from_tip_m": float(position),
         "position_from_tip_cm": 100 * position,
         "head_speed_m_s": swing.head_speed,
         "point_speed_m_s": v2,
-        "e": at_rest.e,
-        "effective_mass_kg": at_rest.effective_mass,
-        "serve_eq22_m_s": eq22,
+        "e": e,
+        "effective_mass_kg": mass,
+        "serve_eq22_m_s": by_eq22,
         "serve_simulated_m_s": swung.ball_rebound,
-        "ratio_eq22": eq22 / v2,
+        "ratio_eq22": by_eq22 / v2,
         "ratio_simulated": swung.ball_rebound / v2,
         "head_speed_mph": swing.head_speed / MPH,
         "point_speed_mph": v2 / MPH,
-        "serve_eq22_mph": eq22 / MPH,
+        "serve_eq22_mph": by_eq22 / MPH,
         "serve_simulated_mph": swung.ball_rebound / MPH,
         "peak_force_N": swung.peak_force,
     }
@@ -151,8 +160,46 @@ def serve_table(
         those of :func:`serve`, plus ``reduction_eq22_percent`` and
         ``reduction_simulated_percent`` with ``zero_cor`` (0 for the normal ball).
     """
+    import pandas as pd
+
+    rows = serve_rows(racket, ball, position, racket_speed, pivot_from_tip, zero_cor)
+    return pd.DataFrame(rows).set_index("ball")
+
+
+def serve_rows(
+    racket: Racket,
+    ball: Ball,
+    position=None,
+    racket_speed: float = 40.0,
+    pivot_from_tip: float | None = None,
+    zero_cor: bool = True,
+    eq22: bool = True,
+) -> list[dict]:
+    """The rows of :func:`serve_table` as dicts, without pandas: the normal ball's, one per
+    position, then (with ``zero_cor``) its twin's.
+
+    Parameters
+    ----------
+    racket : Racket
+    ball : Ball
+    position : float or sequence of float, optional
+        Impact point(s) [m from the tip]; default the centre of the strings.
+    racket_speed : float
+        Racket-head speed [m/s], as in :func:`serve_table`.
+    pivot_from_tip : float, optional
+        The swing's pivot [m from the tip]; default the wrist, 5 cm beyond the butt.
+    zero_cor : bool
+        Add the rows of the zero-COR twin, as in :func:`serve_table`.
+    eq22 : bool
+        Both ways; False: the simulated serves alone, half the impacts (:func:`serve`).
+
+    Returns
+    -------
+    list of dict
+        Each row's ``ball`` (``normal``, ``zero-COR``) and the columns of :func:`serve_table`.
+    """
     racket, ball = racket_argument(racket), ball_argument(ball)
-    zero_cor = flag("zero_cor", zero_cor)
+    zero_cor, eq22 = flag("zero_cor", zero_cor), flag("eq22", eq22)
     racket_speed = check_speed("racket_speed", racket_speed)
     where = racket.strings.center if position is None else position
     positions = np.atleast_1d(finite_array("position", where, "m from the tip"))
@@ -164,29 +211,36 @@ def serve_table(
     ask_head_speed("racket_speed", racket_speed)
     with asked_by_caller():  # asked about as racket_speed, its name here
         swing = Swing(racket_speed, pivot_from_tip)
-    rows = [{"ball": "normal", **serve(racket, ball, float(x), swing)} for x in positions]
-    table = pd.DataFrame(rows).set_index("ball")
+    rows = [{"ball": "normal", **serve(racket, ball, float(x), swing, eq22)} for x in positions]
     if not zero_cor:
-        return table
+        return rows
+    twins = _twin_rows(racket, ball, rows, positions, swing, eq22)
+    return rows + twins
+
+
+def _twin_rows(racket, ball, rows, positions, swing, eq22: bool) -> list[dict]:
+    """The zero-COR twin's rows of :func:`serve_rows`, each with its reductions against the
+    normal ``rows`` (given the reductions' 0).
+    """
     # The twin meets the bed a sine-law ball can take, linear, lossless and massless (the
     # same for the paper's racket), and so, for its reduction, does the real ball.
-    plain = racket
+    plain, reference = racket, rows
     if not racket.strings.plain:
         plain = replace(racket, strings=replace(racket.strings, stretch=0.0, loss=0.0,
                                                 moving_mass=0.0))  # fmt: skip
-        rows = [serve(plain, ball, float(x), swing) for x in positions]
-    twins = pd.DataFrame([  # each point's twin as stiff as the ball is in that point's serve
+        reference = [serve(plain, ball, float(x), swing, eq22) for x in positions]
+    twins = [  # each point's twin as stiff as the ball is in that point's serve
         {"ball": "zero-COR", **serve(plain, zero_cor_ball(ball, row["peak_force_N"]),
-                                     row["position_from_tip_m"], swing)}
-        for row in rows
-    ]).set_index("ball")  # fmt: skip
-    table = pd.concat([table, twins])
-    for how in ("eq22", "simulated"):
-        col = f"serve_{how}_m_s"
-        reference = np.array([row[col] for row in rows])  # the ball on the twin's bed
-        reduced = 100.0 * (1.0 - twins[col].to_numpy() / reference)
-        table[f"reduction_{how}_percent"] = np.concatenate([np.zeros(len(rows)), reduced])
-    return table
+                                     row["position_from_tip_m"], swing, eq22)}
+        for row in reference
+    ]  # fmt: skip
+    for row in rows:
+        row.update(reduction_eq22_percent=0.0, reduction_simulated_percent=0.0)
+    for twin, row in zip(twins, reference, strict=True):  # the ball on the twin's bed
+        for how in ("eq22", "simulated"):
+            col = f"serve_{how}_m_s"
+            twin[f"reduction_{how}_percent"] = 100.0 * (1.0 - twin[col] / row[col])
+    return twins
 
 
 SLOWEST_HEAD_SPEED = 0.1
@@ -302,6 +356,40 @@ def serve_what_if(
         One row per case: ``varied`` ("strings" or "ball"), ``value``,
         then the zero-COR row of :func:`serve_table` (serve speeds and reductions).
     """
+    import pandas as pd
+
+    return pd.DataFrame(
+        serve_what_if_columns(
+            racket, ball, position, racket_speed, string_stiffness, ball_stiffness, pivot_from_tip
+        )
+    )
+
+
+def serve_what_if_columns(
+    racket: Racket,
+    ball: Ball,
+    position: float | None = None,
+    racket_speed: float = 40.0,
+    string_stiffness=None,
+    ball_stiffness=None,
+    pivot_from_tip: float | None = None,
+    eq22: bool = True,
+) -> dict:
+    """The columns of :func:`serve_what_if` as lists, without pandas.
+
+    Parameters
+    ----------
+    racket, ball, position, racket_speed, string_stiffness, ball_stiffness, pivot_from_tip :
+        As in :func:`serve_what_if`.
+    eq22 : bool
+        Both ways; False: the simulated serves alone, half the impacts, the values of
+        Eq. 22 NaN (:func:`serve`).
+
+    Returns
+    -------
+    dict
+        The columns of :func:`serve_what_if` -> one value per case.
+    """
     racket, ball = racket_argument(racket), ball_argument(ball)
     if position is not None:
         position = finite("position", position, "m from the tip")
@@ -328,10 +416,10 @@ def serve_what_if(
     with asked_by_caller():
         for k_s in string_stiffness:
             variant = replace(racket, strings=restrung(racket.strings, stiffness=float(k_s)))
-            row = serve_table(variant, ball, position, racket_speed, pivot_from_tip)
-            rows.append({"varied": "strings", "value": float(k_s), **row.loc["zero-COR"].to_dict()})
+            twin = serve_rows(variant, ball, position, racket_speed, pivot_from_tip, True, eq22)[-1]
+            rows.append({"varied": "strings", "value": float(k_s), **twin})
         for k_b in ball_stiffness:
             stiff = replace(ball, law=replace(ball.law, k=float(k_b)))
-            row = serve_table(racket, stiff, position, racket_speed, pivot_from_tip)
-            rows.append({"varied": "ball", "value": float(k_b), **row.loc["zero-COR"].to_dict()})
-    return pd.DataFrame(rows)
+            twin = serve_rows(racket, stiff, position, racket_speed, pivot_from_tip, True, eq22)[-1]
+            rows.append({"varied": "ball", "value": float(k_b), **twin})
+    return {name: [row[name] for row in rows] for name in rows[0] if name != "ball"}

@@ -1,9 +1,10 @@
 """A light start (issue 47): ``import racket`` loads none of numpy, scipy, numba, pandas or
 matplotlib; ``racket-impact sweep`` loads neither pandas, matplotlib nor the page, nor the
-modules of the other commands, nor the oblique impact's and the stroke's; ``python -m
-studies.cli`` runs as the console command; the packages whose names load on first use
-(:mod:`common.lazy`) offer the same names as before, and their source lists them alike
-for its readers; the sweep's CSV, written without pandas, is pandas' own, byte for byte.
+modules of the other commands, nor the oblique impact's and the stroke's; ``racket-impact
+paper`` loads no pandas; ``python -m studies.cli`` runs as the console command; the packages
+whose names load on first use (:mod:`common.lazy`) offer the same names as before, and their
+source lists them alike for its readers; the sweep's CSV, written without pandas, is pandas'
+own, byte for byte.
 """
 
 import ast
@@ -57,6 +58,17 @@ def test_a_sweep_loads_no_pandas_matplotlib_page_or_other_command(tmp_path):
                 "racket.stroke")  # fmt: skip
     assert _loaded(code, *unwanted, "numba") == {"numba"}  # (and it ran the kernel)
     assert (tmp_path / "s.csv").exists()
+
+
+def test_paper_loads_no_pandas(tmp_path):
+    code = (
+        "import sys\n"
+        f"sys.argv = ['racket-impact', 'paper', '--out', {str(tmp_path / 'figures')!r}]\n"
+        "from studies.entry import main\n"
+        "assert main() == 0\n"
+    )
+    assert _loaded(code, "pandas", "matplotlib") == {"matplotlib"}  # (and it drew the figures)
+    assert len(list((tmp_path / "figures").glob("*.png"))) == 8
 
 
 def test_python_m_runs_the_console_command():

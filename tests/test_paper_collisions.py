@@ -85,3 +85,16 @@ def test_the_kept_figure_collisions_are_fresh_ones_and_read_only(k2):
     assert np.array_equal(kept.history.force, fresh.history.force)
     with pytest.raises(ValueError, match="read-only"):
         kept.history.force[0] = 0.0
+
+
+def test_the_kept_free_racket_is_the_papers():
+    """``racket-impact paper``'s claims and figures share one free racket: the paper's,
+    giving the impacts a racket made afresh gives."""
+    from racket import impact, paper_ball, paper_racket
+    from studies.paper import free_racket
+
+    assert free_racket() is free_racket()
+    kept, fresh = (
+        impact(r, paper_ball(), [0.05, 0.2], 10.0) for r in [free_racket(), paper_racket()]
+    )
+    assert np.array_equal(kept.e, fresh.e) and np.array_equal(kept.peak_force, fresh.peak_force)

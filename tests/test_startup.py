@@ -1,5 +1,6 @@
 """Start-up: the command line imports what a command needs, and says before the first
-run's wait that the solver is being compiled."""
+run's wait that the solver is being compiled; ``paper`` puts off the garbage collector's full
+collections while it runs."""
 
 import os
 import re
@@ -108,3 +109,14 @@ def test_paper_draws_the_same_figures_on_processes_of_their_own(tmp_path, monkey
         assert "compressed by" in err  # a figure's warning, said by the command
     assert len(written["pool"]) == 8
     assert written["pool"] == written["here"]
+
+
+def test_paper_puts_off_full_collections_while_it_runs():
+    import gc
+
+    from studies.cli.paper import _no_full_collections
+
+    before = gc.get_threshold()
+    with _no_full_collections():
+        assert gc.get_threshold() == (*before[:2], 2**31 - 1)  # the young ones still made
+    assert gc.get_threshold() == before

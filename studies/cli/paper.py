@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import contextlib
+import gc
 import json
 import os
 import textwrap
@@ -43,11 +44,29 @@ idle; the processes cost 1.3 s of CPU more: the fork, and each one's fonts and k
 (not measured: the machine was never idle)."""
 
 
+@contextlib.contextmanager
+def _no_full_collections():
+    """The garbage collector's full collections (of its oldest generation) put off while the
+    block runs, the young generations still collected: ``paper`` loads numba, scipy and
+    matplotlib, a few hundred thousand objects that live as long as the process, and each
+    full collection walks them all to find the little garbage its figures leave (three or
+    four of them, 0.26-0.54 s of a run on this project's 2-core machine, for 12 MB more at
+    the peak, 281 MB against 269 MB).
+    """
+    young, middle, oldest = gc.get_threshold()
+    gc.set_threshold(young, middle, 2**31 - 1)  # a full one after 2**31 - 1 middle ones: never
+    try:
+        yield
+    finally:
+        gc.set_threshold(young, middle, oldest)
+
+
+@_no_full_collections()
 def cmd_paper(args) -> int:
     """``racket-impact paper``: the claims, then the figures (on two processes of their own
     where cores are idle, :func:`_figure_pool`; a progress bar on a terminal).
     """
-    from studies.paper import paper_table
+    from studies.paper import paper_columns
     from studies.scale import progress_bar
 
     check_outputs(directories=[("--out", args.out)])
@@ -60,8 +79,7 @@ def cmd_paper(args) -> int:
     )
     with _figure_pool() as workers:  # None: drawn here, after the claims
         drawn = [workers.submit(paper_figure, name) for name in figures] if workers else []
-        table = paper_table()
-        ok = _say_claims(table, args.json)
+        ok = _say_claims(paper_columns(), args.json)
         outputs.directory(out)
         shown = progress_bar(drawn or list(figures), len(figures), None, "figures")
         for name, done in zip(figures, shown, strict=True):
@@ -104,24 +122,17 @@ def _figure_pool():
         pool.shutdown(wait=True, cancel_futures=True)
 
 
-def _say_claims(table, json_path) -> bool:
-    """Print the claims of ``table`` and write them to ``json_path`` (if not None); whether
-    all are within tolerance.
+def _say_claims(table: dict, json_path) -> bool:
+    """Print the claims of ``table`` (:func:`studies.paper.paper_columns`) and write them to
+    ``json_path`` (if not None); whether all are within tolerance.
     """
-    _print_table(table[["claim", "paper", "simulated", "tolerance", "ok"]])
-    ok = bool(table["ok"].all())
-    print(f"\n{int(table['ok'].sum())} of {len(table)} claims reproduced within tolerance.")
+    shown = ("claim", "paper", "simulated", "tolerance", "ok")
+    _print_table({name: table[name] for name in shown})
+    ok = all(table["ok"])
+    print(f"\n{sum(table['ok'])} of {len(table['ok'])} claims reproduced within tolerance.")
     if json_path:
-        records = [
-            {
-                "claim": r.claim,
-                "paper": r.paper,
-                "simulated": r.simulated,
-                "tolerance": r.tolerance,
-                "ok": bool(r.ok),
-            }
-            for r in table.itertuples()
-        ]
+        rows = zip(*(table[name] for name in shown), strict=True)
+        records = [dict(zip(shown, row, strict=True)) for row in rows]
         text = json.dumps(records, indent=2)
         outputs.write(json_path, lambda temp: Path(temp).write_text(text))
         _sidecar(json_path)
@@ -133,13 +144,13 @@ def paper_figures() -> dict:
     import matplotlib
 
     matplotlib.use("Agg")
-    from racket import impact, paper_ball, paper_racket
+    from racket import impact, paper_ball
     from studies import plots
     from studies.conditions import conditions_line, racket_details
-    from studies.paper import figure_collision
-    from studies.serve import serve_what_if
+    from studies.paper import figure_collision, free_racket
+    from studies.serve import serve_what_if_columns
 
-    racket, ball = paper_racket(), paper_ball()
+    racket, ball = free_racket(), paper_ball()
     said = conditions_line("paper", "paper", **racket_details(racket))
     return {
         "fig2_unhappy_on_wall.png": lambda: plots.plot_collision(
@@ -166,7 +177,7 @@ def paper_figures() -> dict:
             racket, conditions=conditions_line("paper", None, **racket_details(racket))
         ),
         "serve_what_if.png": lambda: plots.plot_serve_what_if(
-            serve_what_if(racket, ball),
+            serve_what_if_columns(racket, ball, eq22=False),  # its reductions alone
             conditions=f"{said} at rest, swung at 40 m/s head speed about the wrist",
         ),
     }
