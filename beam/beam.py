@@ -457,7 +457,7 @@ class Beam:
         """
         modes = self.modes
         phi = modes.shape(x) if shapes is None else shapes
-        kept = (phi[2:] ** 2 / modes.omega[2:, None] ** 2).sum(axis=0)
+        kept = (phi[2:] ** 2 / modes.bending_omega_squared).sum(axis=0)
         return np.maximum(self.static_flexibility(x) - kept, 0.0)
 
     def compute_modes(self, method: str = "fem") -> Modes:

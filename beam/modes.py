@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
@@ -45,6 +46,13 @@ class Modes:
     def count(self) -> int:
         """Number of modes, rigid-body modes included."""
         return self.omega.size
+
+    @cached_property
+    def bending_omega_squared(self) -> np.ndarray:
+        """(count - 2, 1) the bending modes' omega**2 [rad^2/s^2], a column; computed once
+        (the modes are frozen).
+        """
+        return self.omega[2:, None] ** 2
 
     @property
     def frequencies(self) -> np.ndarray:

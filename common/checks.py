@@ -82,14 +82,17 @@ def finite(name: str, value, unit: str = "") -> float:
     unit : str, optional
         Its unit, as the message quotes it (e.g. ``"m/s"``); "" for none.
     """
-    try:
-        if isinstance(value, bool | np.bool_ | str | os.PathLike):
-            raise TypeError
-        x = float(value)
-    except (TypeError, ValueError):
-        raise ArgumentTypeError(_not_finite(name, value, unit)) from None
-    except OverflowError:
-        raise ValueError(_not_finite(name, value, unit)) from None
+    if type(value) is float:  # (the usual case, spared the tests of other kinds)
+        x = value
+    else:
+        try:
+            if isinstance(value, bool | np.bool_ | str | os.PathLike):
+                raise TypeError
+            x = float(value)
+        except (TypeError, ValueError):
+            raise ArgumentTypeError(_not_finite(name, value, unit)) from None
+        except OverflowError:
+            raise ValueError(_not_finite(name, value, unit)) from None
     if not math.isfinite(x):
         raise ValueError(_not_finite(name, value, unit))
     return x
@@ -444,19 +447,22 @@ def finite_array(name: str, values, unit: str = "") -> np.ndarray:
     values : array_like
         The values to check [``unit``], in ``unit``.
     """
-    try:
-        if isinstance(values, str | bytes | os.PathLike):  # numpy would read "4" as 4.0
-            raise TypeError
-        a = np.asarray(values, dtype=float)
-    except (TypeError, ValueError):
-        raise ArgumentTypeError(
-            f"{name} must be finite numbers{_unit(unit)}, got {shown(values)}"
-        ) from None
-    except OverflowError:
-        raise ValueError(
-            f"{name} must be finite numbers{_unit(unit)}, got {shown(values)}"
-        ) from None
-    if not np.isfinite(a).all():  # (the method: np.all's wrapper costs more than the test)
+    if type(values) is np.ndarray and values.dtype == float:  # (spared the other kinds' tests)
+        a = values
+    else:
+        try:
+            if isinstance(values, str | bytes | os.PathLike):  # numpy would read "4" as 4.0
+                raise TypeError
+            a = np.asarray(values, dtype=float)
+        except (TypeError, ValueError):
+            raise ArgumentTypeError(
+                f"{name} must be finite numbers{_unit(unit)}, got {shown(values)}"
+            ) from None
+        except OverflowError:
+            raise ValueError(
+                f"{name} must be finite numbers{_unit(unit)}, got {shown(values)}"
+            ) from None
+    if np.count_nonzero(np.isfinite(a)) < a.size:  # (a reduction, .all(), costs 5x more)
         index = np.flatnonzero(~np.isfinite(a))[0]
         bad = np.asarray(values, dtype=object).ravel()[index]
         raise ValueError(f"{name} must be finite numbers{_unit(unit)}, got {shown(bad)}")

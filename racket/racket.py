@@ -259,8 +259,10 @@ class Racket(Implement):
         """Impact positions [m from the tip] as a 1-D array; ValueError if there are none,
         if they are not a number or a flat sequence, or if any is off the strings.
         """
-        x = impact_positions(position)
         start, end = self.strings.extent
+        if isinstance(position, float) and start <= position <= end:  # (one, on the strings)
+            return np.array([position])
+        x = impact_positions(position)
         off = (x < start) | (x > end)
         if off.any():
             raise ValueError(

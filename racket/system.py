@@ -130,6 +130,13 @@ class BlockSystem:
         return disp, vel, dc
 
     @cached_property
+    def vibrating(self) -> np.ndarray:
+        """(nb,) bool: the blocks that are not dc motion (``~dc``), whose reach the
+        solver watches; computed once (the system is frozen).
+        """
+        return ~self.dc
+
+    @cached_property
     def rigid_rows(self) -> np.ndarray:
         """Rows (len(rigid), 2 nb) over the block states giving the velocities of the
         rigid coordinates' dc motion (:attr:`dc_rows`, or the basis's rows); computed once

@@ -214,3 +214,24 @@ def test_with_f1_scales_modes_and_flexibility_without_recomputing():
     assert scaled.modes.omega == pytest.approx(fresh.modes.omega, rel=1e-8)
     assert scaled.modes.shape(x) == pytest.approx(fresh.modes.shape(x), rel=1e-7, abs=1e-9)
     assert scaled.static_flexibility(x) == pytest.approx(fresh.static_flexibility(x), rel=1e-7)
+
+
+def test_one_points_element_shapes_are_the_arrays_bit_for_bit():
+    # element_shapes takes one point in Python's numbers, and the element without shear in
+    # fewer steps than the Timoshenko one at Phi = 0: the same bits, signs of zero included.
+    from beam import fem
+
+    rng = np.random.default_rng(0)
+    nodes = fem.mesh(np.array([0.0, 0.3, 0.68]), np.array([0.05]), 240)
+    x = np.concatenate([0.68 * rng.random(300), nodes, [-0.0, 0.68]])
+    e, shapes = fem.element_shapes(nodes, x)
+    for i in range(x.size):
+        e_i, shapes_i = fem.element_shapes(nodes, x[i : i + 1])
+        assert e_i.dtype == e.dtype and e_i[0] == e[i]
+        assert np.array_equal(shapes_i[:, 0], shapes[:, i])
+        assert np.array_equal(np.signbit(shapes_i[:, 0]), np.signbit(shapes[:, i]))
+    s = np.concatenate([rng.random(1000), 2.0 * rng.random(1000) - 0.5, [0.0, -0.0, 1.0]])
+    length = 1e-3 + 1e-3 * rng.random(s.size)
+    plain, timoshenko = fem.hermite(s, length), fem.hermite(s, length, 0.0)
+    assert np.array_equal(plain, timoshenko)
+    assert np.array_equal(np.signbit(plain), np.signbit(timoshenko))

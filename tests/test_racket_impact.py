@@ -1,6 +1,8 @@
 """Impacts on the flexible racket (paper Sec. VII): conservation, Eq. 21, convergence,
 the rigid and clamped limits, and the paper's numbers for its default racket."""
 
+import dataclasses
+
 import numpy as np
 import pytest
 
@@ -269,3 +271,19 @@ def test_threads_share_the_points_and_change_no_number(monkeypatch, threads):
     many = impact(paper_racket("hand-held"), paper_ball(), x, 20.0)
     for name in ("e", "e_A", "contact_time", "peak_force", "vibration_energy"):
         assert np.array_equal(getattr(one, name), getattr(many, name)), name
+
+
+@pytest.mark.parametrize("support", ["free", "hand-held", "clamped-head"])
+def test_one_position_is_its_one_element_array_bit_for_bit(support):
+    # A number takes its own route through impact (its checks and its set-up in Python's
+    # numbers where they give numpy's bits): every field must be the array's, as a number.
+    racket = paper_racket(support)
+    for position in (0.003, 0.16, 0.3):
+        one, array = impact(racket, BALL, position, 10.0), impact(racket, BALL, [position], 10.0)
+        for name in (f.name for f in dataclasses.fields(one)):
+            number, values = getattr(one, name), getattr(array, name)
+            if values is None or name == "speed":
+                assert number == values, name
+            else:
+                assert np.ndim(number) == np.ndim(values) - 1, name
+                assert np.array_equal(number, values[0], equal_nan=True), name

@@ -97,18 +97,15 @@ def unclosed(fields: dict, ball) -> np.ndarray:
     """
     limit = getattr(ball.law, "x_lim", np.inf) * STIFF_FRACTION
     with np.errstate(invalid="ignore"):
-        return ~(_closes(fields) & (np.atleast_1d(fields["compression"]) <= limit))
+        return ~(_closes(fields) & (fields["compression"] <= limit))
 
 
 def _closes(fields: dict) -> np.ndarray:
     """Which impacts (P,) give e <= 1 and close their budget, both to :data:`BUDGET_TOL`
     (NaN does not: called within ``np.errstate(invalid="ignore")``).
     """
-    e = np.atleast_1d(fields["e"])
-    residual = np.abs(np.atleast_1d(fields["energy_residual"]))
-    return (e <= 1.0 + BUDGET_TOL) & (
-        residual <= BUDGET_TOL * np.atleast_1d(fields["energy_initial"])
-    )
+    residual = np.abs(fields["energy_residual"])
+    return (fields["e"] <= 1.0 + BUDGET_TOL) & (residual <= BUDGET_TOL * fields["energy_initial"])
 
 
 def refined(solve, steps: int):

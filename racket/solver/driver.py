@@ -33,6 +33,7 @@ flagged (``Impact.self_consistent``) and a warning says how many are.
 from __future__ import annotations
 
 import contextlib
+import math
 import warnings
 
 import numpy as np
@@ -169,16 +170,17 @@ def impact(
     """
     instance("racket", racket, Implement, "a racket.Racket or bat.Bat")
     instance("ball", ball, Ball, "a ball.Ball")
-    if histories != "force":
+    if histories is not False and histories != "force":
         histories = flag("histories", histories)
-    scalar = np.ndim(position) == 0 and (offset is None or np.ndim(offset) == 0)
+    scalar = _one_value(position) and (offset is None or _one_value(offset))
     x, y = racket.check_points(position, offset)
     speed = check_speed("speed", speed, allow_zero=True)
-    scalar = scalar and np.ndim(swing_speed) == 0
+    scalar = scalar and _one_value(swing_speed)
     swing = _swing_speeds(swing_speed, x.size)
-    closing = speed + swing
-    if (closing == 0.0).any():
+    swung = np.count_nonzero(swing) > 0  # (ndarray.any's reduction costs 5x more on a few)
+    if speed == 0.0 and not swing.all():  # (both are 0 or at least 1 mm/s)
         raise ValueError("speed must be > 0 m/s (or the racket swung, swing_speed > 0), got 0")
+    closing = speed + swing
     if pivot is not None:
         pivot = finite("pivot", pivot, "m from the tip")
         reach = racket.beam.length + PIVOT_BEYOND_BUTT
@@ -187,7 +189,7 @@ def impact(
                 f"pivot must lie beyond the impact points and at most {PIVOT_BEYOND_BUTT:g} m "
                 f"beyond the butt, in ({x.max():g}, {reach:g}] m from the tip, got {shown(pivot)}"
             )
-    if np.isinf(racket.contact.stiffness) and isinstance(ball.law, SineLaw):  # a bare surface
+    if math.isinf(racket.contact.stiffness) and isinstance(ball.law, SineLaw):  # a bare surface
         raise ValueError(
             "the unhappy (sine-law) ball is for rackets: its Xo search takes a string bed in "
             "series; strike a bat with a monotone ball (e.g. ball.baseball)"
@@ -195,11 +197,13 @@ def impact(
     if steps_per_contact is None:
         sine = isinstance(ball.law, SineLaw)
         steps_per_contact = SINE_STEPS_PER_CONTACT if sine else DEFAULT_STEPS_PER_CONTACT
-    steps_per_contact = int(in_range("steps_per_contact", steps_per_contact, 50, 100_000))
+    else:
+        steps_per_contact = int(in_range("steps_per_contact", steps_per_contact, 50, 100_000))
     watch_after = in_range("watch_after", watch_after, 0.0, 1.0, "s")
-    if swing.any():
+    if swung:
         racket.check_swing(pivot)
-    f1 = racket.beam.modes.frequencies[0] if racket.beam.modes.count > 2 else np.inf
+    modes = racket.beam.modes  # (the first frequency alone, not all of them)
+    f1 = modes.omega[2] / (2.0 * np.pi) if modes.count > 2 else np.inf
     if f1 < F1_MIN:
         raise ValueError(
             f"the frame's first bending frequency must be >= {F1_MIN:g} Hz for an impact, "
@@ -217,11 +221,15 @@ def impact(
             "histories need one time step for all impacts: give them one closing speed "
             "(ball speed + swing speed), or a ball whose contact time does not depend on it"
         )
-    if not histories:  # in chunks: the kernel's inputs take about 1.6 kB per impact
-        batches = [b[i : i + CHUNK_POINTS] for b in batches for i in range(0, b.size, CHUNK_POINTS)]
     run = (racket, ball, speed, pivot, steps_per_contact, watch_after, histories)
-    with one_blas_thread() if x.size > IMPACTS_PER_THREAD else contextlib.nullcontext():
-        parts = [_solve(x[b], None if y is None else y[b], swing[b], *run) for b in batches]
+    if scalar:  # one impact: one batch, one chunk (x copied: the user's 0-d array may be it)
+        parts = [_solve(x.copy(), y, swing, *run)]
+    else:
+        if not histories:  # in chunks: the kernel's inputs take about 1.6 kB per impact
+            batches = [b[i : i + CHUNK_POINTS] for b in batches
+                       for i in range(0, b.size, CHUNK_POINTS)]  # fmt: skip
+        with one_blas_thread() if x.size > IMPACTS_PER_THREAD else contextlib.nullcontext():
+            parts = [_solve(x[b], None if y is None else y[b], swing[b], *run) for b in batches]
     fields = parts[0][0]
     if len(parts) > 1:
         back = np.argsort(np.concatenate(batches))
@@ -231,7 +239,7 @@ def impact(
         }
     squashed = fields.pop("compression")
     self_consistent = fields["self_consistent"]
-    if not self_consistent.all():
+    if np.count_nonzero(self_consistent) < x.size:
         warnings.warn(
             f"{np.count_nonzero(~self_consistent)} of {x.size} unhappy-ball impacts "
             f"(first at {x[~self_consistent][0]:g} m from the tip) have no self-consistent "
@@ -250,12 +258,18 @@ def impact(
         fields = {
             k: (v if v is None else v[0] if v.ndim > 1 else v.item()) for k, v in fields.items()
         }
-    return Impact(speed=speed, t=parts[0][1], **fields)
+    fields["speed"], fields["t"] = speed, parts[0][1]
+    return Impact.of(fields)
+
+
+def _one_value(value) -> bool:
+    """Whether ``value`` is one value (0-d); a float is told without asking numpy."""
+    return isinstance(value, float) or np.ndim(value) == 0
 
 
 def _swing_speeds(swing_speed, count: int) -> np.ndarray:
     """``swing_speed`` as one value per impact point (P,), each 0 or a speed in range."""
-    if np.ndim(swing_speed) == 0:  # one for all (checked once)
+    if _one_value(swing_speed):  # one for all (checked once)
         return np.full(count, check_speed("swing_speed", swing_speed, allow_zero=True))
     values = finite_array("swing_speed", swing_speed, "m/s")
     if values.ndim > 1:
@@ -314,7 +328,7 @@ def _solve(
     run = (racket, ball, speed, pivot, watch_after, histories)
     fields, t = _unless_broken(_solve_at, x, y, swing_speed, steps_per_contact, *run)
     bad = np.ones(x.size, dtype=bool) if fields is None else closure.unclosed(fields, ball)
-    if not bad.any():
+    if not np.count_nonzero(bad):
         return fields, t
     if histories or fields is None:  # one time axis for all, or none: every impact again
         bad[:] = True
@@ -340,7 +354,7 @@ def _solve_at(
 ):
     """:func:`_solve` at one number of steps per contact, unchecked."""
     stepper = _Stepper(racket, ball, x, y, speed, swing_speed, pivot, steps_per_contact)
-    x_o = np.full(x.size, np.nan)
+    x_o = stepper.points.x_o  # (NaN: none but the unhappy ball's)
     if stepper.code == layout.SINE:
         x_o = unhappy_x_o(racket, ball, x, y, speed, swing_speed, pivot, stepper)
     extra_steps = round(watch_after / stepper.dt)
@@ -350,7 +364,7 @@ def _solve_at(
     outputs = stepper.run(x_o, extra_steps=extra_steps, history_steps=record,
                           force_only=force_only)  # fmt: skip
     ended = outputs.summary[:, layout.ENDED]
-    if not ended.all():
+    if np.count_nonzero(ended) < x.size:
         raise NotEnded(
             f"the impact at {x[ended == 0][0]:g} m from the tip had not ended after "
             f"{stepper.max_steps * stepper.dt:.3g} s"

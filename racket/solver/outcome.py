@@ -5,6 +5,7 @@ racket's motion, the CORs and the energy budget (paper Sec. VII).
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -160,6 +161,23 @@ point_velocity_dc_history : ndarray or None
     point_velocity_dc_history: np.ndarray
     frame_force: np.ndarray
 
+    @classmethod
+    def of(cls, fields: dict) -> Impact:
+        """The Impact of ``fields``, every attribute by name, as the solver makes them:
+        without the frozen dataclass's ``__init__``, which sets them one call at a time
+        (some 40 calls; a single impact's outcome is made thousands of times a second).
+
+        Parameters
+        ----------
+        fields : dict
+            Every attribute of the class, by name.
+        """
+        if fields.keys() != _FIELDS:
+            raise TypeError(f"Impact.of needs every attribute, got {sorted(fields)}")
+        impact = object.__new__(cls)
+        impact.__dict__.update(fields)
+        return impact
+
     @property
     def point_velocity_ac_history(self) -> np.ndarray:
         """Ac (vibration) part of the impact point's velocity against time [m/s] (None
@@ -169,6 +187,9 @@ point_velocity_dc_history : ndarray or None
             return None
         return self.point_velocity - self.point_velocity_dc_history
 
+
+_FIELDS = frozenset(Impact.__dataclass_fields__)
+"""The names of the Impact's attributes (:meth:`Impact.of` makes one of all of them)."""
 
 N_ROWS = layout.N_HISTORY
 """Histories a full record holds [-]."""
@@ -238,15 +259,16 @@ def outcome(stepper: Stepper, racket, ball, x, y, speed, x_o, outputs, histories
 
     # dc part (rigid-body motion) and ac part (the rest) when the ball has left, and the
     # energies: compiled, one pass (racket.solver.budget).
-    from racket.solver import budget  # numba loads on first use (import time)
+    import racket.solver.budget as budget  # numba loads on first use (import time; this
+    # form, unlike "from racket.solver import", skips importlib's Python-level fromlist)
 
     face = stepper.face and n
     frame = np.array(
         [
             modes.center_of_mass,
-            np.sqrt(modes.mass),
-            np.sqrt(modes.inertia_cm),
-            np.sqrt(racket.beam.roll_modes.roll_inertia) if face else 0.0,
+            math.sqrt(modes.mass),  # (math's: numpy's costs more on a number, the same bits)
+            math.sqrt(modes.inertia_cm),
+            math.sqrt(racket.beam.roll_modes.roll_inertia) if face else 0.0,
             min(n, modes.count),  # the bending coordinates come first
             ball.mass,
         ]
@@ -285,7 +307,7 @@ def outcome(stepper: Stepper, racket, ball, x, y, speed, x_o, outputs, histories
         self_consistent = np.abs(summary[:, layout.X_END] - x_o) <= SELF_CONSISTENT_TOL * x_o
     else:
         ball_loss, squashed = ball.law.at_peak(summary[:, layout.F_PEAK])
-        self_consistent = np.ones(x.size, dtype=bool)
+        self_consistent = np.full(x.size, True)  # (np.ones costs twice as much)
     peak = summary[:, layout.F_PEAK]
     string_loss = np.zeros(x.size)
     bed_law = stepper.ball.bed
@@ -315,14 +337,14 @@ def outcome(stepper: Stepper, racket, ball, x, y, speed, x_o, outputs, histories
         rows = {"force": layout.H_FORCE} if force_only else _HISTORY_ROWS
         history.update({name: hist[row] for name, row in rows.items()})
 
-    m_eff = np.full(x.size, np.inf)
-    if n:
-        # (with the string bed's moving mass, which moves with the point)
+    if n:  # (with the string bed's moving mass, which moves with the point)
         m_eff = racket.effective_mass(x, y if stepper.face else None) + m_s
+    else:  # a clamped head
+        m_eff = np.full(x.size, np.inf)
     fields = dict(
         position=x,
         offset=y,
-        swing_speed=np.array(stepper.closing - speed),
+        swing_speed=stepper.closing - speed,
         e=split[:, budget.E],
         e_A=split[:, budget.E_A],
         e_van_zandt=split[:, budget.E_VAN_ZANDT],

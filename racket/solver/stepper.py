@@ -5,6 +5,7 @@ and run for any Xo (:class:`Stepper`), and the time step they share
 
 from __future__ import annotations
 
+import math
 from functools import lru_cache
 
 import numpy as np
@@ -39,7 +40,7 @@ def contact_time_scale(ball: Ball, string_stiffness: float, closing_speed: float
     """
     k = _secant_stiffness(ball.law, ball.mass, closing_speed)
     k_series = 1.0 / (1.0 / k + 1.0 / string_stiffness)
-    return np.pi * np.sqrt(ball.mass / k_series)
+    return math.pi * math.sqrt(ball.mass / k_series)  # (math's: numpy's costs more, same bits)
 
 
 def _secant_stiffness(law, mass: float, closing_speed: float) -> float:
@@ -69,10 +70,8 @@ def _kept_secant_stiffness(law, mass: float, closing_speed: float) -> float:
 
 def _swing_velocities(modes, position, swing_speed, pivot):
     """Rigid-mode velocities (P, 2) of a racket whose impact point moves at -swing_speed
-    (P,).
+    (P,), not all 0.
     """
-    if not swing_speed.any():
-        return np.zeros((position.size, 2))
     if pivot is None:  # pure translation
         v_cm = np.full(position.size, -swing_speed)
         spin = np.zeros(position.size)
@@ -127,27 +126,30 @@ class Stepper:
         self.n = n = system.count
         trans, g0, g1 = system_steps(system, self.dt)
         out_d, out_v, out_dc = system.outputs(phi)
-        self.swing_qd = _swing_velocities(modes, x, swing_speed, pivot)
+        self.swing_qd = np.zeros((x.size, 2))
         state0 = np.zeros((x.size, system.blocks.shape[0], 2))  # at rest
-        if swing_speed.any():
+        if np.count_nonzero(swing_speed):  # (ndarray.any's reduction costs 5x more)
+            self.swing_qd = _swing_velocities(modes, x, swing_speed, pivot)
             z0 = np.zeros((x.size, 2 * n))
             z0[:, n : n + 2] = self.swing_qd
             state0 = system.state(z0)
         self.position = x
         inv_ks = 1.0 / racket.contact.stiffness_at(x, 0.0 if y is None else y)
-        series = inv_ks.copy()
         if n:  # static correction: the bending modes left out respond quasi-statically
             count = modes.count  # the shapes phi already holds, spared computing again
             shapes = phi[:, :count].T if phi.shape[1] >= count else None
-            series += racket.beam.residual_flexibility(x, shapes)
-        if self.face and n:  # and the torsion modes left out
-            series += racket.beam.roll_modes.residual_flexibility(x, y)
+            series = inv_ks + racket.beam.residual_flexibility(x, shapes)
+            if self.face:  # and the torsion modes left out
+                series += racket.beam.roll_modes.residual_flexibility(x, y)
+        else:  # a clamped head: the strings alone
+            series = inv_ks.copy()
         self.points = layout.Points(
             unit=system.inputs(phi),
             out_d=out_d,
             out_v=out_v,
             out_dc=out_dc,
-            reach_w=np.linalg.norm(out_d, axis=2) * ~system.dc,
+            # (np.linalg.norm's sum of squares, without its wrapper's checks)
+            reach_w=np.sqrt(np.add.reduce(out_d * out_d, axis=2)) * system.vibrating,
             series=series,
             inv_ks=inv_ks,
             ball_velocity=np.full(x.size, speed),
@@ -162,17 +164,8 @@ class Stepper:
             system.metric,
             *system.damping_rows,
         )
-        # The ball, a free mass: exact for a force going linearly from F0 to F1 over dt,
-        # u += ud dt - (F0 / 3 + F1 / 6) dt**2 / m and ud -= (F0 + F1) dt / (2 m).
-        dt = self.dt
-        self.ball = layout.BallModel(
-            trans=np.array([[1.0, dt], [0.0, 1.0]]),
-            g0=np.array([dt * dt / 3.0, dt / 2.0]) / -ball.mass,
-            g1=np.array([dt * dt / 6.0, dt / 2.0]) / -ball.mass,
-            law=law[0],
-            params=np.array(law[1], dtype=float),
-            bed=bed_law(racket.contact, law[0]),
-        )
+        bed = (0.0, 0.0, 0.0) if law[0] == layout.SINE else bed_law(racket.contact)
+        self.ball = _ball_model(self.dt, ball.mass, law, bed)
 
     def run(self, x_o, subset=None, stop_on_snap=False, extra_steps=0, history_steps=0,
             force_only=False):  # fmt: skip
@@ -184,7 +177,9 @@ class Stepper:
         points = self.points
         if subset is not None:
             points = layout.Points(*(np.ascontiguousarray(v[subset]) for v in points))
-        points = points._replace(x_o=np.ascontiguousarray(x_o, dtype=float))
+        x_o = np.ascontiguousarray(x_o, dtype=float)
+        if x_o is not points.x_o:  # (the points' own, NaN, unless the unhappy ball's)
+            points = points._replace(x_o=x_o)
         count = points.ball_velocity.size
         nb = self.frame.trans.shape[0]
         controls = layout.Controls(
@@ -210,19 +205,33 @@ class Stepper:
         return out
 
 
-def bed_law(strings, code: int) -> np.ndarray:
+def bed_law(strings) -> tuple:
     """The string bed's law for the kernels (:attr:`racket.solver.layout.BallModel.bed`):
-    its stretch [1/m^2], loss [-] and moving mass [kg]; a linear, lossless, massless bed for
-    the unhappy ball, whose return mapping takes the strings as a linear spring
-    (:func:`racket.solver.driver.impact` says so when it drops a bed's stretch, loss or mass).
+    its stretch [1/m^2], loss [-] and moving mass [kg].  The unhappy ball's kernels take a
+    linear, lossless, massless bed instead (all 0), whose return mapping takes the strings
+    as a linear spring (:func:`racket.solver.driver.impact` says so when it drops a bed's
+    stretch, loss or mass).
 
     Parameters
     ----------
     strings : racket.StringBed
         The racket's string bed.
-    code : int
-        The ball law's code (:data:`racket.solver.layout.SINE` ...).
     """
-    if code == layout.SINE:
-        return np.zeros(3)
-    return np.array([strings.stretch, strings.loss, strings.moving_mass])
+    return (strings.stretch, strings.loss, strings.moving_mass)
+
+
+@lru_cache(maxsize=64)
+def _ball_model(dt: float, mass: float, law: tuple, bed: tuple) -> layout.BallModel:
+    """The ball for the kernels: a free mass [kg], exact for a force going linearly from F0
+    to F1 over the step ``dt`` [s], u += ud dt - (F0 / 3 + F1 / 6) dt**2 / m and ud -= (F0
+    + F1) dt / (2 m); its law (code, numbers) and the bed's (:func:`bed_law`).  Kept: the
+    same for every impact at one closing speed, and the kernels only read it.
+    """
+    return layout.BallModel(
+        trans=np.array([[1.0, dt], [0.0, 1.0]]),
+        g0=np.array([dt * dt / 3.0, dt / 2.0]) / -mass,
+        g1=np.array([dt * dt / 6.0, dt / 2.0]) / -mass,
+        law=law[0],
+        params=np.array(law[1], dtype=float),
+        bed=np.array(bed, dtype=float),
+    )

@@ -205,6 +205,7 @@ class StringBed:
         (:func:`racket.strings.membrane.stiffness_ratio`) for a ``"membrane"`` one.
         """
         if self.profile == "uniform":
-            shape = np.broadcast(np.asarray(x, float), np.asarray(y, float)).shape
+            x = np.asarray(x, float)  # (with y a number, the usual case: x's shape)
+            shape = x.shape if isinstance(y, float) else np.broadcast(x, np.asarray(y, float)).shape
             return np.full(shape, self.stiffness)
         return self.stiffness * stiffness_ratio(self.rho2(x, y), self._radius)  # (broadcast)
