@@ -33,8 +33,10 @@ def happy(k2: float) -> Ball:
 def free_racket() -> Racket:
     """The paper's free racket (:func:`racket.paper_racket`), kept: the claims and the
     figures of ``racket-impact paper`` ask for the same one, its modes, static flexibility
-    and time steps then computed once (a Racket cannot be changed: every reader is given
-    the same).
+    and time steps then computed once.  Every caller is given the same object: the Racket
+    is frozen, but its arrays (the modes' frequencies, damping, shapes) are not made
+    read-only (the compiled kernels would then be compiled again for read-only arrays), so
+    a caller must not write to them.
     """
     return paper_racket()
 

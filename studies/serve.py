@@ -98,6 +98,7 @@ def serve(racket: Racket, ball: Ball, position: float, swing: Swing, eq22: bool 
         ``serve_simulated_m_s``, their ratios to v2 ``ratio_eq22`` and ``ratio_simulated``,
         the speeds in mph (``*_mph``), and the peak force ``peak_force_N``.
     """
+    eq22 = flag("eq22", eq22)
     v2 = float(swing.point_speeds(racket, position))
     e = mass = by_eq22 = float("nan")
     if eq22:
@@ -191,7 +192,8 @@ def serve_rows(
     zero_cor : bool
         Add the rows of the zero-COR twin, as in :func:`serve_table`.
     eq22 : bool
-        Both ways; False: the simulated serves alone, half the impacts (:func:`serve`).
+        Both ways; False: the simulated serves alone, half the impacts, the values of Eq. 22
+        (:func:`serve`) and ``reduction_eq22_percent`` NaN.
 
     Returns
     -------
@@ -383,7 +385,7 @@ def serve_what_if_columns(
         As in :func:`serve_what_if`.
     eq22 : bool
         Both ways; False: the simulated serves alone, half the impacts, the values of
-        Eq. 22 NaN (:func:`serve`).
+        Eq. 22 (:func:`serve`) and ``reduction_eq22_percent`` NaN.
 
     Returns
     -------
@@ -391,6 +393,7 @@ def serve_what_if_columns(
         The columns of :func:`serve_what_if` -> one value per case.
     """
     racket, ball = racket_argument(racket), ball_argument(ball)
+    eq22 = flag("eq22", eq22)
     if position is not None:
         position = finite("position", position, "m from the tip")
     racket_speed = check_speed("racket_speed", racket_speed)
@@ -422,4 +425,5 @@ def serve_what_if_columns(
             stiff = replace(ball, law=replace(ball.law, k=float(k_b)))
             twin = serve_rows(racket, stiff, position, racket_speed, pivot_from_tip, True, eq22)[-1]
             rows.append({"varied": "ball", "value": float(k_b), **twin})
-    return {name: [row[name] for row in rows] for name in rows[0] if name != "ball"}
+    names = [name for name in rows[0] if name != "ball"] if rows else []  # (no cases: none)
+    return {name: [row[name] for row in rows] for name in names}

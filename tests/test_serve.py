@@ -87,6 +87,28 @@ def test_serve_what_if_checks_the_string_stiffness(stiffness):
         serve_what_if(paper_racket(), BALLS["paper"](), string_stiffness=[3e4, stiffness])
 
 
+def test_the_simulated_serves_alone_are_the_same_and_eq22_is_left_nan():
+    """``eq22=False`` (``racket-impact paper``'s what-if figure) computes the simulated
+    serves alone: the same bits, Eq. 22's values NaN; no cases give no columns."""
+    from studies.serve import serve_what_if, serve_what_if_columns
+
+    racket, ball = paper_racket(), BALLS["paper"]()
+    cases = dict(string_stiffness=[2e4, 5e4], ball_stiffness=[3e4])
+    both = serve_what_if(racket, ball, **cases)
+    alone = serve_what_if_columns(racket, ball, **cases, eq22=False)
+    assert list(alone) == list(both.columns)
+    for name in alone:
+        if "eq22" in name or name in ("e", "effective_mass_kg"):
+            assert np.isnan(alone[name]).all(), name
+        elif name == "varied":
+            assert alone[name] == list(both[name])
+        else:
+            assert np.array_equal(alone[name], both[name].to_numpy()), name
+    assert serve_what_if(racket, ball, string_stiffness=[], ball_stiffness=[]).empty
+    with pytest.raises(TypeError, match="eq22"):
+        serve_what_if_columns(racket, ball, string_stiffness=[], ball_stiffness=[], eq22="no")
+
+
 def test_centre_of_percussion_is_simulated_and_is_the_formula_for_a_free_racket():
     """The sweet spots' centre of percussion is where the hand's rigid-body velocity after
     the impact is zero: the rigid-body formula for a free racket (to round-off), not for a

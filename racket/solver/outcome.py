@@ -172,10 +172,10 @@ point_velocity_dc_history : ndarray or None
         fields : dict
             Every attribute of the class, by name.
         """
-        if fields.keys() != _FIELDS:
+        if fields.keys() != _FIELDS.keys():
             raise TypeError(f"Impact.of needs every attribute, got {sorted(fields)}")
         impact = object.__new__(cls)
-        impact.__dict__.update(fields)
+        impact.__dict__.update({name: fields[name] for name in _FIELDS})  # (in their order)
         return impact
 
     @property
@@ -188,8 +188,9 @@ point_velocity_dc_history : ndarray or None
         return self.point_velocity - self.point_velocity_dc_history
 
 
-_FIELDS = frozenset(Impact.__dataclass_fields__)
-"""The names of the Impact's attributes (:meth:`Impact.of` makes one of all of them)."""
+_FIELDS = dict.fromkeys(Impact.__dataclass_fields__)
+"""The names of the Impact's attributes, in their order (:meth:`Impact.of` makes one of all
+of them)."""
 
 N_ROWS = layout.N_HISTORY
 """Histories a full record holds [-]."""

@@ -225,7 +225,9 @@ def _ball_model(dt: float, mass: float, law: tuple, bed: tuple) -> layout.BallMo
     """The ball for the kernels: a free mass [kg], exact for a force going linearly from F0
     to F1 over the step ``dt`` [s], u += ud dt - (F0 / 3 + F1 / 6) dt**2 / m and ud -= (F0
     + F1) dt / (2 m); its law (code, numbers) and the bed's (:func:`bed_law`).  Kept: the
-    same for every impact at one closing speed, and the kernels only read it.
+    same for every impact at one closing speed.  Every Stepper at that step is given the same
+    arrays, which the kernels only read; nothing may write to them (read-only arrays would
+    have the kernels compiled again for that type).
     """
     return layout.BallModel(
         trans=np.array([[1.0, dt], [0.0, 1.0]]),

@@ -50,8 +50,10 @@ def _no_full_collections():
     block runs, the young generations still collected: ``paper`` loads numba, scipy and
     matplotlib, a few hundred thousand objects that live as long as the process, and each
     full collection walks them all to find the little garbage its figures leave (three or
-    four of them, 0.26-0.54 s of a run on this project's 2-core machine, for 12 MB more at
-    the peak, 281 MB against 269 MB).
+    four of them: 0.37-0.69 s of collecting in a run, 0.10-0.15 s without them, on this
+    project's 2-core machine, for 12 MB more at the peak, 281 MB against 269 MB).  A
+    collector without a third threshold (CPython 3.14's incremental one reads two) is left
+    as it collects.
     """
     young, middle, oldest = gc.get_threshold()
     gc.set_threshold(young, middle, 2**31 - 1)  # a full one after 2**31 - 1 middle ones: never
