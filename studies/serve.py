@@ -217,12 +217,14 @@ def serve_rows(
     if not zero_cor:
         return rows
     twins = _twin_rows(racket, ball, rows, positions, swing, eq22)
+    for row in rows:  # (the normal ball's reductions: none)
+        row.update(reduction_eq22_percent=0.0, reduction_simulated_percent=0.0)
     return rows + twins
 
 
 def _twin_rows(racket, ball, rows, positions, swing, eq22: bool) -> list[dict]:
     """The zero-COR twin's rows of :func:`serve_rows`, each with its reductions against the
-    normal ``rows`` (given the reductions' 0).
+    normal ball's serve (its ``rows``, read only, or on the twin's bed).
     """
     # The twin meets the bed a sine-law ball can take, linear, lossless and massless (the
     # same for the paper's racket), and so, for its reduction, does the real ball.
@@ -236,8 +238,6 @@ def _twin_rows(racket, ball, rows, positions, swing, eq22: bool) -> list[dict]:
                                      row["position_from_tip_m"], swing, eq22)}
         for row in reference
     ]  # fmt: skip
-    for row in rows:
-        row.update(reduction_eq22_percent=0.0, reduction_simulated_percent=0.0)
     for twin, row in zip(twins, reference, strict=True):  # the ball on the twin's bed
         for how in ("eq22", "simulated"):
             col = f"serve_{how}_m_s"
