@@ -149,7 +149,7 @@ def warn_if_squashed(ball: Ball, compression, stacklevel: int = 3) -> None:
     compression = finite_array("compression", compression, "m")
     if compression.size == 0:
         raise ValueError("compression must be one or more numbers [m], got none")
-    largest = float(compression.max())
+    largest = compression.item() if compression.size == 1 else float(compression.max())
     if ball.radius is not None and largest > ball.radius:
         warnings.warn(
             f"the ball is compressed by {1e3 * largest:.3g} mm, more than its radius "

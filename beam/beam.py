@@ -333,7 +333,9 @@ class Beam:
         >>> round(float(beam.effective_mass(0.16)), 4)  # the paper racket's string centre
         0.1847
         """
-        b = self.center_of_mass - finite_array("x", x, "m from the tip")
+        b = self.center_of_mass - (x := finite_array("x", x, "m from the tip"))
+        if y is None and x.shape == (1,):  # one point (an impact's): in numbers, same bits
+            return np.array([1.0 / (1.0 / self.mass + b.item() * b.item() / self.inertia_cm)])
         flexibility = 1.0 / self.mass + b**2 / self.inertia_cm
         if y is not None:
             if self.roll_inertia is None:
@@ -450,14 +452,13 @@ class Beam:
         """The part [m/N] of :meth:`static_flexibility` from the bending modes not kept
         (beyond ``n_modes``): sum_{k > n_modes} phi_k(x)**2 / omega_k**2, >= 0.
 
-        ``shapes``, if given, are ``self.modes.shape(x)`` (to spare computing them again).
-        The impact solver adds it in series with the strings: the modes left out, far
-        above what an impact excites, respond to the force quasi-statically (the static
-        correction, or mode acceleration method).
+        ``shapes``, if given, are ``self.modes.shape(x)`` (to spare computing them again). The
+        impact solver adds it in series with the strings: the modes left out, far above what
+        an impact excites, respond to the force quasi-statically (the static correction).
         """
         modes = self.modes
         phi = modes.shape(x) if shapes is None else shapes
-        kept = (phi[2:] ** 2 / modes.bending_omega_squared).sum(axis=0)
+        kept = np.add.reduce(phi[2:] ** 2 / modes.bending_omega_squared)  # (.sum's own)
         return np.maximum(self.static_flexibility(x) - kept, 0.0)
 
     def compute_modes(self, method: str = "fem") -> Modes:

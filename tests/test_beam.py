@@ -235,3 +235,21 @@ def test_one_points_element_shapes_are_the_arrays_bit_for_bit():
     plain, timoshenko = fem.hermite(s, length), fem.hermite(s, length, 0.0)
     assert np.array_equal(plain, timoshenko)
     assert np.array_equal(np.signbit(plain), np.signbit(timoshenko))
+
+
+def test_one_points_flexibility_and_effective_mass_are_the_arrays_bit_for_bit():
+    # One point's static flexibility (an impact's) is summed in Python's numbers, and its
+    # effective mass worked out in them: the same bits as numpy's einsum and ufuncs on many
+    # points, for a uniform frame, a spec-sheet one with point masses, and a point at a node.
+    from racket import CATALOG, default_racket
+
+    rng = np.random.default_rng(1)
+    for beam in (Beam.uniform(0.68, 0.34, 120.0), default_racket().beam,
+                 CATALOG["pure-drive-2021"].racket().beam):  # fmt: skip
+        flexibility = beam._flexibility
+        x = np.concatenate([beam.length * rng.random(400), flexibility.nodes[::7], [0.0]])
+        many_flexibility, many_mass = beam.static_flexibility(x), beam.effective_mass(x)
+        for i in range(x.size):
+            one = x[i : i + 1]
+            assert beam.static_flexibility(one).tolist() == [many_flexibility[i]]
+            assert beam.effective_mass(one).tolist() == [many_mass[i]]

@@ -134,3 +134,24 @@ def test_the_command_line_refuses_in_the_unit_typed(capsys, workdir):
     said = capsys.readouterr().err.strip().splitlines()[-1]
     assert said.startswith("racket-impact sweep: error: at 600 mph (the ball's speed plus")
     assert re.search(r"answers this racket and ball up to about [\d.]+ mph$", said)
+
+
+def test_one_impacts_check_is_the_arrays():
+    # unclosed takes one impact in Python's numbers (no NaN warning to silence): the same
+    # verdicts as on many, for each way an answer can break what a passive impact allows.
+    from racket.solver.closure import STIFF_FRACTION, unclosed
+
+    stiff = racket.default_ball()
+    limit = stiff.law.x_lim * STIFF_FRACTION
+    fields = {
+        "e": np.array([0.8, 1.0 + 2 * BUDGET_TOL, 0.8, 0.8, np.nan, 0.8, 0.8]),
+        "energy_residual": np.array([0.0, 0.0, 1e-3, -1e-3, 0.0, np.nan, 0.0]),
+        "energy_initial": np.ones(7),
+        "compression": np.array([0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.01 * limit]),
+    }
+    for ball, squashed in ((stiff, True), (racket.paper_ball(), False)):  # (no limit: linear)
+        many = unclosed(fields, ball)
+        assert many.tolist() == [False, True, True, True, True, True, squashed]
+        for i in range(7):
+            alone = unclosed({k: v[i : i + 1] for k, v in fields.items()}, ball)
+            assert alone.dtype == bool and alone.tolist() == [many[i]]

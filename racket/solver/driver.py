@@ -295,25 +295,31 @@ def _time_step_batches(racket: Implement, ball: Ball, closing: np.ndarray) -> li
     """
     # (one speed, a sweep's usual case, and a single impact's: without np.unique's sort)
     if closing.size == 1 or closing[0] == closing.min() == closing.max():
-        speeds, group = closing[:1], None
-    else:
-        speeds, group = np.unique(closing, return_inverse=True)
+        scale = contact_time_scale(ball, racket.contact.stiffness, closing[0])
+        if scale > CONTACT_TIME_MAX:
+            _refuse_too_soft(racket, ball, closing[0], scale)
+        return [np.arange(closing.size)]
+    speeds, group = np.unique(closing, return_inverse=True)
     scales = [contact_time_scale(ball, racket.contact.stiffness, c) for c in speeds]
     longest = max(scales)
     if longest > CONTACT_TIME_MAX:
-        slow = speeds[scales.index(longest)]
-        strings = np.isfinite(racket.contact.stiffness)  # (a bat's ball meets the wood)
-        raise ValueError(
-            f"the ball{' and strings are' if strings else ' is'} too soft at this speed "
-            f"({slow:.3g} m/s): the contact would last about {1e3 * longest:.3g} ms, "
-            f"and racket-impact resolves contacts up to {1e3 * CONTACT_TIME_MAX:g} ms (ball "
-            f"stiffness {ball.law.secant_stiffness(ball.mass, slow):.3g} N/m"
-            + (f", strings {racket.contact.stiffness:.3g} N/m)" if strings else ")")
-        )
-    if speeds.size == 1:
-        return [np.arange(closing.size)]
+        _refuse_too_soft(racket, ball, speeds[scales.index(longest)], longest)
     _, step_group = np.unique(np.array(scales)[group], return_inverse=True)
     return [np.flatnonzero(step_group == g) for g in range(step_group.max() + 1)]
+
+
+def _refuse_too_soft(racket: Implement, ball: Ball, slow, longest: float):
+    """ValueError: at the closing speed ``slow`` [m/s] the contact would last ``longest``
+    [s], more than ``CONTACT_TIME_MAX``.
+    """
+    strings = np.isfinite(racket.contact.stiffness)  # (a bat's ball meets the wood)
+    raise ValueError(
+        f"the ball{' and strings are' if strings else ' is'} too soft at this speed "
+        f"({slow:.3g} m/s): the contact would last about {1e3 * longest:.3g} ms, "
+        f"and racket-impact resolves contacts up to {1e3 * CONTACT_TIME_MAX:g} ms (ball "
+        f"stiffness {ball.law.secant_stiffness(ball.mass, slow):.3g} N/m"
+        + (f", strings {racket.contact.stiffness:.3g} N/m)" if strings else ")")
+    )
 
 
 def _solve(
