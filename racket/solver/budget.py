@@ -3,7 +3,8 @@ energy budget, compiled: one pass over the impacts instead of some sixty small n
 operations per call (:func:`racket.solver.outcome.outcome` reads the columns).
 
 The sums run in index order, so a number may differ from numpy's (pairwise sums, BLAS
-products) in its last bit or two.
+products) in its last bit or two; they skip the terms that the basis or the stiffness makes
+zero (:func:`_nonzero`: most of a free racket's), which leaves their bits as they were.
 """
 
 from __future__ import annotations
@@ -24,6 +25,27 @@ def _dot(row, state):
     for k in range(state.shape[0]):
         total += row[2 * k] * state[k, 0] + row[2 * k + 1] * state[k, 1]
     return total
+
+
+@njit(cache=True)
+def _nonzero(matrix, width):
+    """Where each row of ``matrix`` (R, K width) has a group of ``width`` numbers not all
+    zero: their group indices k, first in each row of a (R, K) table, and how many (R,).  A
+    sum of products over a row skips the other groups and keeps its bits: their products are
+    zeros (the states are finite), and a zero added to the sum changes nothing (0.0 plus
+    -0.0 is 0.0).  A free racket's basis has one group a row, its stiffness one term a column.
+    """
+    groups = matrix.shape[1] // width
+    index = np.zeros((matrix.shape[0], groups), dtype=np.int64)
+    count = np.zeros(matrix.shape[0], dtype=np.int64)
+    for r in range(matrix.shape[0]):
+        for k in range(groups):
+            for g in range(width):
+                if matrix[r, width * k + g] != 0.0:
+                    index[r, count[r]] = k
+                    count[r] += 1
+                    break
+    return index, count
 
 
 @njit(cache=True)
@@ -74,12 +96,15 @@ def split(state, basis, stiffness, rigid_rows, phi, x, y, frame, omega, ball, sw
     count = state.shape[0]
     z = np.empty(2 * n)
     kq = np.empty(n)
+    pairs, pair_count = _nonzero(basis, 2)  # (each block's pair of numbers a group)
+    terms, term_count = _nonzero(stiffness.T, 1)
     com, root_mass, root_inertia, root_roll = frame[0], frame[1], frame[2], frame[3]
     bending, mass = int(frame[4]), frame[5]
     for p in range(count):
         for r in range(2 * n):
             total = 0.0
-            for k in range(state.shape[1]):
+            for j in range(pair_count[r]):
+                k = pairs[r, j]
                 total += basis[r, 2 * k] * state[p, k, 0] + basis[r, 2 * k + 1] * state[p, k, 1]
             z[r] = total
         rigid0 = _dot(rigid_rows[0], state[p]) if n else 0.0
@@ -116,7 +141,8 @@ def split(state, basis, stiffness, rigid_rows, phi, x, y, frame, omega, ball, sw
         v2_total, mechanical = 0.0, 0.0
         for i in range(n):
             total = 0.0
-            for k in range(n):
+            for j in range(term_count[i]):
+                k = terms[i, j]
                 total += z[k] * stiffness[k, i]
             kq[i] = total
         for i in range(n):
