@@ -30,16 +30,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ball.falling_cor import falling_cor, falling_cor_parameters
 from common.checks import finite, in_range, positive, shown
 
 LINEAR, POWER, SINE, GROWING, STIFFENING = 0, 1, 2, 3, 4
 """Codes of the law families in the racket solver's compiled kernel (:mod:`racket.solver.kernel`),
 each law's ``kernel_law`` giving its code and (up to four) numbers."""
-
-COR_FLOOR = 0.1
-"""Lowest rigid-surface COR a :class:`GrowingHysteresis` ball reaches however hard it is
-hit (an assumption: the calibrated range ends well above it, and results beyond that range
-warn)."""
 
 MAX_UNLOADING_EXPONENT = 1000.0
 """Largest unloading exponent b of :class:`PowerLawHysteresis` (see there)."""
@@ -163,6 +159,14 @@ class LinearHysteresis(MonotoneLaw):
     def dissipated(self, f_max):
         return (1.0 - self.e**2) * np.asarray(f_max, dtype=float) ** 2 / (2.0 * self.k)
 
+    def at_peak(self, f_max):
+        # (both at once, and one force, an impact's, in Python's numbers: the same bits)
+        f_max = np.asarray(f_max, dtype=float)
+        one, e2 = f_max.shape == (1,), self.e**2
+        f = f_max.item() if one else f_max
+        loss, squashed = (1.0 - e2) * (f * f) / (2.0 * self.k), (f * (1.0 - e2) + e2 * f) / self.k
+        return (np.array([loss]), np.array([squashed])) if one else (loss, squashed)
+
     @property
     def rigid_cor(self) -> float:
         return self.e
@@ -173,41 +177,6 @@ class LinearHysteresis(MonotoneLaw):
     @property
     def kernel_law(self) -> tuple:
         return LINEAR, (self.k, self.e, 0.0, 0.0)
-
-
-def falling_cor(e0: float, slope: float, x_max):
-    """Rigid-surface COR max(e0 - slope X_max, COR_FLOOR) of a bounce compressing a ball by
-    ``x_max`` [m]: the COR of :class:`GrowingHysteresis` and
-    :class:`~ball.stiffening.StiffeningHysteresis`.
-
-    Parameters
-    ----------
-    e0 : float
-        COR of a vanishingly slow bounce [-].
-    slope : float
-        Fall of the COR per metre of peak compression [1/m].
-    x_max : float or array
-        Largest compression [m].
-    """
-    return np.maximum(e0 - slope * np.asarray(x_max, dtype=float), COR_FLOOR)
-
-
-def falling_cor_parameters(e0, slope) -> tuple[float, float]:
-    """``e0`` in (COR_FLOOR, 1] and ``slope`` >= 0 [1/m] of :func:`falling_cor`, checked;
-    ValueError naming the bad one otherwise.
-
-    Parameters
-    ----------
-    e0, slope
-        As in :func:`falling_cor`.
-    """
-    e0 = finite("e0", e0)
-    if not COR_FLOOR < e0 <= 1.0:
-        raise ValueError(f"e0 must be in ({COR_FLOOR:g}, 1], got {shown(e0)}")
-    slope = finite("slope", slope, "1/m")
-    if slope < 0:
-        raise ValueError(f"slope must be >= 0 [1/m], got {shown(slope)}")
-    return e0, slope
 
 
 class _PowerBranches(MonotoneLaw):

@@ -29,7 +29,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ball.bodies import ball_radius
-from ball.laws import STIFFENING, _PowerBranches, falling_cor, falling_cor_parameters
+from ball.falling_cor import falling_cor, falling_cor_parameters
+from ball.laws import STIFFENING, _PowerBranches
 from common.checks import positive
 
 _SERIES_BELOW = 1e-3

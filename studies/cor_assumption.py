@@ -23,7 +23,7 @@ from ball.catalog import (
     TYPE_2_BANDS,
     pressurised_law,
 )
-from ball.laws import COR_FLOOR
+from ball.falling_cor import COR_FLOOR
 from common.checks import in_range
 from common.units import MPH
 from racket import CATALOG, impact

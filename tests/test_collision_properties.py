@@ -205,6 +205,9 @@ def test_at_peak_is_the_loss_and_the_compression_bit_for_bit(law, forces):
         loss, squashed = law.at_peak(f_max)
         np.testing.assert_array_equal(loss, law.dissipated(f_max))
         np.testing.assert_array_equal(squashed, law.compression(f_max, f_max))
+        for i in range(f_max.size):  # one force alone (an impact's) as among others
+            alone = law.at_peak(f_max[i : i + 1])
+            assert [alone[0].tolist(), alone[1].tolist()] == [[loss[i]], [squashed[i]]]
     if len(cases) == 2:  # the closed form alone (no small force) as where some force is small
         alone, beside = law.at_peak(cases[0]), law.at_peak(np.append(cases[0], cases[1][-1]))
         for a, b in zip(alone, beside, strict=True):

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from ball import WALL, Ball, GrowingHysteresis, LinearSpring, collide
-from ball.laws import COR_FLOOR
+from ball.falling_cor import COR_FLOOR
 from racket import impact, paper_racket
 from studies.config import ball_from_table
 

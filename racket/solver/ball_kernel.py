@@ -19,7 +19,7 @@ import math
 
 from numba import njit
 
-from ball.laws import COR_FLOOR
+from ball.falling_cor import COR_FLOOR
 from racket.solver.layout import LINEAR, POWER, STIFFENING
 
 NEWTON_SETTLED = 1e-8
@@ -97,6 +97,8 @@ def ball_compression(law, params, f, f_max):
         if f >= f_max:
             return f / k
         return (f_max * (1.0 - e * e) + e * e * f) / k
+    if f <= 0.0:  # no compression left (:func:`_branch`): the exponent is not needed
+        return 0.0
     return _branch(law, params, f, f_max, unloading_exponent(law, params, f_max))[0]
 
 
