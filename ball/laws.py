@@ -370,7 +370,8 @@ class GrowingHysteresis(_PowerLoading):
     a : float
         Loading exponent [-], in [1, 3].
     e0 : float
-        COR of a vanishingly slow bounce on a rigid surface [-], in (COR_FLOOR, 1].
+        COR of a vanishingly slow bounce on a rigid surface [-], in (COR_FLOOR, 1]
+        (:data:`ball.falling_cor.COR_FLOOR`).
     slope : float
         Fall of the rigid-surface COR per metre of peak compression [1/m], >= 0.
     calibrated_to : float, optional

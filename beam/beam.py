@@ -454,11 +454,12 @@ class Beam:
 
         ``shapes``, if given, are ``self.modes.shape(x)`` (to spare computing them again). The
         impact solver adds it in series with the strings: the modes left out, far above what
-        an impact excites, respond to the force quasi-statically (the static correction).
+        an impact excites, respond to the force quasi-statically (the static correction, or
+        mode acceleration method).
         """
         modes = self.modes
         phi = modes.shape(x) if shapes is None else shapes
-        kept = np.add.reduce(phi[2:] ** 2 / modes.bending_omega_squared)  # (.sum's own)
+        kept = np.add.reduce(phi[2:] ** 2 / modes.bending_omega_squared)  # (.sum, unwrapped)
         return np.maximum(self.static_flexibility(x) - kept, 0.0)
 
     def compute_modes(self, method: str = "fem") -> Modes:

@@ -143,15 +143,19 @@ def test_one_impacts_check_is_the_arrays():
 
     stiff = racket.default_ball()
     limit = stiff.law.x_lim * STIFF_FRACTION
+    nan, edge = np.nan, 1.0 + BUDGET_TOL  # (each case's flaw alone; the last three on edges)
+    e = [0.8, 1.0 + 2 * BUDGET_TOL, 0.8, 0.8, nan, 0.8, 0.8, 0.8, 0.8, edge, 0.8, 0.8]
+    residual = [0.0, 0.0, 1e-3, -1e-3, 0.0, nan, 0.0, 0.0, 0.0, 0.0, -BUDGET_TOL, 0.0]
     fields = {
-        "e": np.array([0.8, 1.0 + 2 * BUDGET_TOL, 0.8, 0.8, np.nan, 0.8, 0.8]),
-        "energy_residual": np.array([0.0, 0.0, 1e-3, -1e-3, 0.0, np.nan, 0.0]),
-        "energy_initial": np.ones(7),
-        "compression": np.array([0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.01 * limit]),
+        "e": np.array(e),
+        "energy_residual": np.array(residual),
+        "energy_initial": np.array([1.0] * 7 + [nan] + [1.0] * 4),
+        "compression": np.array([0.0] * 6 + [1.01 * limit, 0.0, nan, 0.0, 0.0, limit]),
     }
     for ball, squashed in ((stiff, True), (racket.paper_ball(), False)):  # (no limit: linear)
         many = unclosed(fields, ball)
-        assert many.tolist() == [False, True, True, True, True, True, squashed]
-        for i in range(7):
+        flags = [False, True, True, True, True, True, squashed, True, True, False, False, False]
+        assert many.tolist() == flags
+        for i in range(many.size):
             alone = unclosed({k: v[i : i + 1] for k, v in fields.items()}, ball)
             assert alone.dtype == bool and alone.tolist() == [many[i]]

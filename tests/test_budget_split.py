@@ -60,3 +60,15 @@ def test_split_skips_only_zeros(support, offset):
     assert out[:, budget.V2_TOTAL].tolist() == v2.tolist()
     frame_energy = out[:, budget.RACKET_ENERGY]  # (no bed mass: the frame's rigid energy)
     assert out[:, budget.VIBRATION].tolist() == (0.5 * mechanical - frame_energy).tolist()
+
+
+def test_nonzero_lists_each_rows_groups_in_order():
+    # Row by row, the groups of `width` numbers not all zero (a -0.0 is a zero), in order; on
+    # a transposed matrix, its columns' (as the stiffness's terms are asked for).
+    matrix = np.array([[0.0, 1.0, 0.0, 0.0, -0.0, 2.0], [0.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+                       [3.0, 0.0, 0.0, -0.0, 4.0, 5.0]])  # fmt: skip
+    index, count = budget._nonzero(matrix, 2)
+    assert count.tolist() == [2, 0, 2]
+    assert index[0, :2].tolist() == [0, 2] and index[2, :2].tolist() == [0, 2]
+    index, count = budget._nonzero(np.array([[0.0, 1.0], [0.0, 0.0]]).T, 1)
+    assert count.tolist() == [0, 1] and index[1, 0] == 0

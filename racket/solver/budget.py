@@ -4,7 +4,9 @@ operations per call (:func:`racket.solver.outcome.outcome` reads the columns).
 
 The sums run in index order, so a number may differ from numpy's (pairwise sums, BLAS
 products) in its last bit or two; they skip the terms that the basis or the stiffness makes
-zero (:func:`_nonzero`: most of a free racket's), which leaves their bits as they were.
+zero (:func:`_nonzero`: most of a free racket's), which leaves their bits as they were for
+finite states (a state that is not finite gives NaN in e and the vibration either way, though
+a mode's energy may now come out finite).
 """
 
 from __future__ import annotations
@@ -32,8 +34,9 @@ def _nonzero(matrix, width):
     """Where each row of ``matrix`` (R, K width) has a group of ``width`` numbers not all
     zero: their group indices k, first in each row of a (R, K) table, and how many (R,).  A
     sum of products over a row skips the other groups and keeps its bits: their products are
-    zeros (the states are finite), and a zero added to the sum changes nothing (0.0 plus
-    -0.0 is 0.0).  A free racket's basis has one group a row, its stiffness one term a column.
+    zeros (the states are finite), and the running sum starts at +0.0 and, rounding to
+    nearest, never becomes -0.0, so adding a zero of either sign changes nothing.  A free
+    racket's basis has one group a row, its stiffness one term a column.
     """
     groups = matrix.shape[1] // width
     index = np.zeros((matrix.shape[0], groups), dtype=np.int64)

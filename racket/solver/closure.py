@@ -96,7 +96,7 @@ def unclosed(fields: dict, ball) -> np.ndarray:
         The ball.
     """
     limit = getattr(ball.law, "x_lim", np.inf) * STIFF_FRACTION
-    if fields["e"].size == 1:  # one impact: in numbers (nothing for NaN to warn about)
+    if fields["e"].shape == (1,):  # one impact: in numbers (nothing for NaN to warn about)
         e, residual, initial = (fields[k].item() for k in ("e", "energy_residual",
                                                            "energy_initial"))  # fmt: skip
         closes = e <= 1.0 + BUDGET_TOL and abs(residual) <= BUDGET_TOL * initial

@@ -35,6 +35,7 @@ from __future__ import annotations
 import contextlib
 import math
 import warnings
+from typing import NoReturn
 
 import numpy as np
 
@@ -308,7 +309,7 @@ def _time_step_batches(racket: Implement, ball: Ball, closing: np.ndarray) -> li
     return [np.flatnonzero(step_group == g) for g in range(step_group.max() + 1)]
 
 
-def _refuse_too_soft(racket: Implement, ball: Ball, slow, longest: float):
+def _refuse_too_soft(racket: Implement, ball: Ball, slow, longest: float) -> NoReturn:
     """ValueError: at the closing speed ``slow`` [m/s] the contact would last ``longest``
     [s], more than ``CONTACT_TIME_MAX``.
     """
