@@ -99,9 +99,8 @@ def passes(racket, ball, x, speed) -> None:
         "blocks' free step (and the point)": 1,
         "linear ball's force": 2,
         "ball's response": 3,
-        "blocks' response": 4,
-        "damping power": 5,
-        "bookkeeping": 6,
+        "blocks' response and damping power": 4,
+        "bookkeeping": 5,
     }
     times = {}
     for name, kind in kinds.items():
@@ -127,7 +126,7 @@ def _one_pass(reps, kind, trans, damp_blocks, damp_rows, w, v, n):
     u, ud, u_p, ud_p, z, tau = v[0], v[1], v[17], v[18], v[19], v[16]
     force, f_new, f_before, f_peak = v[2], v[20], v[3], v[4]
     c0, c1, c2 = v[6], v[7], v[8]
-    power, power_prev, damping, need, row = v[21], v[14], v[12], v[23], v[22]
+    power, power_prev, damping, need = v[21], v[14], v[12], v[23]
     stop_at = np.zeros(n, dtype=np.int64)
     recontacts = np.zeros(n, dtype=np.int64)
     for _ in range(reps):
@@ -139,10 +138,9 @@ def _one_pass(reps, kind, trans, damp_blocks, damp_rows, w, v, n):
             lockstep._linear_force(u_p, z, c0, c1, c2, f_peak, f_new, n)
         elif kind == 3:
             lockstep._ball_force(1e-9, 1e-5, u_p, ud_p, f_new, u, ud, tau, n)
-        elif kind == 4:
-            lockstep._force_blocks(s0, s1, gin1_0, gin1_1, f_new, n)
-        elif kind == 5:
-            lockstep._powers(damp_blocks, damp_rows, s0, s1, power, row, n)
+        elif kind == 4:  # (a free racket's modal damping: one block a row)
+            lockstep._force_blocks_damped(s0, s1, gin1_0, gin1_1, f_new, damp_blocks, damp_rows,
+                                          power, n)  # fmt: skip
         else:
             lockstep._bookkeep(power, power_prev, damping, force, f_new, f_before, f_peak, need,
                                stop_at, recontacts, 1e-5, 0.0, n)  # fmt: skip

@@ -298,7 +298,7 @@ def _one_impact(frame, points, ball, controls, out, p):
             else:
                 z_open = contact_compression(law, params, bed, inv_ks, 0.0, f_peak)
             gap = z_open - (u - _dot(out_d, s))
-            if gap >= _reach(points.reach_w, p, frame.metric, s):
+            if gap >= _reach(points.reach_w, p, frame.metric, s, gap):
                 stop_at = step + controls.extra_steps
     out.ball[p, 0] = sep_u
     out.ball[p, 1] = sep_ud
@@ -352,9 +352,11 @@ def _free_step(trans, gin0, out_d, s, force):
 
 
 @njit(cache=True)
-def _reach(reach_w, p, metric, s):
+def _reach(reach_w, p, metric, s, gap):
     """The largest displacement the blocks' remaining vibration can bring to point ``p``
-    (its row of ``reach_w`` read in place: no view, see :func:`_dot_at`).
+    (its row of ``reach_w`` read in place: a view costs two atomic reference counts), or
+    its sum so far once that passes ``gap``: a sum of terms none negative only grows, so
+    ``gap >= _reach(...)`` is decided as with the whole sum, most steps after a few blocks.
     """
     reach = 0.0
     for j in range(reach_w.shape[1]):
@@ -362,6 +364,8 @@ def _reach(reach_w, p, metric, s):
             reach += reach_w[p, j] * math.sqrt(
                 metric[j, 0] * s[j, 0] ** 2 + metric[j, 1] * s[j, 1] ** 2
             )
+            if reach > gap:
+                break
     return reach
 
 
@@ -399,18 +403,6 @@ def _dot(rows, s):
     total = 0.0
     for j in range(s.shape[0]):
         total += rows[j, 0] * s[j, 0] + rows[j, 1] * s[j, 1]
-    return total
-
-
-@njit(cache=True, inline="always")
-def _dot_at(rows, p, s):
-    """``_dot(rows[p], s)``, the same sum, read in place: the view ``rows[p]`` would cost two
-    atomic reference counts on memory that all the threads share (the lockstep kernel's
-    test for a contact's end runs every step of every open contact).
-    """
-    total = 0.0
-    for j in range(s.shape[0]):
-        total += rows[p, j, 0] * s[j, 0] + rows[p, j, 1] * s[j, 1]
     return total
 
 

@@ -1,18 +1,20 @@
 """The lockstep time-stepper: a batch of impacts advanced together, step by step.
 
 The same scheme and the same numbers as :func:`racket.solver.kernel.run_impacts` (see
-:mod:`racket.solver.kernel`), laid out for the machine: the impacts of a tile (``TILE`` of them) sit
-side by side along arrays, so that each pass of a step (the free step of every block, the
-force of a linear ball, the force's response, the dissipated power, the bookkeeping) is a
-loop over the impacts that LLVM vectorises.  A power-law ball's Newton iteration, on the
-paper's bed (:mod:`racket.solver.lockstep_ball`) or on a bed with a mass
+:mod:`racket.solver.kernel`), laid out for the machine: the impacts of a tile (``TILE`` of
+them) sit side by side along arrays, so that each pass of a step (the free step of every
+block, the force of a linear ball, the force's response and, with a free racket's modal
+damping, the dissipated power with it, the bookkeeping) is a loop over the impacts that LLVM
+vectorises; the test that an open contact has left for good is one pass over the tile's
+open contacts (:mod:`racket.solver.lockstep_watch`).  A power-law ball's Newton iteration,
+on the paper's bed (:mod:`racket.solver.lockstep_ball`) or on a bed with a mass
 (:mod:`racket.solver.lockstep_massed`), runs over the tile too, a pass an iteration, each
 impact stopping by its own rule.  What happens rarely, or per impact only, is fixed up
 impact by impact with the scalar kernel's own functions: the force on a massless bed that
 stiffens or loses energy, the unhappy ball's return mapping, the contact opening within its
-step, the moment the ball leaves, the test that it has left for good, the histories.  An
-impact that has ended leaves the tile (the last one takes its place), so the passes run
-over the impacts still in contact or watched.
+step, the moment the ball leaves, the histories.  An impact that has ended leaves the tile
+(the last one takes its place), so the passes run over the impacts still in contact or
+watched.
 
 The results are bit-identical to the scalar kernel's: every impact goes through the same
 floating-point operations in the same order (numba compiles without fast-math, so LLVM
@@ -30,9 +32,11 @@ from racket.solver import tile_layout as tl
 from racket.solver.bed_kernel import bed_active
 from racket.solver.bed_mass_kernel import BED_MEMO_ROWS, bed_mass_coupling
 from racket.solver.contact_kernel import MEMO_ROWS, contact_force
+from racket.solver.kernel import _power
 from racket.solver.layout import H_FORCE, LINEAR, SINE
 from racket.solver.lockstep_ball import BALL_ROWS, ball_pass
 from racket.solver.lockstep_massed import LANE_ROWS, massed_pass
+from racket.solver.lockstep_watch import watch_tile
 
 
 @njit(cache=True, nogil=True)
@@ -81,6 +85,8 @@ def _tile(frame, points, ball, controls, out, ids, w, v, flags, scratch, memo, l
     tol = controls.force_tol if sine else 0.0
     # Views made once (making one in the loop costs two atomic reference counts).
     s0, s1, out_d0, out_d1, trans = w[tl.S0], w[tl.S1], w[tl.OUT_D0], w[tl.OUT_D1], frame.trans
+    damp_blocks, damp_rows = frame.damp_blocks, frame.damp_rows
+    diagonal = _diagonal(damp_blocks)
     gin0_0, gin0_1, gin1_0, gin1_1 = w[tl.GIN0_0], w[tl.GIN0_1], w[tl.GIN1_0], w[tl.GIN1_1]
     u, ud, u_p, ud_p, z, tau = v[tl.U], v[tl.UD], v[tl.U_P], v[tl.UD_P], v[tl.Z], v[tl.TAU]
     force, f_new, f_before, f_peak = v[tl.FORCE], v[tl.F_NEW], v[tl.F_BEFORE], v[tl.F_PEAK_]
@@ -99,7 +105,7 @@ def _tile(frame, points, ball, controls, out, ids, w, v, flags, scratch, memo, l
         flags[tl.RECONTACT],
     )
     f_frame, f_frame_new = (v[tl.F2], v[tl.F2_NEW]) if massed else (force, f_new)  # on the frame
-    # (and the points' arrays taken out of their tuple once: see slot.watch)
+    # (and the points' arrays taken out of their tuple once: see lockstep_watch)
     out_dc, out_d, out_v, reach_w = points.out_dc, points.out_d, points.out_v, points.reach_w
     series, inv_ks_rows, metric = points.series, points.inv_ks, frame.metric
     while n > 0 and step < controls.max_steps:
@@ -128,7 +134,11 @@ def _tile(frame, points, ball, controls, out, ids, w, v, flags, scratch, memo, l
                                                  z[i], f_peak[i], guess, memo, i)  # fmt: skip
         # The response to the force at the step's end.
         _ball_force(g10, g11, u_p, ud_p, f_new, u, ud, tau, n)
-        _force_blocks(s0, s1, gin1_0, gin1_1, f_frame_new, n)
+        if diagonal:  # and the dissipated power with it
+            _force_blocks_damped(s0, s1, gin1_0, gin1_1, f_frame_new, damp_blocks, damp_rows,
+                                 power, n)  # fmt: skip
+        else:
+            _force_blocks(s0, s1, gin1_0, gin1_1, f_frame_new, n)
         if massed:
             for i in range(n):  # the ball left the bed within the step: placed there
                 if f_new[i] == 0.0 and force[i] > 0.0:
@@ -139,7 +149,11 @@ def _tile(frame, points, ball, controls, out, ids, w, v, flags, scratch, memo, l
             for i in range(n):  # the contact opened within the step: placed there
                 if f_new[i] == 0.0 and force[i] > 0.0:
                     slot.opening(ball, law, params, points, flags[tl.IMPACT, i], w, v, i, nb)
-        _powers(frame.damp_blocks, frame.damp_rows, s0, s1, power, row, n)
+                    if diagonal:  # its power anew
+                        slot.gather(w, i, scratch)
+                        power[i] = _power(damp_blocks, damp_rows, scratch)
+        if not diagonal:
+            _powers(damp_blocks, damp_rows, s0, s1, power, row, n)
         _bookkeep(power, power_prev, damping, force, f_new, f_before, f_peak, need, stop_at,
                   recontacts, dt, tol, n)  # fmt: skip
         step += 1
@@ -147,17 +161,15 @@ def _tile(frame, points, ball, controls, out, ids, w, v, flags, scratch, memo, l
             for i in range(n):
                 if not flags[tl.DONE, i]:
                     out.history[H_FORCE, flags[tl.IMPACT, i], step] = force[i]
-        for i in range(n):
+        for i in range(n):  # the histories, the ball leaving, a sine law's end
             if (full or need[i] != 0.0) and not flags[tl.DONE, i]:
                 left = force[i] == 0.0 and f_before[i] > 0.0
-                if full or left or sine:  # the histories, the ball leaving, a sine law's end
+                if full or left or sine:
                     slot.after_step(frame, points, ball, controls, out, w, v, flags, scratch, i,
                                     step, left, memo)  # fmt: skip
-                elif stop_at[i] < 0 and force[i] == 0.0:  # open: the rest of after_step's
-                    slot.gather(w, i, scratch)  # (the force's history is written above)
-                    slot.watch(law, params, bed, out_dc, out_d, out_v, reach_w, series,
-                               inv_ks_rows, metric, v, flags, scratch, memo, i, step,
-                               controls.extra_steps)  # fmt: skip
+        watch_tile(law, params, bed, massed, sine, out_dc, out_d, out_v, reach_w, series,
+                   inv_ks_rows, metric, w, v, flags, memo, step, controls.extra_steps,
+                   n)  # fmt: skip
         # Impacts that have ended leave the tile; the last takes each one's place.
         i = 0
         while i < n:
@@ -228,6 +240,46 @@ def _force_blocks(s0, s1, gin1_0, gin1_1, f_new, n):
         for i in range(n):
             s0[j, i] += gin1_0[j, i] * f_new[i]
             s1[j, i] += gin1_1[j, i] * f_new[i]
+
+
+@njit(cache=True)
+def _diagonal(damp_blocks):
+    """Whether each row of the dissipated power is one block's, the rows in the blocks'
+    order (a free racket's modal damping): :func:`_force_blocks_damped` then sums the power
+    in the order :func:`_powers` does.
+    """
+    if damp_blocks.shape[1] != 1:
+        return False
+    for r in range(1, damp_blocks.shape[0]):
+        if damp_blocks[r, 0] <= damp_blocks[r - 1, 0]:
+            return False
+    return True
+
+
+@njit(cache=True)
+def _force_blocks_damped(s0, s1, gin1_0, gin1_1, f_new, damp_blocks, damp_rows, power, n):
+    """:func:`_force_blocks`, and the dissipated power as :func:`_powers` sums it, block by
+    block as each is updated (for damping rows of one block each, in the blocks' order:
+    :func:`_diagonal`).
+    """
+    for i in range(n):
+        power[i] = 0.0
+    r = 0
+    for j in range(s0.shape[0]):
+        if r < damp_blocks.shape[0] and damp_blocks[r, 0] == j:
+            c0, c1 = damp_rows[r, 0, 0], damp_rows[r, 0, 1]
+            r += 1
+            for i in range(n):
+                a0 = s0[j, i] + gin1_0[j, i] * f_new[i]
+                a1 = s1[j, i] + gin1_1[j, i] * f_new[i]
+                s0[j, i] = a0
+                s1[j, i] = a1
+                row = 0.0 + (c0 * a0 + c1 * a1)
+                power[i] += row * row
+        else:
+            for i in range(n):
+                s0[j, i] += gin1_0[j, i] * f_new[i]
+                s1[j, i] += gin1_1[j, i] * f_new[i]
 
 
 @njit(cache=True)

@@ -17,17 +17,13 @@ from racket.solver.bed_mass_kernel import (
     EARLY_OVER_LATE,
     bed_deflection,
     bed_elastic,
-    bed_gap,
     opening_fraction,
 )
-from racket.solver.contact_kernel import contact_compression
 from racket.solver.expm import step_back
 from racket.solver.kernel import (
     _dot,
-    _dot_at,
     _opening_fraction,
     _power,
-    _reach,
     _record,
     string_deflection,
 )
@@ -85,6 +81,7 @@ def start_slot(frame, points, ball, out, p, i, w, v, flags, record, h):
     )
     v[tl.A, i], v[tl.C0, i], v[tl.C1, i], v[tl.C2, i] = a, coef[0], coef[1], coef[2]
     v[tl.X_O, i], v[tl.X_BALL, i], v[tl.RESIDUAL, i] = points.x_o[p], 0.0, -np.inf
+    v[tl.Z_REST_FOR, i] = np.nan  # (made when the contact first opens)
     v[tl.DAMPING, i], v[tl.WORK, i] = 0.0, 0.0
     v[tl.POWER_PREV, i] = _power(frame.damp_blocks, frame.damp_rows, s)
     v[tl.CLOSING, i] = ud - _dot(points.out_v[p], s)
@@ -144,8 +141,9 @@ def opening(ball, law, params, points, p, w, v, i, nb):
 
 @njit(cache=True)
 def after_step(frame, points, ball, controls, out, w, v, flags, scratch, i, step, left, memo):
-    """Slot ``i`` after the step: its histories, the state when the ball left, and whether
-    it has left for good (as :func:`racket.solver.kernel._one_impact`).
+    """Slot ``i`` after the step: its histories, the state when the ball left, and an
+    unhappy ball's asymptotic end (as :func:`racket.solver.kernel._one_impact`; whether an
+    open contact is over for good: :func:`racket.solver.lockstep_watch.watch_tile`).
     """
     p = flags[tl.IMPACT, i]
     law, params, sine = ball.law, ball.params, ball.law == layout.SINE
@@ -180,7 +178,6 @@ def after_step(frame, points, ball, controls, out, w, v, flags, scratch, i, step
     if left or asymptotic:
         if not gathered:
             gather(w, i, scratch)
-            gathered = True
         tau = v[tl.TAU, i]
         back = (1.0 - tau) * dt
         out.ball[p, 0] = v[tl.U, i] - back * ud
@@ -201,40 +198,6 @@ def after_step(frame, points, ball, controls, out, w, v, flags, scratch, i, step
                 points.series[p] - points.inv_ks[p]) * f2 * f2  # fmt: skip
     if asymptotic:
         flags[tl.STOP_AT, i] = step  # common speed approached asymptotically (no fold)
-        return
-    if flags[tl.STOP_AT, i] < 0 and force == 0.0:
-        if not gathered:
-            gather(w, i, scratch)
-        watch(law, params, bed, points.out_dc, points.out_d, points.out_v, points.reach_w,
-              points.series, points.inv_ks, frame.metric, v, flags, scratch, memo, i, step,
-              controls.extra_steps)  # fmt: skip
-
-
-@njit(cache=True, inline="always")
-def watch(law, params, bed, out_dc, out_d, out_v, reach_w, series, inv_ks, metric, v, flags,
-          scratch, memo, i, step, extra_steps):  # fmt: skip
-    """Slot ``i``, its contact open after ``step``, its block states gathered in ``scratch``:
-    over for good (its STOP_AT ``extra_steps`` on) once it separates in the dc motion and the
-    gap exceeds the largest deflection the remaining vibration can bring to the point (as
-    :func:`racket.solver.kernel._one_impact`).  The points' arrays come one by one and are
-    read at the impact's row, never viewed: a view costs two atomic reference counts on
-    memory every thread's tiles share, and this runs every step of every open contact.
-    """
-    p = flags[tl.IMPACT, i]
-    if _dot_at(out_dc, p, scratch) > v[tl.UD, i]:
-        f_peak = v[tl.F_PEAK_, i]
-        if bed[2] > 0.0 and law != layout.SINE:  # a bed with a mass
-            residual = series[p] - inv_ks[p]
-            z_open = bed_gap(law, params, bed, 1.0 / inv_ks[p], residual, memo, i, f_peak,
-                             v[tl.F2, i], v[tl.F2_PEAK, i],
-                             v[tl.QD, i] - _dot_at(out_v, p, scratch))  # fmt: skip
-        elif law == layout.SINE:
-            z_open = v[tl.X_BALL, i]
-        else:
-            z_open = contact_compression(law, params, bed, inv_ks[p], 0.0, f_peak)
-        gap = z_open - (v[tl.U, i] - _dot_at(out_d, p, scratch))
-        if gap >= _reach(reach_w, p, metric, scratch):
-            flags[tl.STOP_AT, i] = step + extra_steps
 
 
 @njit(cache=True)

@@ -13,13 +13,15 @@ racket 16 took a third longer than 64; 32 and 128 no less time than 64)."""
 (
     U, UD, FORCE, F_BEFORE, F_PEAK_, A, C0, C1, C2, X_O, X_BALL, RESIDUAL, DAMPING, WORK,
     POWER_PREV, CLOSING, TAU, U_P, UD_P, Z, F_NEW, POWER, ROW, NEED,
-    Q, QD, F2, F2_NEW, F2_PEAK, COMP, C1_0, C1_1, C1_2, A1, F2_BEFORE, K_BED,
-) = range(36)  # fmt: skip
-N_SCALARS = 36
+    Q, QD, F2, F2_NEW, F2_PEAK, COMP, C1_0, C1_1, C1_2, A1, F2_BEFORE, K_BED, Z_REST, Z_REST_FOR,
+) = range(38)  # fmt: skip
+N_SCALARS = 38
 # (Q ... K_BED: a bed with a mass, racket.solver.bed_mass_kernel: its displacement and
 # velocity, its force at the step's start and end, its largest, the compliance in series
 # with it, the ball's force coefficients and compliance beside the bed's mass, its force
-# a step before, and its stiffness at the point.)
+# a step before, and its stiffness at the point; Z_REST the compression at which an open
+# contact closes again, made for the ball's largest force Z_REST_FOR:
+# racket.solver.lockstep_watch.)
 
 # Rows of the per-impact integers (``flags``).
 IMPACT, STOP_AT, RECONTACT, SNAP, DONE = range(5)

@@ -1,0 +1,94 @@
+"""The lockstep kernel's test that a contact has ended (:mod:`racket.solver.lockstep`): the
+tile's open contacts in one pass a step, with the same numbers as
+:func:`racket.solver.kernel._one_impact`.
+
+The test runs every step of every open contact until it passes, some 30-40 steps an impact
+after the ball leaves (a tenth of a sweep's steps).  Impact by impact, each call passed the
+points' arrays and the tile's, it cost some 45 of numba's atomic reference counts an impact
+and step, on arrays both threads' tiles share: a fifth of the paper racket's kernel time
+(counted with gdb, sampled with perf).  One pass over the tile keeps its arrays' counts once
+a step.  What depends on the ball's largest force alone, the compression at which the
+contact closes again, is kept per impact in the tile's rows ``Z_REST`` and ``Z_REST_FOR``,
+and made again only when that force has changed.
+"""
+
+from __future__ import annotations
+
+import math
+
+from numba import njit
+
+from racket.solver import tile_layout as tl
+from racket.solver.ball_kernel import ball_compression
+from racket.solver.bed_kernel import stored
+from racket.solver.bed_mass_kernel import _remember
+from racket.solver.contact_kernel import contact_compression
+
+
+@njit(cache=True, error_model="numpy")
+def watch_tile(law, params, bed, massed, sine, out_dc, out_d, out_v, reach_w, series, inv_ks,
+               metric, w, v, flags, memo, step, extra_steps, n):  # fmt: skip
+    """The tile's contacts open after ``step`` and not yet over (after
+    :func:`racket.solver.lockstep_slot.after_step`) over for good, their STOP_AT
+    ``extra_steps`` on, once each separates in the dc motion and its gap exceeds the largest
+    deflection the remaining vibration can bring to the point, as
+    :func:`racket.solver.kernel._one_impact` (the points' rows read in place at the impact's
+    row: ``out_dc``, ``out_d``, ``out_v``, ``reach_w``, ``series`` and ``inv_ks`` of
+    :class:`racket.solver.layout.Points`, ``metric`` the frame's).
+
+    The compression at which a contact closes again is made where the ball's largest force
+    has changed: the ball's alone on a bed with a mass (``massed``;
+    :func:`racket.solver.bed_mass_kernel.bed_gap`, which adds the bed's own reach each
+    step), else the ball's and the bed's (:func:`racket.solver.contact_kernel.
+    contact_compression`); the unhappy ball's (``sine``) is its own.  With a bed mass, its
+    memo is made for the bed's largest force first, as
+    :func:`racket.solver.bed_mass_kernel.bed_elastic` makes it.
+    """
+    s0, s1 = w[tl.S0], w[tl.S1]
+    force, stop_at, done = v[tl.FORCE], flags[tl.STOP_AT], flags[tl.DONE]
+    s, mass, nb = bed[0], bed[2], s0.shape[0]
+    for i in range(n):
+        if done[i] != 0 or stop_at[i] >= 0 or force[i] != 0.0:
+            continue
+        p, f_peak = flags[tl.IMPACT, i], v[tl.F_PEAK_, i]
+        if not sine and v[tl.Z_REST_FOR, i] != f_peak:  # (a call only then)
+            if massed:
+                v[tl.Z_REST, i] = ball_compression(law, params, 0.0, f_peak)
+            else:
+                v[tl.Z_REST, i] = contact_compression(law, params, bed, inv_ks[p], 0.0, f_peak)
+            v[tl.Z_REST_FOR, i] = f_peak
+        if massed and memo[0, i] != v[tl.F2_PEAK, i]:
+            _remember(v[tl.K_BED, i], s, bed[1], v[tl.F2_PEAK, i], memo, i)
+        dc = 0.0
+        for j in range(nb):
+            dc += out_dc[p, j, 0] * s0[j, i] + out_dc[p, j, 1] * s1[j, i]
+        if not dc > v[tl.UD, i]:
+            continue
+        z_open = v[tl.X_BALL, i] if sine else v[tl.Z_REST, i]
+        if massed:  # bed_gap, with bed_elastic from the memo made for the bed's peak
+            k, residual = v[tl.K_BED, i], series[p] - inv_ks[p]
+            point_v = 0.0
+            for j in range(nb):
+                point_v += out_v[p, j, 0] * s0[j, i] + out_v[p, j, 1] * s1[j, i]
+            speed, f2, f2_max = v[tl.QD, i] - point_v, v[tl.F2, i], v[tl.F2_PEAK, i]
+            energy = 0.5 * mass * speed * speed + 0.5 * residual * f2 * f2
+            u, delta = memo[3, i], memo[2, i]
+            if u <= 0.0 or f2_max <= 0.0:
+                energy += stored(k, s, abs(u))
+            else:
+                energy += stored(k, s, u) - 0.5 * delta * f2 * f2 / f2_max
+            z_open = z_open + delta - math.sqrt(2.0 * max(energy, 0.0) * (1.0 / k + residual))
+        d = 0.0
+        for j in range(nb):
+            d += out_d[p, j, 0] * s0[j, i] + out_d[p, j, 1] * s1[j, i]
+        gap = z_open - (v[tl.U, i] - d)
+        reach = 0.0  # as kernel._reach, ended where it passes the gap
+        for j in range(reach_w.shape[1]):
+            if reach_w[p, j] > 0.0:
+                reach += reach_w[p, j] * math.sqrt(
+                    metric[j, 0] * s0[j, i] ** 2 + metric[j, 1] * s1[j, i] ** 2
+                )
+                if reach > gap:
+                    break
+        if gap >= reach:
+            flags[tl.STOP_AT, i] = step + extra_steps
