@@ -8,7 +8,7 @@ import pytest
 
 import racket
 from racket.solver import lockstep
-from racket.solver.kernel import _reach
+from racket.solver.kernel import _reach, damping_diagonal
 from racket.solver.stepper import Stepper
 
 
@@ -21,7 +21,7 @@ def _frame(model):
 def test_the_power_folded_into_the_response_has_the_separate_passes_bits(model):
     frame = _frame(model)
     blocks, rows = frame.damp_blocks, frame.damp_rows
-    assert lockstep._diagonal(blocks)  # a free racket's modal damping
+    assert damping_diagonal(blocks)  # a free racket's modal damping
     rng = np.random.default_rng(7)
     nb, n = frame.trans.shape[0], 64
     s0, s1 = rng.normal(size=(nb, n)), rng.normal(size=(nb, n)) * 1e3
@@ -37,11 +37,11 @@ def test_the_power_folded_into_the_response_has_the_separate_passes_bits(model):
 
 
 def test_the_power_is_folded_only_for_rows_of_one_block_in_the_blocks_order():
-    assert not lockstep._diagonal(_frame(racket.paper_racket(support="hand-held")).damp_blocks)
-    assert lockstep._diagonal(np.array([[2], [3], [5]]))
-    assert not lockstep._diagonal(np.array([[3], [2]]))
-    assert not lockstep._diagonal(np.array([[2], [2]]))
-    assert not lockstep._diagonal(np.array([[2, 3], [4, 5]]))
+    assert not damping_diagonal(_frame(racket.paper_racket(support="hand-held")).damp_blocks)
+    assert damping_diagonal(np.array([[2], [3], [5]]))
+    assert not damping_diagonal(np.array([[3], [2]]))
+    assert not damping_diagonal(np.array([[2], [2]]))
+    assert not damping_diagonal(np.array([[2, 3], [4, 5]]))
 
 
 def test_the_reach_ended_at_the_gap_decides_as_the_whole_sum():

@@ -165,7 +165,10 @@ def _one_impact(frame, points, ball, controls, out, p):
     force, f_before, f_peak, x_ball, snapped = 0.0, 0.0, 0.0, 0.0, False
     residual = -math.inf
     damping_loss, sine_work = 0.0, 0.0
-    power_prev = _power(frame.damp_blocks, frame.damp_rows, s)
+    damp_blocks, damp_rows = frame.damp_blocks, frame.damp_rows
+    diagonal = damping_diagonal(damp_blocks)  # the power then summed in the response
+    power_prev = _power(damp_blocks, damp_rows, s)
+    out_dc, rest_for, rest = points.out_dc[p], math.nan, 0.0
     stop_at = -1  # step at which to stop, once the ball has left for good
     recontacts = -1  # contacts after the first
     # The state when the ball last left (force back to zero).
@@ -215,9 +218,14 @@ def _one_impact(frame, points, ball, controls, out, p):
         u = u_p + ball.g1[0] * f_new
         ud = ud_p + ball.g1[1] * f_new
         f_frame = f2_new if massed else f_new
+        power, r = 0.0, 0
         for j in range(nb):
             s[j, 0] += gin1[j, 0] * f_frame
             s[j, 1] += gin1[j, 1] * f_frame
+            if diagonal and r < damp_blocks.shape[0] and damp_blocks[r, 0] == j:
+                row = 0.0 + (damp_rows[r, 0, 0] * s[j, 0] + damp_rows[r, 0, 1] * s[j, 1])
+                power += row * row  # (as _power sums it)
+                r += 1
         tau = 1.0  # fraction of the step at which the contact opened
         if f_new == 0.0 and force > 0.0 and massed:
             tau = opening_fraction(law, params, force, f_peak, z_pred)
@@ -242,7 +250,10 @@ def _one_impact(frame, points, ball, controls, out, p):
             for j in range(nb):
                 s[j, 0] += gin0[j, 0] * d0 + gin1[j, 0] * d1
                 s[j, 1] += gin0[j, 1] * d0 + gin1[j, 1] * d1
-        power = _power(frame.damp_blocks, frame.damp_rows, s)
+            if diagonal:  # the state moved after its power was summed
+                power = _power(damp_blocks, damp_rows, s)
+        if not diagonal:
+            power = _power(damp_blocks, damp_rows, s)
         damping_loss += 0.5 * (power + power_prev) * dt
         power_prev = power
         if f_new > 0.0 and force == 0.0:
@@ -287,7 +298,7 @@ def _one_impact(frame, points, ball, controls, out, p):
         if asymptotic:
             stop_at = step  # common speed approached asymptotically (no fold)
             break
-        if stop_at < 0 and force == 0.0 and _dot(points.out_dc[p], s) > ud:
+        if stop_at < 0 and force == 0.0 and _dot(out_dc, s) > ud:
             # Open and separating in the dc motion: over for good once the gap exceeds
             # the largest deflection the remaining vibration can bring to the point.
             if massed:
@@ -296,7 +307,12 @@ def _one_impact(frame, points, ball, controls, out, p):
             elif sine:
                 z_open = x_ball
             else:
-                z_open = contact_compression(law, params, bed, inv_ks, 0.0, f_peak)
+                if rest_for != f_peak:  # made again only where the largest force has changed
+                    rest, rest_for = (
+                        contact_compression(law, params, bed, inv_ks, 0.0, f_peak),
+                        f_peak,
+                    )
+                z_open = rest
             gap = z_open - (u - _dot(out_d, s))
             if gap >= _reach(points.reach_w, p, frame.metric, s, gap):
                 stop_at = step + controls.extra_steps
@@ -404,6 +420,20 @@ def _dot(rows, s):
     for j in range(s.shape[0]):
         total += rows[j, 0] * s[j, 0] + rows[j, 1] * s[j, 1]
     return total
+
+
+@njit(cache=True)
+def damping_diagonal(damp_blocks):
+    """Whether each row of the dissipated power is one block's, the rows in the blocks'
+    order (a free racket's modal damping): the kernels then sum the power block by block as
+    each block takes the force's response, in the order :func:`_power` sums it.
+    """
+    if damp_blocks.shape[1] != 1:
+        return False
+    for r in range(1, damp_blocks.shape[0]):
+        if damp_blocks[r, 0] <= damp_blocks[r - 1, 0]:
+            return False
+    return True
 
 
 @njit(cache=True)

@@ -32,7 +32,7 @@ from racket.solver import tile_layout as tl
 from racket.solver.bed_kernel import bed_active
 from racket.solver.bed_mass_kernel import BED_MEMO_ROWS, bed_mass_coupling
 from racket.solver.contact_kernel import MEMO_ROWS, contact_force
-from racket.solver.kernel import _power
+from racket.solver.kernel import _power, damping_diagonal
 from racket.solver.layout import H_FORCE, LINEAR, SINE
 from racket.solver.lockstep_ball import BALL_ROWS, ball_pass
 from racket.solver.lockstep_massed import LANE_ROWS, massed_pass
@@ -86,7 +86,7 @@ def _tile(frame, points, ball, controls, out, ids, w, v, flags, scratch, memo, l
     # Views made once (making one in the loop costs two atomic reference counts).
     s0, s1, out_d0, out_d1, trans = w[tl.S0], w[tl.S1], w[tl.OUT_D0], w[tl.OUT_D1], frame.trans
     damp_blocks, damp_rows = frame.damp_blocks, frame.damp_rows
-    diagonal = _diagonal(damp_blocks)
+    diagonal = damping_diagonal(damp_blocks)
     gin0_0, gin0_1, gin1_0, gin1_1 = w[tl.GIN0_0], w[tl.GIN0_1], w[tl.GIN1_0], w[tl.GIN1_1]
     u, ud, u_p, ud_p, z, tau = v[tl.U], v[tl.UD], v[tl.U_P], v[tl.UD_P], v[tl.Z], v[tl.TAU]
     force, f_new, f_before, f_peak = v[tl.FORCE], v[tl.F_NEW], v[tl.F_BEFORE], v[tl.F_PEAK_]
@@ -243,24 +243,10 @@ def _force_blocks(s0, s1, gin1_0, gin1_1, f_new, n):
 
 
 @njit(cache=True)
-def _diagonal(damp_blocks):
-    """Whether each row of the dissipated power is one block's, the rows in the blocks'
-    order (a free racket's modal damping): :func:`_force_blocks_damped` then sums the power
-    in the order :func:`_powers` does.
-    """
-    if damp_blocks.shape[1] != 1:
-        return False
-    for r in range(1, damp_blocks.shape[0]):
-        if damp_blocks[r, 0] <= damp_blocks[r - 1, 0]:
-            return False
-    return True
-
-
-@njit(cache=True)
 def _force_blocks_damped(s0, s1, gin1_0, gin1_1, f_new, damp_blocks, damp_rows, power, n):
     """:func:`_force_blocks`, and the dissipated power as :func:`_powers` sums it, block by
     block as each is updated (for damping rows of one block each, in the blocks' order:
-    :func:`_diagonal`).
+    :func:`racket.solver.kernel.damping_diagonal`).
     """
     for i in range(n):
         power[i] = 0.0
