@@ -6,10 +6,11 @@ The test runs every step of every open contact until it passes, some 30-40 steps
 after the ball leaves (a tenth of a sweep's steps).  Impact by impact, each call passed the
 points' arrays and the tile's, it cost some 45 of numba's atomic reference counts an impact
 and step, on arrays both threads' tiles share: a fifth of the paper racket's kernel time
-(counted with gdb, sampled with perf).  One pass over the tile keeps its arrays' counts once
-a step.  What depends on the ball's largest force alone, the compression at which the
-contact closes again, is kept per impact in the tile's rows ``Z_REST`` and ``Z_REST_FOR``,
-and made again only when that force has changed.
+(counted with gdb, sampled with perf).  One pass over the tile that calls nothing
+(:func:`watch_tile`) has them cancelled at compile time.  What depends on the ball's largest
+force alone, the compression at which the contact closes again, is kept per impact in the
+tile's rows ``Z_REST`` and ``Z_REST_FOR`` and made again (:func:`rest`, called from the tile
+for that impact alone) only when that force has changed.
 """
 
 from __future__ import annotations
@@ -25,40 +26,47 @@ from racket.solver.bed_mass_kernel import _remember
 from racket.solver.contact_kernel import contact_compression
 
 
+@njit(cache=True)
+def rest(law, params, bed, massed, inv_ks, v, flags, memo, i):
+    """Slot ``i``'s compression at which its contact closes again, made for the ball's
+    largest force: the ball's alone on a bed with a mass (``massed``;
+    :func:`racket.solver.bed_mass_kernel.bed_gap`, which adds the bed's own reach each
+    step), else the ball's and the bed's (:func:`racket.solver.contact_kernel.
+    contact_compression`); with a bed mass, its memo made for the bed's largest force, as
+    :func:`racket.solver.bed_mass_kernel.bed_elastic` makes it.
+    """
+    f_peak = v[tl.F_PEAK_, i]
+    if v[tl.Z_REST_FOR, i] != f_peak:
+        if massed:
+            v[tl.Z_REST, i] = ball_compression(law, params, 0.0, f_peak)
+        else:
+            p = flags[tl.IMPACT, i]
+            v[tl.Z_REST, i] = contact_compression(law, params, bed, inv_ks[p], 0.0, f_peak)
+        v[tl.Z_REST_FOR, i] = f_peak
+    if massed and memo[0, i] != v[tl.F2_PEAK, i]:
+        _remember(v[tl.K_BED, i], bed[0], bed[1], v[tl.F2_PEAK, i], memo, i)
+
+
 @njit(cache=True, error_model="numpy")
-def watch_tile(law, params, bed, massed, sine, out_dc, out_d, out_v, reach_w, series, inv_ks,
-               metric, w, v, flags, memo, step, extra_steps, n):  # fmt: skip
+def watch_tile(massed, sine, s, mass, out_dc, out_d, out_v, reach_w, series, inv_ks, metric, s0,
+               s1, v, flags, memo, step, extra_steps, n):  # fmt: skip
     """The tile's contacts open after ``step`` and not yet over (after
     :func:`racket.solver.lockstep_slot.after_step`) over for good, their STOP_AT
     ``extra_steps`` on, once each separates in the dc motion and its gap exceeds the largest
     deflection the remaining vibration can bring to the point, as
     :func:`racket.solver.kernel._one_impact` (the points' rows read in place at the impact's
     row: ``out_dc``, ``out_d``, ``out_v``, ``reach_w``, ``series`` and ``inv_ks`` of
-    :class:`racket.solver.layout.Points`, ``metric`` the frame's).
-
-    The compression at which a contact closes again is made where the ball's largest force
-    has changed: the ball's alone on a bed with a mass (``massed``;
-    :func:`racket.solver.bed_mass_kernel.bed_gap`, which adds the bed's own reach each
-    step), else the ball's and the bed's (:func:`racket.solver.contact_kernel.
-    contact_compression`); the unhappy ball's (``sine``) is its own.  With a bed mass, its
-    memo is made for the bed's largest force first, as
-    :func:`racket.solver.bed_mass_kernel.bed_elastic` makes it.
+    :class:`racket.solver.layout.Points`, ``metric`` the frame's; ``s0`` and ``s1`` the
+    tile's block states; the bed's stretch ``s`` [1/m^2] and moving ``mass`` [kg]).  The
+    compression at which a contact closes again is :func:`rest`'s, made first (the unhappy
+    ball's, ``sine``, its own); the pass calls nothing, so its arrays are counted once a call
+    or not at all.
     """
-    s0, s1 = w[tl.S0], w[tl.S1]
-    force, stop_at, done = v[tl.FORCE], flags[tl.STOP_AT], flags[tl.DONE]
-    s, mass, nb = bed[0], bed[2], s0.shape[0]
+    nb = s0.shape[0]
     for i in range(n):
-        if done[i] != 0 or stop_at[i] >= 0 or force[i] != 0.0:
+        if flags[tl.DONE, i] != 0 or flags[tl.STOP_AT, i] >= 0 or v[tl.FORCE, i] != 0.0:
             continue
-        p, f_peak = flags[tl.IMPACT, i], v[tl.F_PEAK_, i]
-        if not sine and v[tl.Z_REST_FOR, i] != f_peak:  # (a call only then)
-            if massed:
-                v[tl.Z_REST, i] = ball_compression(law, params, 0.0, f_peak)
-            else:
-                v[tl.Z_REST, i] = contact_compression(law, params, bed, inv_ks[p], 0.0, f_peak)
-            v[tl.Z_REST_FOR, i] = f_peak
-        if massed and memo[0, i] != v[tl.F2_PEAK, i]:
-            _remember(v[tl.K_BED, i], s, bed[1], v[tl.F2_PEAK, i], memo, i)
+        p = flags[tl.IMPACT, i]
         dc = 0.0
         for j in range(nb):
             dc += out_dc[p, j, 0] * s0[j, i] + out_dc[p, j, 1] * s1[j, i]
