@@ -1,14 +1,19 @@
 """The lockstep kernel's shortcuts decide and sum as the passes they replace, to the bit:
-the dissipated power folded into the blocks' response (racket.solver.lockstep), and the
-reach of the remaining vibration ended where it passes the gap (racket.solver.kernel._reach,
-racket.solver.lockstep_watch)."""
+the dissipated power folded into the blocks' response (racket.solver.lockstep), the reach of
+the remaining vibration ended where it passes the gap (racket.solver.kernel._reach,
+racket.solver.lockstep_watch), and the test that an open contact is over in one pass over the
+tile (racket.solver.lockstep_watch) against the scalar kernel's functions."""
 
 import numpy as np
 import pytest
 
 import racket
 from racket.solver import lockstep
-from racket.solver.kernel import _reach, damping_diagonal
+from racket.solver import lockstep_watch as watch
+from racket.solver import tile_layout as tl
+from racket.solver.bed_mass_kernel import BED_MEMO_ROWS, bed_gap
+from racket.solver.contact_kernel import MEMO_ROWS, contact_compression
+from racket.solver.kernel import _dot, _reach, damping_diagonal
 from racket.solver.stepper import Stepper
 
 
@@ -60,3 +65,52 @@ def test_the_reach_ended_at_the_gap_decides_as_the_whole_sum():
                 gaps += [partial, np.nextafter(partial, -np.inf), np.nextafter(partial, np.inf)]
         for gap in gaps:
             assert (gap >= _reach(reach_w, 0, metric, s, gap)) == (gap >= whole)
+
+
+@pytest.mark.parametrize("model", [racket.paper_racket(), racket.default_racket()])
+def test_the_watch_pass_decides_as_the_scalar_kernels_functions_at_the_edge(model):
+    """Each open contact set a hair inside or outside its reach, as the scalar kernel's
+    functions (bed_gap, contact_compression, _reach) place it: the pass ends exactly those
+    outside (a watch that ended early would miss a late re-contact, and no whole impact shows
+    it otherwise)."""
+    ball = racket.default_ball()
+    x = np.linspace(*model.strings.extent, 10)[1:-1]
+    stepper = Stepper(model, ball, x, None, np.full(x.size, 16.5), 0.0, None, 300)
+    points, bed, law, params = (
+        stepper.points,
+        stepper.ball.bed,
+        stepper.ball.law,
+        stepper.ball.params,
+    )
+    massed, n, nb = bed[2] > 0.0, x.size, stepper.frame.trans.shape[0]
+    rng = np.random.default_rng(3)
+    w = np.zeros((tl.N_ROWS, nb, tl.TILE))
+    v = np.zeros((tl.N_SCALARS, tl.TILE))
+    flags = np.zeros((tl.N_FLAGS, tl.TILE), dtype=np.int64)
+    memo = np.full((max(MEMO_ROWS, BED_MEMO_ROWS), tl.TILE), -1.0)
+    flags[tl.IMPACT, :n], flags[tl.STOP_AT, :n] = np.arange(n), -1
+    w[tl.S0, :, :n], w[tl.S1, :, :n] = rng.normal(size=(nb, n)) * 1e-4, rng.normal(size=(nb, n))
+    v[tl.F_PEAK_, :n], v[tl.Z_REST_FOR, :n] = rng.uniform(200.0, 800.0, n), np.nan
+    v[tl.F2, :n], v[tl.F2_PEAK, :n] = rng.uniform(-20.0, 20.0, n), rng.uniform(200.0, 800.0, n)
+    v[tl.QD, :n], v[tl.K_BED, :n] = rng.normal(size=n), 1.0 / points.inv_ks
+    memo[3, :n] = rng.uniform(-1e-3, 3e-3, n)
+    expected = np.full(n, -1)
+    for i in range(n):
+        s = np.ascontiguousarray(np.stack([w[tl.S0, :, i], w[tl.S1, :, i]], axis=1))
+        v[tl.UD, i] = _dot(points.out_dc[i], s) - 1.0  # separating in the dc motion
+        watch.rest(law, params, bed, massed, points.inv_ks, v, flags, memo, i)
+        if massed:
+            z_open = bed_gap(law, params, bed, v[tl.K_BED, i], points.series[i] - points.inv_ks[i],
+                             memo.copy(), i, v[tl.F_PEAK_, i], v[tl.F2, i], v[tl.F2_PEAK, i],
+                             v[tl.QD, i] - _dot(points.out_v[i], s))  # fmt: skip
+        else:
+            z_open = contact_compression(law, params, bed, points.inv_ks[i], 0.0, v[tl.F_PEAK_, i])
+        reach = _reach(points.reach_w, i, stepper.frame.metric, s, np.inf)
+        outside = i % 2 == 0  # the gap a hair beyond the reach, or a hair short of it
+        gap = reach * (1.0 + (1e-9 if outside else -1e-9))
+        v[tl.U, i] = z_open + _dot(points.out_d[i], s) - gap
+        expected[i] = 7 + 3 if outside else -1
+    watch.watch_tile(massed, False, bed[0], bed[2], points.out_dc, points.out_d, points.out_v,
+                     points.reach_w, points.series, points.inv_ks, stepper.frame.metric,
+                     w[tl.S0], w[tl.S1], v, flags, memo, 7, 3, n)  # fmt: skip
+    assert flags[tl.STOP_AT, :n].tolist() == expected.tolist()
