@@ -93,6 +93,8 @@ def passes(racket, ball, x, speed) -> None:
     w = rng.normal(size=(tl.N_ROWS, nb, n)) * 1e-3
     v = np.abs(rng.normal(size=(tl.N_SCALARS, n)))
     f = stepper.frame
+    # a free racket's blocks read the point's row alone (lockstep._modal)
+    shapes = np.stack([f.g0[:, 0, 1], f.g0[:, 1, 1], f.g1[:, 0, 1], f.g1[:, 1, 1]], axis=1)
     reps = 20000
     kinds = {
         "ball's free step": 0,
@@ -104,9 +106,9 @@ def passes(racket, ball, x, speed) -> None:
     }
     times = {}
     for name, kind in kinds.items():
-        _one_pass(1, kind, f.trans, f.damp_blocks, f.damp_rows, w, v, n)
+        _one_pass(1, kind, f.trans, shapes, f.damp_blocks, f.damp_rows, w, v, n)
         start = time.process_time()
-        _one_pass(reps, kind, f.trans, f.damp_blocks, f.damp_rows, w, v, n)
+        _one_pass(reps, kind, f.trans, shapes, f.damp_blocks, f.damp_rows, w, v, n)
         times[name] = (time.process_time() - start) / reps
     step = sum(times.values())
     print(f"lockstep passes over a tile of {n} impacts, {nb} blocks: {1e9 * step / n:.1f} ns")
@@ -116,7 +118,7 @@ def passes(racket, ball, x, speed) -> None:
 
 
 @njit(cache=False)
-def _one_pass(reps, kind, trans, damp_blocks, damp_rows, w, v, n):
+def _one_pass(reps, kind, trans, shapes, damp_blocks, damp_rows, w, v, n):
     """Pass ``kind`` of the lockstep kernel's step (:mod:`racket.solver.lockstep`), ``reps``
     times over the tile's ``n`` impacts (states ``w``, scalars ``v``; their values are
     immaterial to the time).
@@ -133,14 +135,15 @@ def _one_pass(reps, kind, trans, damp_blocks, damp_rows, w, v, n):
         if kind == 0:
             lockstep._ball_free(1.0, 1e-5, 0.0, 1.0, 1e-9, 1e-5, u, ud, force, u_p, ud_p, z, n)
         elif kind == 1:
-            lockstep._free_blocks(trans, s0, s1, gin0_0, gin0_1, out_d0, out_d1, force, z, n)
+            lockstep._free_blocks(trans, shapes, True, s0, s1, gin0_0, gin0_1, out_d0, out_d1,
+                                  force, z, n)  # fmt: skip
         elif kind == 2:
             lockstep._linear_force(u_p, z, c0, c1, c2, f_peak, f_new, n)
         elif kind == 3:
             lockstep._ball_force(1e-9, 1e-5, u_p, ud_p, f_new, u, ud, tau, n)
         elif kind == 4:  # (a free racket's modal damping: one block a row)
-            lockstep._force_blocks_damped(s0, s1, gin1_0, gin1_1, f_new, damp_blocks, damp_rows,
-                                          power, n)  # fmt: skip
+            lockstep._force_blocks_damped(shapes, True, s0, s1, gin1_0, gin1_1, out_d0, f_new,
+                                          damp_blocks, damp_rows, power, n)  # fmt: skip
         else:
             lockstep._bookkeep(power, power_prev, damping, force, f_new, f_before, f_peak, need,
                                stop_at, recontacts, 1e-5, 0.0, n)  # fmt: skip

@@ -33,10 +33,12 @@ def test_the_power_folded_into_the_response_has_the_separate_passes_bits(model):
     gin1_0, gin1_1 = rng.normal(size=(nb, n)) * 1e-6, rng.normal(size=(nb, n)) * 1e-3
     f_new = np.abs(rng.normal(size=n)) * 1e3
     a0, a1, power_a, row = s0.copy(), s1.copy(), np.full(n, np.nan), np.empty(n)
-    lockstep._force_blocks(a0, a1, gin1_0, gin1_1, f_new, n)
+    shapes, out_d0 = np.empty((nb, 4)), np.empty((nb, n))  # (the stored inputs read)
+    lockstep._force_blocks(shapes, False, a0, a1, gin1_0, gin1_1, out_d0, f_new, n)
     lockstep._powers(blocks, rows, a0, a1, power_a, row, n)
     b0, b1, power_b = s0.copy(), s1.copy(), np.full(n, np.nan)
-    lockstep._force_blocks_damped(b0, b1, gin1_0, gin1_1, f_new, blocks, rows, power_b, n)
+    lockstep._force_blocks_damped(shapes, False, b0, b1, gin1_0, gin1_1, out_d0, f_new, blocks,
+                                  rows, power_b, n)  # fmt: skip
     assert a0.tobytes() == b0.tobytes() and a1.tobytes() == b1.tobytes()
     assert power_a.tobytes() == power_b.tobytes()
 
@@ -114,3 +116,55 @@ def test_the_watch_pass_decides_as_the_scalar_kernels_functions_at_the_edge(mode
                      points.reach_w, points.series, points.inv_ks, stepper.frame.metric,
                      w[tl.S0], w[tl.S1], v, flags, memo, 7, 3, n)  # fmt: skip
     assert flags[tl.STOP_AT, :n].tolist() == expected.tolist()
+
+
+def _tile_rows(model, count=64):
+    """A tile's rows as the lockstep kernel's slots hold them (lockstep_slot.start_slot)."""
+    x = np.linspace(*model.strings.extent, count)
+    stepper = Stepper(model, racket.paper_ball(), x, None, np.full(count, 10.0), 0.0, None, 300)
+    frame, unit, out_d = stepper.frame, stepper.points.unit, stepper.points.out_d
+    w = np.zeros((tl.N_ROWS, frame.trans.shape[0], count))
+    for r in range(2):
+        w[tl.GIN0_0 + r] = (frame.g0[:, r, 0] * unit[:, :, 0] + frame.g0[:, r, 1] * unit[:, :, 1]).T
+        w[tl.GIN1_0 + r] = (frame.g1[:, r, 0] * unit[:, :, 0] + frame.g1[:, r, 1] * unit[:, :, 1]).T
+        w[tl.OUT_D0 + r] = out_d[:, :, r].T
+    return frame, w
+
+
+def test_a_free_rackets_blocks_read_the_points_row_alone_and_a_held_ones_do_not():
+    for model, modal in ((racket.paper_racket(), True), (racket.default_racket(), True),
+                         (racket.paper_racket(support="hand-held"), False)):  # fmt: skip
+        frame, w = _tile_rows(model)
+        shapes = np.empty((frame.trans.shape[0], 4))
+        assert lockstep._modal(frame.g0, frame.g1, w, shapes, w.shape[2]) == modal
+
+
+@pytest.mark.parametrize("model", [racket.paper_racket(), racket.default_racket()])
+def test_the_blocks_passes_from_the_points_row_have_the_stored_inputs_bits(model):
+    """Zeros of either sign in the states and the forces, where a sum's sign could part."""
+    frame, w = _tile_rows(model)
+    nb, n = w.shape[1], w.shape[2]
+    shapes = np.empty((nb, 4))
+    assert lockstep._modal(frame.g0, frame.g1, w, shapes, n)
+    rng = np.random.default_rng(5)
+    signed_zeros = np.array([0.0, -0.0])
+    s0, s1 = rng.normal(size=(nb, n)) * 1e-3, rng.normal(size=(nb, n))
+    for s in (s0, s1):
+        zero = rng.random((nb, n)) < 0.2
+        s[zero] = rng.choice(signed_zeros, size=zero.sum())
+    force = np.abs(rng.normal(size=n)) * 1e3
+    force[::3] = signed_zeros[rng.integers(0, 2, force[::3].size)]
+    runs = []
+    for modal in (False, True):
+        a0, a1, z = s0.copy(), s1.copy(), np.zeros(n)
+        lockstep._free_blocks(frame.trans, shapes, modal, a0, a1, w[tl.GIN0_0], w[tl.GIN0_1],
+                              w[tl.OUT_D0], w[tl.OUT_D1], force, z, n)  # fmt: skip
+        b0, b1 = a0.copy(), a1.copy()
+        lockstep._force_blocks(shapes, modal, b0, b1, w[tl.GIN1_0], w[tl.GIN1_1], w[tl.OUT_D0],
+                               force, n)  # fmt: skip
+        power = np.empty(n)
+        lockstep._force_blocks_damped(shapes, modal, a0, a1, w[tl.GIN1_0], w[tl.GIN1_1],
+                                      w[tl.OUT_D0], force, frame.damp_blocks, frame.damp_rows,
+                                      power, n)  # fmt: skip
+        runs.append(b"".join(r.tobytes() for r in (z, a0, a1, b0, b1, power)))
+    assert runs[0] == runs[1]

@@ -5,16 +5,17 @@ The same scheme and the same numbers as :func:`racket.solver.kernel.run_impacts`
 them) sit side by side along arrays, so that each pass of a step (the free step of every
 block, the force of a linear ball, the force's response and, with a free racket's modal
 damping, the dissipated power with it, the bookkeeping) is a loop over the impacts that LLVM
-vectorises; the test that an open contact has left for good is one pass over the tile's
-open contacts (:mod:`racket.solver.lockstep_watch`).  A power-law ball's Newton iteration,
-on the paper's bed (:mod:`racket.solver.lockstep_ball`) or on a bed with a mass
+vectorises (on a free racket the blocks' passes read one row an impact and block, the
+point's displacement, from which each mode's inputs are made, rather than five:
+:func:`_modal`); the test that an open contact has left for good is one pass over the tile's
+open contacts (:mod:`racket.solver.lockstep_watch`). A power-law ball's Newton iteration, on
+the paper's bed (:mod:`racket.solver.lockstep_ball`) or on a bed with a mass
 (:mod:`racket.solver.lockstep_massed`), runs over the tile too, a pass an iteration, each
-impact stopping by its own rule.  What happens rarely, or per impact only, is fixed up
-impact by impact with the scalar kernel's own functions: the force on a massless bed that
-stiffens or loses energy, the unhappy ball's return mapping, the contact opening within its
-step, the moment the ball leaves, the histories.  An impact that has ended leaves the tile
-(the last one takes its place), so the passes run over the impacts still in contact or
-watched.
+impact stopping by its own rule. What happens rarely, or per impact only, is fixed up impact
+by impact with the scalar kernel's own functions: the force on a massless bed that stiffens
+or loses energy, the unhappy ball's return mapping, the contact opening within its step, the
+moment the ball leaves, the histories. An impact that has ended leaves the tile (the last
+one takes its place), so the passes run over the impacts still in contact or watched.
 
 The results are bit-identical to the scalar kernel's: every impact goes through the same
 floating-point operations in the same order (numba compiles without fast-math, so LLVM
@@ -23,6 +24,8 @@ changes neither); ``tests/test_lockstep.py`` compares the two bit for bit.
 """
 
 from __future__ import annotations
+
+import math
 
 import numpy as np
 from numba import njit
@@ -87,6 +90,8 @@ def _tile(frame, points, ball, controls, out, ids, w, v, flags, scratch, memo, l
     s0, s1, out_d0, out_d1, trans = w[tl.S0], w[tl.S1], w[tl.OUT_D0], w[tl.OUT_D1], frame.trans
     damp_blocks, damp_rows = frame.damp_blocks, frame.damp_rows
     diagonal = damping_diagonal(damp_blocks)
+    shapes = np.empty((nb, 4))
+    modal = _modal(frame.g0, frame.g1, w, shapes, n)
     gin0_0, gin0_1, gin1_0, gin1_1 = w[tl.GIN0_0], w[tl.GIN0_1], w[tl.GIN1_0], w[tl.GIN1_1]
     u, ud, u_p, ud_p, z, tau = v[tl.U], v[tl.UD], v[tl.U_P], v[tl.UD_P], v[tl.Z], v[tl.TAU]
     force, f_new, f_before, f_peak = v[tl.FORCE], v[tl.F_NEW], v[tl.F_BEFORE], v[tl.F_PEAK_]
@@ -111,7 +116,7 @@ def _tile(frame, points, ball, controls, out, ids, w, v, flags, scratch, memo, l
     while n > 0 and step < controls.max_steps:
         # The free step (the force going from `force` to 0): ball, blocks, the point.
         _ball_free(t00, t01, t10, t11, g00, g01, u, ud, force, u_p, ud_p, z, n)
-        _free_blocks(trans, s0, s1, gin0_0, gin0_1, out_d0, out_d1, f_frame, z, n)
+        _free_blocks(trans, shapes, modal, s0, s1, gin0_0, gin0_1, out_d0, out_d1, f_frame, z, n)
         # The force at the step's end.
         if massed:
             massed_pass(law, params, bed, v, memo, lanes, picks, dt, h, n)
@@ -135,10 +140,10 @@ def _tile(frame, points, ball, controls, out, ids, w, v, flags, scratch, memo, l
         # The response to the force at the step's end.
         _ball_force(g10, g11, u_p, ud_p, f_new, u, ud, tau, n)
         if diagonal:  # and the dissipated power with it
-            _force_blocks_damped(s0, s1, gin1_0, gin1_1, f_frame_new, damp_blocks, damp_rows,
-                                 power, n)  # fmt: skip
+            _force_blocks_damped(shapes, modal, s0, s1, gin1_0, gin1_1, out_d0, f_frame_new,
+                                 damp_blocks, damp_rows, power, n)  # fmt: skip
         else:
-            _force_blocks(s0, s1, gin1_0, gin1_1, f_frame_new, n)
+            _force_blocks(shapes, modal, s0, s1, gin1_0, gin1_1, out_d0, f_frame_new, n)
         if massed:
             for i in range(n):  # the ball left the bed within the step: placed there
                 if f_new[i] == 0.0 and force[i] > 0.0:
@@ -199,18 +204,54 @@ def _ball_free(t00, t01, t10, t11, g00, g01, u, ud, force, u_p, ud_p, z, n):
 
 
 @njit(cache=True)
-def _free_blocks(trans, s0, s1, gin0_0, gin0_1, out_d0, out_d1, force, z, n):
+def _modal(g0, g1, w, shapes, n):
+    """Whether each block's input from the force is, for every impact of the tile, a number
+    of the block's times the point's displacement row, to the bit, and that row's velocity
+    half zero (a free racket's modes: the force moves a mode's velocity by its shape at the
+    point, which is the point's displacement from that mode); the numbers into ``shapes``
+    (nb, 4): the inputs' second columns, g0's and g1's.  Then the blocks' passes read that
+    row alone, not five (:func:`_free_blocks`, :func:`_force_blocks`), with the same bits:
+    the same products, and the zero half's terms are +-0 added to a point's displacement
+    that starts at +0 (so never -0: it stays itself), for finite states.
+    """
+    for j in range(shapes.shape[0]):
+        shapes[j, 0], shapes[j, 1] = g0[j, 0, 1], g0[j, 1, 1]
+        shapes[j, 2], shapes[j, 3] = g1[j, 0, 1], g1[j, 1, 1]
+        for i in range(n):
+            p = w[tl.OUT_D0, j, i]
+            if w[tl.OUT_D1, j, i] != 0.0:
+                return False
+            for k in range(4):
+                stored, made = w[tl.GIN0_0 + k, j, i], shapes[j, k] * p
+                if stored != made or math.copysign(1.0, stored) != math.copysign(1.0, made):
+                    return False
+    return True
+
+
+@njit(cache=True)
+def _free_blocks(trans, shapes, modal, s0, s1, gin0_0, gin0_1, out_d0, out_d1, force, z, n):
     """The blocks' free step for the tile, and the point's displacement into ``z`` (summed
-    over the blocks in order, as :func:`racket.solver.kernel._free_step`).
+    over the blocks in order, as :func:`racket.solver.kernel._free_step`); ``modal``: the
+    inputs made from ``shapes`` and ``out_d0`` (:func:`_modal`).
     """
     for j in range(trans.shape[0]):
         t00, t01, t10, t11 = trans[j, 0, 0], trans[j, 0, 1], trans[j, 1, 0], trans[j, 1, 1]
-        for i in range(n):
-            a0 = t00 * s0[j, i] + t01 * s1[j, i] + gin0_0[j, i] * force[i]
-            a1 = t10 * s0[j, i] + t11 * s1[j, i] + gin0_1[j, i] * force[i]
-            s0[j, i] = a0
-            s1[j, i] = a1
-            z[i] += out_d0[j, i] * a0 + out_d1[j, i] * a1
+        if modal:
+            c0, c1 = shapes[j, 0], shapes[j, 1]
+            for i in range(n):
+                p = out_d0[j, i]
+                a0 = t00 * s0[j, i] + t01 * s1[j, i] + (c0 * p) * force[i]
+                a1 = t10 * s0[j, i] + t11 * s1[j, i] + (c1 * p) * force[i]
+                s0[j, i] = a0
+                s1[j, i] = a1
+                z[i] += p * a0
+        else:
+            for i in range(n):
+                a0 = t00 * s0[j, i] + t01 * s1[j, i] + gin0_0[j, i] * force[i]
+                a1 = t10 * s0[j, i] + t11 * s1[j, i] + gin0_1[j, i] * force[i]
+                s0[j, i] = a0
+                s1[j, i] = a1
+                z[i] += out_d0[j, i] * a0 + out_d1[j, i] * a1
 
 
 @njit(cache=True)
@@ -239,16 +280,26 @@ def _ball_force(g10, g11, u_p, ud_p, f_new, u, ud, tau, n):
 
 
 @njit(cache=True)
-def _force_blocks(s0, s1, gin1_0, gin1_1, f_new, n):
-    """The blocks' response to the force at the step's end, for the tile."""
+def _force_blocks(shapes, modal, s0, s1, gin1_0, gin1_1, out_d0, f_new, n):
+    """The blocks' response to the force at the step's end, for the tile (``modal``: see
+    :func:`_free_blocks`).
+    """
     for j in range(s0.shape[0]):
-        for i in range(n):
-            s0[j, i] += gin1_0[j, i] * f_new[i]
-            s1[j, i] += gin1_1[j, i] * f_new[i]
+        if modal:
+            c0, c1 = shapes[j, 2], shapes[j, 3]
+            for i in range(n):
+                p = out_d0[j, i]
+                s0[j, i] += (c0 * p) * f_new[i]
+                s1[j, i] += (c1 * p) * f_new[i]
+        else:
+            for i in range(n):
+                s0[j, i] += gin1_0[j, i] * f_new[i]
+                s1[j, i] += gin1_1[j, i] * f_new[i]
 
 
 @njit(cache=True)
-def _force_blocks_damped(s0, s1, gin1_0, gin1_1, f_new, damp_blocks, damp_rows, power, n):
+def _force_blocks_damped(shapes, modal, s0, s1, gin1_0, gin1_1, out_d0, f_new, damp_blocks,
+                         damp_rows, power, n):  # fmt: skip
     """:func:`_force_blocks`, and the dissipated power as :func:`_powers` sums it, block by
     block as each is updated (for damping rows of one block each, in the blocks' order:
     :func:`racket.solver.kernel.damping_diagonal`).
@@ -257,16 +308,32 @@ def _force_blocks_damped(s0, s1, gin1_0, gin1_1, f_new, damp_blocks, damp_rows, 
         power[i] = 0.0
     r = 0
     for j in range(s0.shape[0]):
-        if r < damp_blocks.shape[0] and damp_blocks[r, 0] == j:
-            c0, c1 = damp_rows[r, 0, 0], damp_rows[r, 0, 1]
-            r += 1
+        damped = r < damp_blocks.shape[0] and damp_blocks[r, 0] == j
+        d0, d1 = (damp_rows[r, 0, 0], damp_rows[r, 0, 1]) if damped else (0.0, 0.0)
+        r += 1 if damped else 0
+        c0, c1 = shapes[j, 2], shapes[j, 3]
+        if damped and modal:
+            for i in range(n):
+                p = out_d0[j, i]
+                a0 = s0[j, i] + (c0 * p) * f_new[i]
+                a1 = s1[j, i] + (c1 * p) * f_new[i]
+                s0[j, i] = a0
+                s1[j, i] = a1
+                row = 0.0 + (d0 * a0 + d1 * a1)
+                power[i] += row * row
+        elif damped:
             for i in range(n):
                 a0 = s0[j, i] + gin1_0[j, i] * f_new[i]
                 a1 = s1[j, i] + gin1_1[j, i] * f_new[i]
                 s0[j, i] = a0
                 s1[j, i] = a1
-                row = 0.0 + (c0 * a0 + c1 * a1)
+                row = 0.0 + (d0 * a0 + d1 * a1)
                 power[i] += row * row
+        elif modal:
+            for i in range(n):
+                p = out_d0[j, i]
+                s0[j, i] += (c0 * p) * f_new[i]
+                s1[j, i] += (c1 * p) * f_new[i]
         else:
             for i in range(n):
                 s0[j, i] += gin1_0[j, i] * f_new[i]
