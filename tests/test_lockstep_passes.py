@@ -71,10 +71,10 @@ def test_the_reach_ended_at_the_gap_decides_as_the_whole_sum():
 
 @pytest.mark.parametrize("model", [racket.paper_racket(), racket.default_racket()])
 def test_the_watch_pass_decides_as_the_scalar_kernels_functions_at_the_edge(model):
-    """Each open contact set a hair inside or outside its reach, as the scalar kernel's
-    functions (bed_gap, contact_compression, _reach) place it: the pass ends exactly those
-    outside (a watch that ended early would miss a late re-contact, and no whole impact shows
-    it otherwise)."""
+    """Each open contact set a hair inside or outside its reach, or at it to the bit, as the
+    scalar kernel's functions (bed_gap, contact_compression, _reach) place it: the pass ends
+    exactly those outside or at it (a watch that ended early would miss a late re-contact,
+    and no whole impact shows it otherwise)."""
     ball = racket.default_ball()
     x = np.linspace(*model.strings.extent, 10)[1:-1]
     stepper = Stepper(model, ball, x, None, np.full(x.size, 16.5), 0.0, None, 300)
@@ -108,9 +108,17 @@ def test_the_watch_pass_decides_as_the_scalar_kernels_functions_at_the_edge(mode
         else:
             z_open = contact_compression(law, params, bed, points.inv_ks[i], 0.0, v[tl.F_PEAK_, i])
         reach = _reach(points.reach_w, i, stepper.frame.metric, s, np.inf)
-        outside = i % 2 == 0  # the gap a hair beyond the reach, or a hair short of it
+        d = _dot(points.out_d[i], s)
+        outside = i % 3 != 1  # the gap a hair beyond the reach, or a hair short of it
         gap = reach * (1.0 + (1e-9 if outside else -1e-9))
-        v[tl.U, i] = z_open + _dot(points.out_d[i], s) - gap
+        v[tl.U, i] = z_open + d - gap
+        if i % 3 == 2:  # the gap the reach to the bit, where one is found: over
+            u = z_open + d - reach
+            for _ in range(64):
+                if z_open - (u - d) == reach:
+                    v[tl.U, i] = u
+                    break
+                u = np.nextafter(u, np.inf if z_open - (u - d) > reach else -np.inf)
         expected[i] = 7 + 3 if outside else -1
     watch.watch_tile(massed, False, bed[0], bed[2], points.out_dc, points.out_d, points.out_v,
                      points.reach_w, points.series, points.inv_ks, stepper.frame.metric,
@@ -168,3 +176,23 @@ def test_the_blocks_passes_from_the_points_row_have_the_stored_inputs_bits(model
                                       power, n)  # fmt: skip
         runs.append(b"".join(r.tobytes() for r in (z, a0, a1, b0, b1, power)))
     assert runs[0] == runs[1]
+
+
+@pytest.mark.parametrize("spoil", ["minus_zero_input", "velocity_row", "one_bit"])
+def test_the_points_row_is_refused_where_one_stored_input_differs(spoil):
+    """One slot, one block, one input off (a zero of the other sign, a velocity row not zero,
+    the last bit): the check refuses the whole tile (the racket's own rows pass it)."""
+    frame, w = _tile_rows(racket.paper_racket())
+    nb, n = w.shape[1], w.shape[2]
+    shapes = np.empty((nb, 4))
+    assert lockstep._modal(frame.g0, frame.g1, w, shapes, n)
+    j, i = nb - 1, n - 1  # the last block and slot, read last
+    if spoil == "minus_zero_input":
+        w[tl.OUT_D0, j, i] = 0.0
+        for k in range(4):
+            w[tl.GIN0_0 + k, j, i] = -(shapes[j, k] * 0.0)  # the product's sign flipped
+    elif spoil == "velocity_row":
+        w[tl.OUT_D1, j, i] = 1e-300
+    else:
+        w[tl.GIN1_1, j, i] = np.nextafter(w[tl.GIN1_1, j, i], np.inf)
+    assert not lockstep._modal(frame.g0, frame.g1, w, shapes, n)

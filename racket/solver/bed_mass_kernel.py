@@ -375,7 +375,9 @@ def bed_gap(law, params, bed, k, residual, memo, i, f1_max, f2, f2_max, relative
     frame, and elastic, with the modes left out, ``residual`` [m/N] in series with it) can
     swing it towards the ball (the bed is at least as stiff as k either side of its set, so
     the spring behind it at least as stiff as 1 / (1/k + residual)).  The frame's vibration
-    can feed the bed more; the kernels watch some steps longer for that.
+    can feed the bed more; the kernels watch some steps longer for that.  The lockstep
+    kernel works the same numbers out inline, in one pass over its tile
+    (:func:`racket.solver.lockstep_watch.watch_tile`).
     """
     energy = 0.5 * bed[2] * relative_speed * relative_speed + 0.5 * residual * f2 * f2
     energy += bed_elastic(bed, k, memo, i, f2, f2_max)

@@ -2,7 +2,7 @@
 tile's open contacts in one pass a step, with the same numbers as
 :func:`racket.solver.kernel._one_impact`.
 
-The test runs every step of every open contact until it passes, some 30-40 steps an impact
+The test runs every step of every open contact until it passes, some 25-40 steps an impact
 after the ball leaves (a tenth of a sweep's steps).  Impact by impact, each call passed the
 points' arrays and the tile's, it cost some 45 of numba's atomic reference counts an impact
 and step, on arrays both threads' tiles share: a fifth of the paper racket's kernel time
@@ -59,8 +59,11 @@ def watch_tile(massed, sine, s, mass, out_dc, out_d, out_v, reach_w, series, inv
     :class:`racket.solver.layout.Points`, ``metric`` the frame's; ``s0`` and ``s1`` the
     tile's block states; the bed's stretch ``s`` [1/m^2] and moving ``mass`` [kg]).  The
     compression at which a contact closes again is :func:`rest`'s, made first (the unhappy
-    ball's, ``sine``, its own); the pass calls nothing, so its arrays are counted once a call
-    or not at all.
+    ball's, ``sine``, its own; one not made for the ball's largest force never ends a watch,
+    so that a missed remaking shows as an impact that runs to its last step); the pass calls
+    nothing, so numba cancels its arrays' reference counts.  Its error model is numpy's, as
+    the lockstep passes' (a division by zero gives inf, not an exception; the divisors here
+    are a stiffness and a largest force, both positive).
     """
     nb = s0.shape[0]
     for i in range(n):
@@ -72,6 +75,8 @@ def watch_tile(massed, sine, s, mass, out_dc, out_d, out_v, reach_w, series, inv
             dc += out_dc[p, j, 0] * s0[j, i] + out_dc[p, j, 1] * s1[j, i]
         if not dc > v[tl.UD, i]:
             continue
+        if not sine and v[tl.Z_REST_FOR, i] != v[tl.F_PEAK_, i]:
+            continue  # (a rest not made for this peak never ends the watch: see rest)
         z_open = v[tl.X_BALL, i] if sine else v[tl.Z_REST, i]
         if massed:  # bed_gap, with bed_elastic from the memo made for the bed's peak
             k, residual = v[tl.K_BED, i], series[p] - inv_ks[p]
