@@ -142,7 +142,7 @@ def _one_pass(reps, kind, trans, shapes, damp_blocks, damp_rows, w, v, n):
         elif kind == 3:
             lockstep._ball_force(1e-9, 1e-5, u_p, ud_p, f_new, u, ud, tau, n)
         elif kind == 4:  # (a free racket's modal damping: one block a row)
-            lockstep._force_blocks_damped(shapes, True, s0, s1, gin1_0, gin1_1, out_d0, f_new,
+            lockstep._force_blocks(shapes, True, s0, s1, gin1_0, gin1_1, out_d0, f_new,
                                           damp_blocks, damp_rows, power, n)  # fmt: skip
         else:
             lockstep._bookkeep(power, power_prev, damping, force, f_new, f_before, f_peak, need,

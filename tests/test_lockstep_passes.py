@@ -34,11 +34,13 @@ def test_the_power_folded_into_the_response_has_the_separate_passes_bits(model):
     f_new = np.abs(rng.normal(size=n)) * 1e3
     a0, a1, power_a, row = s0.copy(), s1.copy(), np.full(n, np.nan), np.empty(n)
     shapes, out_d0 = np.empty((nb, 4)), np.empty((nb, n))  # (the stored inputs read)
-    lockstep._force_blocks(shapes, False, a0, a1, gin1_0, gin1_1, out_d0, f_new, n)
+    no_rows = np.empty((0, 1), dtype=np.int64)  # the response alone, then the separate pass
+    lockstep._force_blocks(shapes, False, a0, a1, gin1_0, gin1_1, out_d0, f_new, no_rows, rows,
+                           power_a, n)  # fmt: skip
     lockstep._powers(blocks, rows, a0, a1, power_a, row, n)
     b0, b1, power_b = s0.copy(), s1.copy(), np.full(n, np.nan)
-    lockstep._force_blocks_damped(shapes, False, b0, b1, gin1_0, gin1_1, out_d0, f_new, blocks,
-                                  rows, power_b, n)  # fmt: skip
+    lockstep._force_blocks(shapes, False, b0, b1, gin1_0, gin1_1, out_d0, f_new, blocks, rows,
+                           power_b, n)  # fmt: skip
     assert a0.tobytes() == b0.tobytes() and a1.tobytes() == b1.tobytes()
     assert power_a.tobytes() == power_b.tobytes()
 
@@ -167,13 +169,12 @@ def test_the_blocks_passes_from_the_points_row_have_the_stored_inputs_bits(model
         a0, a1, z = s0.copy(), s1.copy(), np.zeros(n)
         lockstep._free_blocks(frame.trans, shapes, modal, a0, a1, w[tl.GIN0_0], w[tl.GIN0_1],
                               w[tl.OUT_D0], w[tl.OUT_D1], force, z, n)  # fmt: skip
-        b0, b1 = a0.copy(), a1.copy()
+        b0, b1, power = a0.copy(), a1.copy(), np.empty(n)
+        no_rows = np.empty((0, 1), dtype=np.int64)
         lockstep._force_blocks(shapes, modal, b0, b1, w[tl.GIN1_0], w[tl.GIN1_1], w[tl.OUT_D0],
-                               force, n)  # fmt: skip
-        power = np.empty(n)
-        lockstep._force_blocks_damped(shapes, modal, a0, a1, w[tl.GIN1_0], w[tl.GIN1_1],
-                                      w[tl.OUT_D0], force, frame.damp_blocks, frame.damp_rows,
-                                      power, n)  # fmt: skip
+                               force, no_rows, frame.damp_rows, power, n)  # fmt: skip
+        lockstep._force_blocks(shapes, modal, a0, a1, w[tl.GIN1_0], w[tl.GIN1_1], w[tl.OUT_D0],
+                               force, frame.damp_blocks, frame.damp_rows, power, n)  # fmt: skip
         runs.append(b"".join(r.tobytes() for r in (z, a0, a1, b0, b1, power)))
     assert runs[0] == runs[1]
 

@@ -89,7 +89,8 @@ def _tile(frame, points, ball, controls, out, ids, w, v, flags, scratch, memo, l
     # Views made once (making one in the loop costs two atomic reference counts).
     s0, s1, out_d0, out_d1, trans = w[tl.S0], w[tl.S1], w[tl.OUT_D0], w[tl.OUT_D1], frame.trans
     damp_blocks, damp_rows = frame.damp_blocks, frame.damp_rows
-    diagonal = damping_diagonal(damp_blocks)
+    diagonal = damping_diagonal(damp_blocks)  # the power then summed in the response
+    summed = damp_blocks if diagonal else np.empty((0, 1), dtype=np.int64)
     shapes = np.empty((nb, 4))
     modal = _modal(frame.g0, frame.g1, w, shapes, n)
     gin0_0, gin0_1, gin1_0, gin1_1 = w[tl.GIN0_0], w[tl.GIN0_1], w[tl.GIN1_0], w[tl.GIN1_1]
@@ -139,11 +140,8 @@ def _tile(frame, points, ball, controls, out, ids, w, v, flags, scratch, memo, l
                                                  z[i], f_peak[i], guess, memo, i)  # fmt: skip
         # The response to the force at the step's end.
         _ball_force(g10, g11, u_p, ud_p, f_new, u, ud, tau, n)
-        if diagonal:  # and the dissipated power with it
-            _force_blocks_damped(shapes, modal, s0, s1, gin1_0, gin1_1, out_d0, f_frame_new,
-                                 damp_blocks, damp_rows, power, n)  # fmt: skip
-        else:
-            _force_blocks(shapes, modal, s0, s1, gin1_0, gin1_1, out_d0, f_frame_new, n)
+        _force_blocks(shapes, modal, s0, s1, gin1_0, gin1_1, out_d0, f_frame_new, summed,
+                      damp_rows, power, n)  # fmt: skip
         if massed:
             for i in range(n):  # the ball left the bed within the step: placed there
                 if f_new[i] == 0.0 and force[i] > 0.0:
@@ -280,29 +278,13 @@ def _ball_force(g10, g11, u_p, ud_p, f_new, u, ud, tau, n):
 
 
 @njit(cache=True)
-def _force_blocks(shapes, modal, s0, s1, gin1_0, gin1_1, out_d0, f_new, n):
+def _force_blocks(shapes, modal, s0, s1, gin1_0, gin1_1, out_d0, f_new, damp_blocks, damp_rows,
+                  power, n):  # fmt: skip
     """The blocks' response to the force at the step's end, for the tile (``modal``: see
-    :func:`_free_blocks`).
-    """
-    for j in range(s0.shape[0]):
-        if modal:
-            c0, c1 = shapes[j, 2], shapes[j, 3]
-            for i in range(n):
-                p = out_d0[j, i]
-                s0[j, i] += (c0 * p) * f_new[i]
-                s1[j, i] += (c1 * p) * f_new[i]
-        else:
-            for i in range(n):
-                s0[j, i] += gin1_0[j, i] * f_new[i]
-                s1[j, i] += gin1_1[j, i] * f_new[i]
-
-
-@njit(cache=True)
-def _force_blocks_damped(shapes, modal, s0, s1, gin1_0, gin1_1, out_d0, f_new, damp_blocks,
-                         damp_rows, power, n):  # fmt: skip
-    """:func:`_force_blocks`, and the dissipated power as :func:`_powers` sums it, block by
-    block as each is updated (for damping rows of one block each, in the blocks' order:
-    :func:`racket.solver.kernel.damping_diagonal`).
+    :func:`_free_blocks`), and the dissipated power of damping rows of one block each, in the
+    blocks' order (:func:`racket.solver.kernel.damping_diagonal`), as :func:`_powers` sums it,
+    block by block as each is updated; ``damp_blocks`` with no rows: the response alone (the
+    power zeroed, for :func:`_powers`).
     """
     for i in range(n):
         power[i] = 0.0
