@@ -349,10 +349,18 @@ def bed_elastic(bed, k, memo, i, f2, f2_max):
     (:func:`racket.solver.bed_kernel.bed_dissipated`).
     """
     _remember(k, bed[0], bed[1], f2_max, memo, i)
-    u, delta = memo[3, i], memo[2, i]
+    return elastic(k, bed[0], memo[3, i], memo[2, i], f2, f2_max)
+
+
+@njit(cache=True, inline="always")
+def elastic(k, s, u, delta, f2, f2_max):
+    """:func:`bed_elastic` in numbers alone: the bed's stiffness ``k`` [N/m] and stretch ``s``
+    [1/m^2], its last loading-curve deflection ``u`` [m] and the set-back ``delta`` [m] of
+    its memo made for ``f2_max``.
+    """
     if u <= 0.0 or f2_max <= 0.0:
-        return stored(k, bed[0], abs(u))
-    return stored(k, bed[0], u) - 0.5 * delta * f2 * f2 / f2_max
+        return stored(k, s, abs(u))
+    return stored(k, s, u) - 0.5 * delta * f2 * f2 / f2_max
 
 
 @njit(cache=True)
@@ -375,14 +383,25 @@ def bed_gap(law, params, bed, k, residual, memo, i, f1_max, f2, f2_max, relative
     frame, and elastic, with the modes left out, ``residual`` [m/N] in series with it) can
     swing it towards the ball (the bed is at least as stiff as k either side of its set, so
     the spring behind it at least as stiff as 1 / (1/k + residual)).  The frame's vibration
-    can feed the bed more; the kernels watch some steps longer for that.  The lockstep
-    kernel works the same numbers out inline, in one pass over its tile
-    (:func:`racket.solver.lockstep_watch.watch_tile`).
+    can feed the bed more; the kernels watch some steps longer for that.
     """
-    energy = 0.5 * bed[2] * relative_speed * relative_speed + 0.5 * residual * f2 * f2
-    energy += bed_elastic(bed, k, memo, i, f2, f2_max)
+    _remember(k, bed[0], bed[1], f2_max, memo, i)
     rest = ball_compression(law, params, 0.0, f1_max)
-    return rest + memo[2, i] - math.sqrt(2.0 * max(energy, 0.0) * (1.0 / k + residual))
+    return gap_from(rest, bed[0], bed[2], k, residual, memo[3, i], memo[2, i], f2, f2_max,
+               relative_speed)  # fmt: skip
+
+
+@njit(cache=True, inline="always")
+def gap_from(rest, s, mass, k, residual, u, delta, f2, f2_max, relative_speed):
+    """:func:`bed_gap` in numbers alone (the lockstep kernel's pass over its tile,
+    :func:`racket.solver.lockstep_watch.watch_tile`, passes no arrays): the ball's residual
+    compression ``rest`` [m], the bed's stretch ``s`` [1/m^2] and moving ``mass`` [kg], and
+    :func:`elastic`'s numbers.  Inlined where it is called (as :func:`elastic`): a call
+    there kept the pass's arrays' reference counts.
+    """
+    energy = 0.5 * mass * relative_speed * relative_speed + 0.5 * residual * f2 * f2
+    energy += elastic(k, s, u, delta, f2, f2_max)
+    return rest + delta - math.sqrt(2.0 * max(energy, 0.0) * (1.0 / k + residual))
 
 
 @njit(cache=True)

@@ -294,6 +294,8 @@ def _force_blocks(shapes, modal, s0, s1, gin1_0, gin1_1, out_d0, f_new, damp_blo
         d0, d1 = (damp_rows[r, 0, 0], damp_rows[r, 0, 1]) if damped else (0.0, 0.0)
         r += 1 if damped else 0
         c0, c1 = shapes[j, 2], shapes[j, 3]
+        # (four loops of two shapes: a branch within a loop would stop LLVM vectorising it,
+        # and the power summed in a loop of its own after the response cost a free racket 4 %)
         if damped and modal:
             for i in range(n):
                 p = out_d0[j, i]

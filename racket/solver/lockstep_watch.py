@@ -21,8 +21,7 @@ from numba import njit
 
 from racket.solver import tile_layout as tl
 from racket.solver.ball_kernel import ball_compression
-from racket.solver.bed_kernel import stored
-from racket.solver.bed_mass_kernel import _remember
+from racket.solver.bed_mass_kernel import _remember, gap_from
 from racket.solver.contact_kernel import contact_compression
 
 
@@ -61,7 +60,8 @@ def watch_tile(massed, sine, s, mass, out_dc, out_d, out_v, reach_w, series, inv
     compression at which a contact closes again is :func:`rest`'s, made first (the unhappy
     ball's, ``sine``, its own; one not made for the ball's largest force never ends a watch,
     so that a missed remaking shows as an impact that runs to its last step); the pass calls
-    nothing, so numba cancels its arrays' reference counts.  Its error model is numpy's, as
+    nothing with an array (:func:`racket.solver.bed_mass_kernel.gap_from` takes numbers), so numba
+    cancels its arrays' reference counts.  Its error model is numpy's, as
     the lockstep passes' (a division by zero gives inf, not an exception; the divisors here
     are a stiffness and a largest force, both positive).
     """
@@ -78,19 +78,13 @@ def watch_tile(massed, sine, s, mass, out_dc, out_d, out_v, reach_w, series, inv
         if not sine and v[tl.Z_REST_FOR, i] != v[tl.F_PEAK_, i]:
             continue  # (a rest not made for this peak never ends the watch: see rest)
         z_open = v[tl.X_BALL, i] if sine else v[tl.Z_REST, i]
-        if massed:  # bed_gap, with bed_elastic from the memo made for the bed's peak
-            k, residual = v[tl.K_BED, i], series[p] - inv_ks[p]
+        if massed:  # bed_gap, from the memo made for the bed's peak (rest)
             point_v = 0.0
             for j in range(nb):
                 point_v += out_v[p, j, 0] * s0[j, i] + out_v[p, j, 1] * s1[j, i]
-            speed, f2, f2_max = v[tl.QD, i] - point_v, v[tl.F2, i], v[tl.F2_PEAK, i]
-            energy = 0.5 * mass * speed * speed + 0.5 * residual * f2 * f2
-            u, delta = memo[3, i], memo[2, i]
-            if u <= 0.0 or f2_max <= 0.0:
-                energy += stored(k, s, abs(u))
-            else:
-                energy += stored(k, s, u) - 0.5 * delta * f2 * f2 / f2_max
-            z_open = z_open + delta - math.sqrt(2.0 * max(energy, 0.0) * (1.0 / k + residual))
+            z_open = gap_from(z_open, s, mass, v[tl.K_BED, i], series[p] - inv_ks[p],
+                              memo[3, i], memo[2, i], v[tl.F2, i], v[tl.F2_PEAK, i],
+                              v[tl.QD, i] - point_v)  # fmt: skip
         d = 0.0
         for j in range(nb):
             d += out_d[p, j, 0] * s0[j, i] + out_d[p, j, 1] * s1[j, i]
